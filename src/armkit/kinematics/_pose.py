@@ -1,0 +1,32 @@
+"""Reading a pose the way arm users do: position and the gripper's pitch."""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+F64 = NDArray[np.float64]
+
+
+def pitch_of(T: F64) -> F64:
+    """The gripper's pitch: angle of the approach axis above the horizontal [rad].
+
+    Measured in the vertical plane through the base axis and the tool point,
+    positive upwards, 0 = pointing horizontally away from the base, -pi/2 =
+    straight down. With the tool point on the base axis, the horizontal
+    direction of the approach axis is used instead.
+
+    Args:
+        T: tool pose(s), shape (4, 4) or (N, 4, 4).
+
+    Returns:
+        Pitch [rad], shape () or (N,), in (-pi, pi].
+    """
+    a = T[..., :3, 0]
+    p = T[..., :3, 3]
+    rho = np.hypot(p[..., 0], p[..., 1])
+    on_axis = rho < 1e-9
+    safe = np.where(on_axis, 1.0, rho)
+    along = (a[..., 0] * p[..., 0] + a[..., 1] * p[..., 1]) / safe
+    along = np.where(on_axis, np.hypot(a[..., 0], a[..., 1]), along)
+    return np.asarray(np.arctan2(a[..., 2], along))

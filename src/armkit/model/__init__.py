@@ -1,0 +1,8 @@
+"""Arm models as data: joints, DH chain, tool and gripper, loaded from TOML."""
+
+from ._load import load_model as load_model
+from ._load import shipped_models as shipped_models
+from ._types import ArmModel as ArmModel
+from ._types import DHRow as DHRow
+from ._types import Gripper as Gripper
+from ._types import Joint as Joint

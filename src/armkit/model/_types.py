@@ -1,0 +1,167 @@
+"""What an arm IS: joints, kinematic chain, tool and gripper (SI units inside)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Any, Literal
+
+import numpy as np
+from numpy.typing import NDArray
+
+Convention = Literal["standard", "modified"]
+
+
+@dataclass(frozen=True)
+class DHRow:
+    """One Denavit-Hartenberg row, in the convention named by the model.
+
+    Standard:  T = Rz(theta) Tz(d) Tx(a) Rx(alpha); the joint turns about z_{i-1}.
+    Modified (Craig): T = Rx(alpha) Tx(a) Rz(theta) Tz(d); the joint turns about z_i.
+    The DH angle is ``theta = sign * q + theta_offset`` where q is the model's joint angle.
+
+    Attributes:
+        a: link length [m].  alpha: link twist [rad].  d: link offset [m].
+        theta_offset: added to the DH angle [rad].  sign: +1.0, or -1.0 for a flipped joint.
+    """
+
+    a: float
+    alpha: float
+    d: float
+    theta_offset: float = 0.0
+    sign: float = 1.0
+
+
+@dataclass(frozen=True)
+class Joint:
+    """A revolute joint as the arm's users name and measure it.
+
+    Attributes:
+        name: the seed's name for it (``"shoulder"``).
+        lower, upper: limits [rad], lower < upper.
+        home: home angle [rad].
+        max_velocity: [rad/s].  max_acceleration: [rad/s^2].
+    """
+
+    name: str
+    lower: float
+    upper: float
+    home: float
+    max_velocity: float = math.radians(90.0)
+    max_acceleration: float = math.radians(360.0)
+
+
+@dataclass(frozen=True)
+class Gripper:
+    """The gripper: its kind, width range and, for scissor grippers, how the
+    grip point's distance depends on the width.
+
+    Attributes:
+        kind: ``"parallel"``, ``"scissor"`` or ``"timed"`` (OWI: open or closed only).
+        width_min, width_max: opening range [m].
+        length_poly: grip length [m] as polynomial coefficients of width [m],
+            lowest order first, used for width > 0 (empty: fixed length).
+        closed_length: grip length to the tip when fully closed [m], or None.
+    """
+
+    kind: str = "parallel"
+    width_min: float = 0.0
+    width_max: float = 0.0
+    length_poly: tuple[float, ...] = ()
+    closed_length: float | None = None
+
+    def length_at(self, width: float) -> float | None:
+        """Grip length [m] at an opening ``width`` [m]; None if the length is fixed."""
+        if not self.length_poly:
+            return None
+        if width <= 0.0 and self.closed_length is not None:
+            return self.closed_length
+        return float(sum(c * width**k for k, c in enumerate(self.length_poly)))
+
+
+@dataclass(frozen=True, eq=False)
+class ArmModel:
+    """A serial arm: joints in chain order, DH rows, tool transform, gripper.
+
+    Attributes:
+        name: short name (``"owi535"``).
+        description: one line for people.
+        convention: ``"standard"`` or ``"modified"`` DH.
+        joints: the joints, base first.
+        dh: one DH row per joint.
+        T_flange_tool: last DH frame to tool frame, shape (4, 4) [m]; the tool
+            frame's x axis is the approach direction (where the gripper points).
+        tool_length: distance along the tool x axis included in T_flange_tool [m].
+        gripper: the gripper.
+        default_pitch: pitch used when an IK call gives none [rad], or None (free).
+        drivers: per-driver default calibration tables, as written in the file.
+        source: the file it was loaded from.
+    """
+
+    name: str
+    description: str
+    convention: Convention
+    joints: tuple[Joint, ...]
+    dh: tuple[DHRow, ...]
+    T_flange_tool: NDArray[np.float64]
+    tool_length: float = 0.0
+    gripper: Gripper = field(default_factory=Gripper)
+    default_pitch: float | None = None
+    drivers: dict[str, Any] = field(default_factory=dict)
+    source: Path | None = None
+    _cache: dict[str, Any] = field(default_factory=dict, repr=False)
+
+    @property
+    def dof(self) -> int:
+        """Number of joints."""
+        return len(self.joints)
+
+    @property
+    def joint_names(self) -> tuple[str, ...]:
+        """Joint names in chain order."""
+        return tuple(j.name for j in self.joints)
+
+    @property
+    def lower(self) -> NDArray[np.float64]:
+        """Lower limits [rad], shape (dof,)."""
+        return np.array([j.lower for j in self.joints])
+
+    @property
+    def upper(self) -> NDArray[np.float64]:
+        """Upper limits [rad], shape (dof,)."""
+        return np.array([j.upper for j in self.joints])
+
+    @property
+    def home(self) -> NDArray[np.float64]:
+        """Home pose [rad], shape (dof,)."""
+        return np.array([j.home for j in self.joints])
+
+    def joint_index(self, name: str) -> int:
+        """Index of the joint called ``name``; ValueError lists the valid names."""
+        names = self.joint_names
+        if name not in names:
+            raise ValueError(f"unknown joint {name!r} for {self.name}; joints are {', '.join(names)}")
+        return names.index(name)
+
+    def within_limits(self, q: NDArray[np.float64], slack: float = 1e-9) -> NDArray[np.bool_]:
+        """True where every joint of q [rad], shape (..., dof), is inside its limits."""
+        return np.all((q >= self.lower - slack) & (q <= self.upper + slack), axis=-1)
+
+    def with_tool_length(self, length: float) -> ArmModel:
+        """The same arm with the tool's length along its approach axis set to ``length`` [m]."""
+        T = self.T_flange_tool.copy()
+        T[:3, 3] += T[:3, 0] * (length - self.tool_length)
+        return replace(self, T_flange_tool=T, tool_length=length, _cache={})
+
+    def with_grip_width(self, width: float) -> ArmModel:
+        """The same arm with the grip point moved for a gripper opening ``width`` [m]
+        (002's grip-length polynomial); unchanged for grippers of fixed length."""
+        g = self.gripper
+        if not g.width_min - 1e-12 <= width <= g.width_max + 1e-12:
+            raise ValueError(
+                f"grip width {width * 1000:.1f} mm is outside {self.name}'s range "
+                f"{g.width_min * 1000:.1f}..{g.width_max * 1000:.1f} mm"
+            )
+        length = g.length_at(width)
+        return self if length is None else self.with_tool_length(length)
