@@ -1,2 +1,3 @@
-def main() -> int:
-    return 0
+"""The ``armkit`` command line. Each command group lives in its own module."""
+
+from ._app import main as main

@@ -1,16 +1,19 @@
-"""The typed result every IK method returns."""
+"""The typed results every IK method returns."""
 
 from __future__ import annotations
 
+import math
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 F64 = NDArray[np.float64]
+Checker = Callable[[F64], tuple[float, float]] | tuple[Any, tuple[float, ...], float | None]
 
 
-@dataclass(frozen=True, slots=True)
 class IKResult:
     """What an IK solver found.
 
@@ -21,17 +24,87 @@ class IKResult:
         method: the solver that produced it (``"analytic"``, ``"lm"``, ...).
         iterations: solver iterations (0 for the closed form).
         restarts: restarts from new seeds (0 for the closed form).
-        position_error: distance from the tool point to the target [m].
-        angle_error: pitch or orientation error [rad] (0 when not asked for).
+        position_error: distance from the tool point of ``q`` to the target [m].
+        angle_error: pitch or orientation error of ``q`` [rad] (0 when none was asked for).
+
+    The closed form builds the arrays and measures the errors (by forward
+    kinematics) only when they are read, which keeps a call to microseconds.
     """
 
-    q: F64
-    solutions: F64
-    method: str
-    iterations: int = 0
-    restarts: int = 0
-    position_error: float = 0.0
-    angle_error: float = 0.0
+    __slots__ = ("_check", "_errors", "_q", "_solutions", "iterations", "method", "restarts")
+
+    def __init__(
+        self,
+        q: ArrayLike,
+        solutions: ArrayLike | Sequence[Sequence[float]],
+        method: str,
+        iterations: int = 0,
+        restarts: int = 0,
+        position_error: float | None = None,
+        angle_error: float | None = None,
+        *,
+        check: Checker | None = None,
+    ) -> None:
+        self._q: ArrayLike = q
+        self._solutions: ArrayLike | Sequence[Sequence[float]] = solutions
+        self.method = method
+        self.iterations = iterations
+        self.restarts = restarts
+        known = position_error is not None and angle_error is not None
+        self._errors = (float(position_error), float(angle_error)) if known else None  # type: ignore[arg-type]
+        self._check = check
+
+    @property
+    def q(self) -> F64:
+        """Best solution [rad], shape (dof,)."""
+        if not isinstance(self._q, np.ndarray):
+            self._q = np.array(self._q, dtype=np.float64)
+        return self._q
+
+    @property
+    def solutions(self) -> F64:
+        """Every solution [rad], best first, shape (k, dof)."""
+        if not isinstance(self._solutions, np.ndarray):
+            self._solutions = np.array(self._solutions, dtype=np.float64)
+        return self._solutions
+
+    @property
+    def position_error(self) -> float:
+        """Distance from the tool point of ``q`` to the target [m]."""
+        return self._measured()[0]
+
+    @property
+    def angle_error(self) -> float:
+        """Pitch or orientation error of ``q`` [rad]."""
+        return self._measured()[1]
+
+    def _measured(self) -> tuple[float, float]:
+        if self._errors is None:
+            self._errors = _measure(self._check, self.q)
+        return self._errors
+
+    @classmethod
+    def closed_form(cls, solutions: list[tuple[float, ...]], check: Checker) -> IKResult:
+        """A closed-form result: every solution, best first; errors measured on demand."""
+        self = cls.__new__(cls)
+        self._q, self._solutions, self.method = solutions[0], solutions, "analytic"
+        self.iterations, self.restarts, self._errors, self._check = 0, 0, None, check
+        return self
+
+    def __repr__(self) -> str:
+        q = np.round(np.degrees(self.q), 3).tolist()
+        return f"IKResult(q_deg={q}, solutions={len(self.solutions)}, method={self.method!r})"
+
+
+def _measure(check: Checker | None, q: F64) -> tuple[float, float]:
+    """Errors of q: by the solver's callable, or by FK for a (model, position, pitch) target."""
+    if check is None:
+        return math.nan, math.nan
+    if callable(check):
+        return check(q)
+    from ._ik import measure_error
+
+    return measure_error(check[0], check[1], check[2], q)
 
 
 @dataclass(frozen=True, slots=True)

@@ -1,0 +1,51 @@
+"""Driver names -> the module that opens them, imported only when asked for.
+
+Each entry points at a function ``open_driver(model, port) -> Driver`` in a
+module of armkit; device SDKs are imported inside those modules, never here.
+"""
+
+from __future__ import annotations
+
+import importlib
+from typing import Protocol
+
+from .._errors import DeviceError
+from ..model import ArmModel
+from ._driver import Driver
+
+
+class _Opener(Protocol):
+    def __call__(self, model: ArmModel, port: str | None) -> Driver: ...
+
+
+# name -> (module, function, one-line help)
+DRIVERS: dict[str, tuple[str, str, str]] = {
+    "sim": ("armkit.sim", "open_sim_driver", "simulated arm (no hardware), any model"),
+    "owi535": ("armkit.drivers.timed", "open_driver", "OWI-535 over USB (pyusb; usb extra)"),
+    "ssc32": ("armkit.drivers.servo", "open_ssc32", "hobby servos via a Lynxmotion SSC-32 (serial extra)"),
+    "maestro": ("armkit.drivers.servo", "open_maestro", "hobby servos via a Pololu Maestro (serial extra)"),
+    "dynamixel": ("armkit.drivers.dynamixel", "open_driver", "Dynamixel Protocol 2.0 (dynamixel extra)"),
+}
+
+
+def driver_names() -> list[str]:
+    """Known driver names."""
+    return list(DRIVERS)
+
+
+def open_driver(model: ArmModel, name: str, port: str | None = None) -> Driver:
+    """Open the driver called ``name`` for ``model`` (``port``: device path, or ``"emu"``).
+
+    Raises:
+        ValueError: unknown driver name (the message lists the known ones).
+        DeviceError: the driver exists but is not available or the device is not there.
+    """
+    if name not in DRIVERS:
+        raise ValueError(f"unknown driver {name!r}; drivers are {', '.join(DRIVERS)}")
+    module_name, func_name, _ = DRIVERS[name]
+    try:
+        module = importlib.import_module(module_name)
+    except ModuleNotFoundError as exc:
+        raise DeviceError(f"driver {name!r} is not available: {exc}") from None
+    opener: _Opener = getattr(module, func_name)
+    return opener(model, port)

@@ -1,0 +1,253 @@
+"""The IK entry points: one target or a batch, every method behind one call."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .._errors import UnreachableError
+from ..model import ArmModel
+from . import _analytic
+from ._analytic_batch import solve_batch as solve_batch_analytic
+from ._family import PlanarFamily, family_of, why_not_family
+from ._fast import fast_solver
+from ._fk import fk
+from ._pose import pitch_of
+from ._result import IKBatchResult, IKResult
+from ._target import Target
+from ._validate import joint_array, point_array
+
+F64 = NDArray[np.float64]
+METHODS = ("auto", "analytic", "lm", "ccd", "jacobian", "random")
+
+
+def ik(
+    model: ArmModel,
+    position: ArrayLike,
+    pitch: float | None = None,
+    q_seed: ArrayLike | None = None,
+    *,
+    orientation: ArrayLike | None = None,
+    method: str = "auto",
+    tol_mm: float = 0.01,
+    tol_deg: float = 0.01,
+) -> IKResult:
+    """Joint angles that put the tool at ``position``.
+
+    Args:
+        model: the arm.
+        position: tool point in the world frame [m], shape (3,).
+        pitch: approach angle above the horizontal [rad] (-pi/2 = pointing
+            down), or None: the model's default pitch, else any pitch (the one
+            nearest the seed's).
+        q_seed: joint angles [rad], shape (dof,), that solutions are ranked by
+            (nearest first) and numeric solvers start from; default home.
+        orientation: full tool orientation R_world_tool, shape (3, 3) (numeric methods).
+        method: ``"auto"`` (closed form where the arm's shape allows, else
+            ``"lm"``), ``"analytic"``, ``"lm"``, ``"ccd"``, ``"jacobian"``, ``"random"``.
+        tol_mm: position tolerance of numeric methods [mm].
+        tol_deg: pitch/orientation tolerance of numeric methods [deg].
+
+    Returns:
+        IKResult with ``q`` the best solution and ``solutions`` every one found.
+
+    Raises:
+        UnreachableError: no solution inside the limits (``reason`` says why).
+        ValueError: malformed input, naming the argument.
+    """
+    p = _point(position)
+    seed = (
+        _seed(model, q_seed)
+        if q_seed is not None
+        else model._cache.get("home") or _seed(model, None)
+    )
+    if pitch is not None:
+        pitch = (
+            float(pitch)
+            if isinstance(pitch, float) and math.isfinite(pitch)
+            else _finite(pitch, "pitch")
+        )
+    elif model.default_pitch is not None:
+        pitch = model.default_pitch
+    if orientation is None and (method == "auto" or method == "analytic"):
+        fast = model._cache["fast"] if "fast" in model._cache else fast_solver(model)
+        sols = fast(p[0], p[1], p[2], pitch, seed) if fast is not None else None
+        if sols:
+            return IKResult.closed_form(sols, (model, p, pitch))
+    fam = family_of(model)
+    use = _choose(model, fam, method, orientation)
+    if use == "analytic":
+        assert fam is not None
+        return _closed_form(model, fam, p, pitch, seed)
+    target = Target(np.array(p), pitch, _rotation(orientation))
+    from ._numeric import solve
+
+    return solve(use, model, target, np.array(seed), tol_mm / 1000.0, math.radians(tol_deg))
+
+
+def _choose(model: ArmModel, fam: PlanarFamily | None, method: str, orientation: Any) -> str:
+    if method not in METHODS:
+        raise ValueError(f"method must be one of {', '.join(METHODS)}, got {method!r}")
+    if method == "analytic" and (fam is None or orientation is not None):
+        why = (
+            why_not_family(model)
+            or "the closed form takes a position and a pitch, not an orientation"
+        )
+        raise ValueError(f"method 'analytic' does not apply: {why}")
+    if method == "auto":
+        return "analytic" if fam is not None and orientation is None else "lm"
+    return method
+
+
+def _closed_form(
+    model: ArmModel,
+    fam: PlanarFamily,
+    p: tuple[float, ...],
+    pitch: float | None,
+    seed: tuple[float, ...],
+) -> IKResult:
+    sols = _analytic.solve(model, fam, p, pitch, seed)
+    return IKResult.closed_form(sols, (model, p, pitch))
+
+
+def measure_error(
+    model: ArmModel, p: tuple[float, ...], pitch: float | None, q: F64
+) -> tuple[float, float]:
+    """Position [m] and pitch [rad] error of joint angles q [rad] for a target, by FK."""
+    T = fk(model, q)
+    pos = float(np.linalg.norm(T[:3, 3] - np.asarray(p)))
+    if pitch is None:
+        return pos, 0.0
+    return pos, abs(math.remainder(float(pitch_of(T)) - pitch, 2 * math.pi))
+
+
+def _point(position: ArrayLike) -> tuple[float, float, float]:
+    """``position`` as three finite floats; ValueError naming it otherwise."""
+    if isinstance(position, np.ndarray) and position.shape != (3,):
+        raise ValueError(f"position must have shape (3,), got {position.shape}")
+    try:
+        x, y, z = position  # type: ignore[misc]
+        out = (float(x), float(y), float(z))
+    except (TypeError, ValueError):
+        raise ValueError(
+            f"position must be three numbers (x, y, z) [m], got {position!r}"
+        ) from None
+    if not (math.isfinite(out[0]) and math.isfinite(out[1]) and math.isfinite(out[2])):
+        raise ValueError(f"position must be finite, got {out}")
+    return out
+
+
+def _finite(value: Any, name: str) -> float:
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a number, got {value!r}") from None
+    if not math.isfinite(v):
+        raise ValueError(f"{name} must be finite, got {v}")
+    return v
+
+
+def _seed(model: ArmModel, q_seed: ArrayLike | None) -> tuple[float, ...]:
+    if q_seed is None:
+        home: tuple[float, ...] | None = model._cache.get("home")
+        if home is None:
+            home = tuple(j.home for j in model.joints)
+            model._cache["home"] = home
+        return home
+    qa = np.asarray(q_seed, dtype=np.float64)
+    if qa.shape != (model.dof,) or not np.all(np.isfinite(qa)):
+        raise ValueError(
+            f"q_seed must be {model.dof} finite joint angles [rad], got shape {qa.shape}"
+        )
+    return tuple(qa.tolist())
+
+
+def _rotation(orientation: ArrayLike | None) -> F64 | None:
+    """``orientation`` checked to be a rotation matrix, shape (3, 3)."""
+    if orientation is None:
+        return None
+    R = np.asarray(orientation, dtype=np.float64)
+    if R.shape != (3, 3) or not np.all(np.isfinite(R)):
+        raise ValueError(f"orientation must be a finite 3x3 rotation matrix, got shape {R.shape}")
+    if not np.allclose(R @ R.T, np.eye(3), atol=1e-6) or np.linalg.det(R) < 0:
+        raise ValueError("orientation must be a rotation matrix (orthonormal, det +1)")
+    return R
+
+
+def ik_batch(
+    model: ArmModel,
+    positions: ArrayLike,
+    pitches: ArrayLike | None = None,
+    q_seed: ArrayLike | None = None,
+    *,
+    method: str = "auto",
+    tol_mm: float = 0.01,
+    tol_deg: float = 0.01,
+) -> IKBatchResult:
+    """Joint angles for N targets at once, vectorised in numpy.
+
+    Args:
+        positions: tool points [m], shape (N, 3).
+        pitches: pitch [rad], a number or shape (N,), or None (the model's
+            default pitch, else free: nearest the seed's).
+        q_seed: [rad], shape (dof,) or (N, dof); default home.
+        method: ``"auto"``, ``"analytic"`` or ``"lm"``.
+
+    Returns:
+        IKBatchResult: best solution per target (NaN rows where none), ``ok`` and ``reason``.
+    """
+    P = point_array(positions, "positions", batch=True)
+    seed = _batch_seed(model, q_seed, len(P))
+    pitch = _batch_pitch(model, pitches, len(P))
+    fam = family_of(model)
+    use = _choose(model, fam, method, None)
+    if use != "analytic":
+        from ._numeric import solve_batch
+
+        return solve_batch(model, P, pitch, None, seed, tol_mm / 1000.0, math.radians(tol_deg))
+    assert fam is not None
+    if pitch is None and len(fam.planar) == 3:
+        return _free_pitch_batch(model, fam, P, seed)
+    q, ok, reason = solve_batch_analytic(model, fam, P, pitch, seed)
+    return IKBatchResult(q=q, ok=ok, reason=reason, method="analytic")
+
+
+def _free_pitch_batch(model: ArmModel, fam: PlanarFamily, P: F64, seed: F64) -> IKBatchResult:
+    """Position-only targets: try the seed's pitch for all, then search per failed target."""
+    preferred = np.asarray(pitch_of(fk(model, seed)), dtype=np.float64)
+    q, ok, reason = solve_batch_analytic(model, fam, P, preferred, seed)
+    for i in np.flatnonzero(~ok):
+        try:
+            sols = _analytic.solve(model, fam, tuple(P[i].tolist()), None, tuple(seed[i].tolist()))
+        except UnreachableError as exc:
+            reason[i] = exc.reason
+            continue
+        q[i], ok[i], reason[i] = sols[0], True, ""
+    return IKBatchResult(q=q, ok=ok, reason=reason, method="analytic")
+
+
+def _batch_seed(model: ArmModel, q_seed: ArrayLike | None, n: int) -> F64:
+    if q_seed is None:
+        return np.repeat(model.home[None, :], n, axis=0)
+    qa = joint_array(model, q_seed, "q_seed")
+    if qa.ndim == 2 and qa.shape[0] != n:
+        raise ValueError(
+            f"q_seed must have shape ({model.dof},) or ({n}, {model.dof}), got {qa.shape}"
+        )
+    return np.broadcast_to(qa, (n, model.dof)).copy()
+
+
+def _batch_pitch(model: ArmModel, pitches: ArrayLike | None, n: int) -> F64 | None:
+    if pitches is None:
+        return None if model.default_pitch is None else np.full(n, model.default_pitch)
+    pa = np.asarray(pitches, dtype=np.float64)
+    if pa.ndim == 0:
+        pa = np.full(n, float(pa))
+    if pa.shape != (n,) or not np.all(np.isfinite(pa)):
+        raise ValueError(
+            f"pitches must be a finite number or shape ({n},) [rad], got shape {pa.shape}"
+        )
+    return pa
