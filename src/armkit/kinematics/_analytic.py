@@ -79,8 +79,9 @@ def _planes(
         return [], "too_close"
     r = math.sqrt(max(r2, 0.0))
     rho = math.sqrt(rho2)
-    if rho < 1e-12:
-        return [(0.0, z, 0.0, seed[fam.base])], ""
+    if rho < 1e-12:  # on the base axis: the base angle is free; keep the seed's, or turn it round
+        q0 = seed[fam.base]
+        return [(0.0, z, 0.0, q0), (-0.0, z, 0.0, q0 + math.pi)], ""
     heading = math.atan2(y, x) - fam.azimuth_r
     out = []
     for rr in (r, -r) if r > 1e-12 else (r,):
@@ -102,6 +103,9 @@ def _plane_solutions(
             if not sols and not why:
                 attempt.reasons.append("pitch")
         return [tuple(s) for s in sols]
+    if rho < 1e-12 and abs(pitch or 0.0) > math.pi / 2 + 1e-12:
+        attempt.reasons.append("pitch")  # on the base axis pitch is measured in [-90, 90] deg
+        return []
     phi = phi_for_pitch(pitch or 0.0, r, rho)
     turn = phi - fam.phi0
     v3x, v3z = fam.links[2]
@@ -220,5 +224,6 @@ _EXPLAIN = {
     "too_far": "too far away for the arm's links; try a point nearer the base",
     "too_close": "too close to the base for the arm's links; try a point further out",
     "off_plane": "the point is outside the arm's plane of motion",
-    "pitch": "this arm cannot choose its pitch there; leave the pitch out",
+    "pitch": "the arm cannot have that pitch there (on the base axis it is within -90..90 deg;"
+    " an arm with two planar joints cannot choose it: leave the pitch out)",
 }

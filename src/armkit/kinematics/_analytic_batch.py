@@ -74,7 +74,12 @@ def _planes(fam: PlanarFamily, P: F64, seed: F64) -> tuple[list[tuple[F64, F64, 
     out = []
     for rr in (r, -r):
         psi = heading - np.arctan2(-fam.lateral, rr) if fam.lateral else heading + np.pi * (rr < 0)
-        out.append((rr, rho, np.where(on_axis, seed[:, fam.base], fam.base_sign * psi)))
+        turn_round = (
+            np.pi if rr is not r else 0.0
+        )  # on the axis: seed's base angle, or turned round
+        out.append(
+            (rr, rho, np.where(on_axis, seed[:, fam.base] + turn_round, fam.base_sign * psi))
+        )
     return out, r2 < -1e-18
 
 
@@ -116,7 +121,9 @@ def _wrist_turn(fam: PlanarFamily, r: F64, rho: F64, pitch: F64 | None) -> tuple
     if len(fam.planar) == 2 or pitch is None:
         zero = np.zeros_like(r)
         return zero + 1.0, zero, zero
-    sp = np.sin(pitch) * np.where(rho < 1e-12, 1.0, np.abs(r) / np.where(rho < 1e-12, 1.0, rho))
+    on_axis = rho < 1e-12
+    pitch = np.where(on_axis & (np.abs(pitch) > np.pi / 2 + 1e-12), np.nan, pitch)  # see pitch_of
+    sp = np.sin(pitch) * np.where(on_axis, 1.0, np.abs(r) / np.where(on_axis, 1.0, rho))
     cp = np.cos(pitch) * np.where(r < 0, -1.0, 1.0)
     norm = np.hypot(sp, cp)
     sp, cp = sp / norm, cp / norm

@@ -1,0 +1,142 @@
+"""The damped least-squares step dq = argmin |J dq - e|^2 + lam |dq|^2, in plain floats.
+
+Sized for 2-6 joints and 3-6 task rows: it solves in the smaller of the two
+spaces (m x m with J J^T, or n x n with J^T J) by a Cholesky factorisation.
+Joints marked frozen (at a limit, pushing outwards) get no motion.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from operator import mul
+
+
+def dls_step(
+    cols: list[tuple[float, ...]], e: list[float], lam: float, free: list[bool]
+) -> list[float]:
+    """Damped least-squares joint step.
+
+    Args:
+        cols: task Jacobian J by columns: per joint, m floats [task unit / rad].
+        e: task error, m floats [task unit].
+        lam: damping, > 0 [task unit^2].
+        free: per joint, False to keep it still.
+
+    Returns:
+        dq: joint step [rad], one float per joint (0.0 for frozen joints).
+    """
+    if all(free):
+        return _step(cols, e, lam)
+    idx = [i for i, f in enumerate(free) if f]
+    dq = [0.0] * len(free)
+    if idx:
+        for i, v in zip(idx, _step([cols[i] for i in idx], e, lam), strict=True):
+            dq[i] = v
+    return dq
+
+
+def _step(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[float]:
+    """The damped step for a Jacobian with every column free."""
+    m, n = len(e), len(cols)
+    if m == 3 and n >= 3:
+        return _step3(cols, e, lam)
+    if m == 4 and n >= 4:
+        return _step4(cols, e, lam)
+    if m <= n:
+        y = cholesky_solve(_gram([list(r) for r in zip(*cols, strict=True)], lam), e)
+        return [sum(map(mul, col, y)) for col in cols]
+    return cholesky_solve(_gram(cols, lam), [sum(map(mul, c, e)) for c in cols])
+
+
+def _step3(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[float]:
+    """The damped step for 3 task rows: J^T (J J^T + lam I)^-1 e, unrolled."""
+    a = d = f = c = g = h = 0.0
+    for x, y, z in cols:
+        a += x * x
+        d += x * y
+        f += x * z
+        c += y * y
+        g += y * z
+        h += z * z
+    y0, y1, y2 = _solve3(((a + lam, d, f), (d, c + lam, g), (f, g, h + lam)), e)
+    return [x * y0 + y * y1 + z * y2 for x, y, z in cols]
+
+
+def _step4(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[float]:
+    """The damped step for 4 task rows: J^T (J J^T + lam I)^-1 e, accumulated by columns."""
+    s00 = s01 = s02 = s03 = s11 = s12 = s13 = s22 = s23 = s33 = 0.0
+    for x, y, z, w in cols:
+        s00 += x * x
+        s01 += x * y
+        s02 += x * z
+        s03 += x * w
+        s11 += y * y
+        s12 += y * z
+        s13 += y * w
+        s22 += z * z
+        s23 += z * w
+        s33 += w * w
+    A = (
+        (s00 + lam, s01, s02, s03),
+        (s01, s11 + lam, s12, s13),
+        (s02, s12, s22 + lam, s23),
+        (s03, s13, s23, s33 + lam),
+    )
+    y0, y1, y2, y3 = cholesky_solve(A, e)
+    return [x * y0 + y * y1 + z * y2 + w * y3 for x, y, z, w in cols]
+
+
+def _gram(V: Sequence[Sequence[float]], lam: float) -> list[list[float]]:
+    """V V^T + lam I for the rows of V."""
+    k = len(V)
+    A = [[0.0] * k for _ in range(k)]
+    for r in range(k):
+        vr, Ar = V[r], A[r]
+        for c in range(r):
+            Ar[c] = A[c][r] = sum(map(mul, vr, V[c]))
+        Ar[r] = sum(map(mul, vr, vr)) + lam
+    return A
+
+
+def cholesky_solve(A: Sequence[Sequence[float]], b: Sequence[float]) -> list[float]:
+    """x with A x = b for a symmetric positive definite A (k x k, k small)."""
+    k = len(b)
+    if k == 3:
+        return _solve3(A, b)
+    L = [[0.0] * k for _ in range(k)]
+    for i in range(k):
+        Li = L[i]
+        for j in range(i + 1):
+            Lj = L[j]
+            s = A[i][j]
+            for t in range(j):
+                s -= Li[t] * Lj[t]
+            Li[j] = math.sqrt(max(s, 1e-300)) if i == j else s / Lj[j]
+    y = list(b)
+    for i in range(k):
+        Li = L[i]
+        for t in range(i):
+            y[i] -= Li[t] * y[t]
+        y[i] /= Li[i]
+    for i in reversed(range(k)):
+        for t in range(i + 1, k):
+            y[i] -= L[t][i] * y[t]
+        y[i] /= L[i][i]
+    return y
+
+
+def _solve3(A: Sequence[Sequence[float]], b: Sequence[float]) -> list[float]:
+    """x with A x = b for a symmetric positive definite 3 x 3 A, by the adjugate."""
+    (a, d, e), (_, c, f), (_, _, g) = A
+    b0, b1, b2 = b
+    i00, i01, i02 = c * g - f * f, e * f - d * g, d * f - c * e
+    i11, i12, i22 = a * g - e * e, d * e - a * f, a * c - d * d
+    det = a * i00 + d * i01 + e * i02
+    if det <= 1e-300:
+        det = 1e-300
+    return [
+        (i00 * b0 + i01 * b1 + i02 * b2) / det,
+        (i01 * b0 + i11 * b1 + i12 * b2) / det,
+        (i02 * b0 + i12 * b1 + i22 * b2) / det,
+    ]

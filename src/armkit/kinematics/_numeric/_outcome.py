@@ -1,0 +1,77 @@
+"""Turning a solver's best joint vector into an ``IKResult`` or the error saying why not."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..._errors import NoSolutionError, UnreachableError
+from ...model import ArmModel
+from .._result import IKResult
+from ._residual import Residual, Task, reach_bound
+
+
+@dataclass(frozen=True, slots=True)
+class Attempt:
+    """What one numeric solver ended with.
+
+    Attributes:
+        q: best joint angles found [rad], inside the limits.
+        residual: its residual.  iterations: total iterations.  restarts: restarts used.
+        converged: True if the errors are within the tolerances.
+    """
+
+    q: list[float]
+    residual: Residual
+    iterations: int
+    restarts: int
+    converged: bool
+
+
+def within(res: Residual, tol_pos: float, tol_ang: float) -> bool:
+    """True when the position [m] and angle [rad] errors are inside the tolerances."""
+    return res.position_error <= tol_pos and res.angle_error <= tol_ang
+
+
+def beyond_reach(model: ArmModel, task: Task) -> bool:
+    """True when the target point is farther from the base than any pose can reach."""
+    return math.sqrt(sum(v * v for v in task.p)) > reach_bound(model)
+
+
+def finish(model: ArmModel, method: str, task: Task, attempt: Attempt) -> IKResult:
+    """The ``IKResult`` of a converged attempt; raises otherwise.
+
+    Raises:
+        UnreachableError: reason ``"too_far"``, the target is out of reach.
+        NoSolutionError: reason ``"no_convergence"``, the solver stopped short.
+        Both carry the closest joint vector found in ``closest``.
+    """
+    q = np.array(attempt.q)
+    res = attempt.residual
+    if attempt.converged:
+        return IKResult(
+            q=q,
+            solutions=q[None, :],
+            method=method,
+            iterations=attempt.iterations,
+            restarts=attempt.restarts,
+            position_error=res.position_error,
+            angle_error=res.angle_error,
+        )
+    miss = f"{res.position_error * 1000:.3f} mm, {math.degrees(res.angle_error):.3f} deg"
+    if beyond_reach(model, task):
+        raise UnreachableError(
+            f"target is out of {model.name}'s reach (closest pose found misses by {miss}); "
+            "move the target closer to the base",
+            reason="too_far",
+            closest=q,
+        )
+    raise NoSolutionError(
+        f"{method} did not converge for {model.name} after {attempt.iterations} iterations and "
+        f"{attempt.restarts} restarts (closest pose misses by {miss}); the target may be outside "
+        "the joint limits, or try method='lm' or another q_seed",
+        reason="no_convergence",
+        closest=q,
+    )

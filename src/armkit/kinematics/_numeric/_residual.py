@@ -1,0 +1,166 @@
+"""The task residual e(q) and its masked Jacobian, for the three task masks.
+
+    position         e = p* - p                              (3 rows)
+    position+pitch   e = [p* - p, w (pitch* - pitch)]        (4 rows)
+    pose             e = [p* - p, w log(R* R^T)]             (6 rows)
+
+Angles are weighted by a length ``w`` [m/rad] so that one damped step mixes
+metres and radians sensibly; the errors reported (and the tolerances) are the
+unweighted distance [m] and angle [rad]. Scalar (one q) here; the vectorised
+version for the batch solver is in ``_residual_batch``.
+"""
+
+from __future__ import annotations
+
+import math
+from operator import mul
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...model import ArmModel
+from .._target import Target
+from ._scalar_chain import ChainState, Vec3
+
+
+@dataclass(frozen=True, slots=True)
+class Task:
+    """A target prepared for the solvers.
+
+    Attributes:
+        p: target tool point [m].
+        pitch: target pitch [rad] or None.
+        R: target rotation R_world_tool, row-major 9 floats, or None.
+        weight: metres per radian for the angle rows [m/rad].
+    """
+
+    p: Vec3
+    pitch: float | None
+    R: tuple[float, ...] | None
+    weight: float
+
+    @property
+    def rows(self) -> int:
+        """Number of residual rows: 3, 4 or 6."""
+        return 3 if self.pitch is None and self.R is None else (4 if self.R is None else 6)
+
+
+@dataclass(frozen=True, slots=True)
+class Residual:
+    """e, the masked weighted Jacobian (or None), and the unweighted errors.
+
+    Attributes:
+        e: residual, 3/4/6 floats.  cols: J by columns, per joint a tuple as long as e.
+        cost: |e|^2 (weighted).
+        position_error: [m].  angle_error: [rad] (0 for position-only tasks).
+    """
+
+    e: list[float]
+    cols: list[tuple[float, ...]] | None
+    position_error: float
+    angle_error: float
+    cost: float
+
+
+def angle_weight(model: ArmModel) -> float:
+    """Half the arm's reach bound [m/rad], the angle rows' weight."""
+    return 0.5 * reach_bound(model)
+
+
+def reach_bound(model: ArmModel) -> float:
+    """Upper bound on the tool point's distance from the world origin [m] (cached)."""
+    bound = model._cache.get("reach_bound")
+    if bound is None:
+        links = sum(math.hypot(r.a, r.d) for r in model.dh)
+        bound = links + float(np.linalg.norm(model.T_flange_tool[:3, 3]))
+        model._cache["reach_bound"] = bound
+    return float(bound)
+
+
+def task_of(model: ArmModel, target: Target) -> Task:
+    """The ``Task`` of a validated target."""
+    p = target.position
+    R = None if target.orientation is None else tuple(float(v) for v in target.orientation.ravel())
+    pitch = None if target.pitch is None else float(target.pitch)
+    return Task((float(p[0]), float(p[1]), float(p[2])), pitch, R, angle_weight(model))
+
+
+def residual(task: Task, st: ChainState, jac: bool = True) -> Residual:
+    """Residual of the chain state ``st`` for ``task``; the Jacobian rows if ``jac``."""
+    p = st.p
+    e = [task.p[0] - p[0], task.p[1] - p[1], task.p[2] - p[2]]
+    cols: list[tuple[float, ...]] | None = None
+    pos = math.sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2])
+    ang = 0.0
+    w = task.weight
+    if task.pitch is not None:
+        d = wrap(task.pitch - pitch_scalar(st.R[0], p))
+        e.append(w * d)
+        ang = abs(d)
+        if jac:
+            cols = [(*v, w * g) for v, g in zip(st.jv, pitch_gradient(st), strict=True)]
+    elif task.R is not None:
+        rv = rotation_log(task.R, st.R)
+        e.extend(w * v for v in rv)
+        ang = math.sqrt(rv[0] * rv[0] + rv[1] * rv[1] + rv[2] * rv[2])
+        if jac:
+            cols = [(*v, w * u[0], w * u[1], w * u[2]) for v, u in zip(st.jv, st.jw, strict=True)]
+    elif jac:
+        cols = list(st.jv)
+    return Residual(e, cols, pos, ang, sum(map(mul, e, e)))
+
+
+def wrap(angle: float) -> float:
+    """angle [rad] wrapped into [-pi, pi)."""
+    return (angle + math.pi) % (2.0 * math.pi) - math.pi
+
+
+def pitch_scalar(a: Vec3, p: Vec3) -> float:
+    """``pitch_of`` for approach axis a and tool point p [rad]."""
+    rho = math.hypot(p[0], p[1])
+    h = (a[0] * p[0] + a[1] * p[1]) / rho if rho >= 1e-9 else math.hypot(a[0], a[1])
+    return math.atan2(a[2], h)
+
+
+def pitch_gradient(st: ChainState) -> list[float]:
+    """d pitch / dq [rad/rad], one float per joint."""
+    (ax, ay, az), (px, py, _) = st.R[0], st.p
+    rho = max(math.hypot(px, py), 1e-9)
+    h = (ax * px + ay * py) / rho
+    den = max(az * az + h * h, 1e-300)
+    out = []
+    for (wx, wy, wz), (vx, vy, _) in zip(st.jw, st.jv, strict=True):
+        dax, day, daz = wy * az - wz * ay, wz * ax - wx * az, wx * ay - wy * ax
+        dh = (dax * px + ax * vx + day * py + ay * vy) / rho - h * (px * vx + py * vy) / (rho * rho)
+        out.append((h * daz - az * dh) / den)
+    return out
+
+
+def rotation_log(R_goal: tuple[float, ...], cols: tuple[Vec3, Vec3, Vec3]) -> Vec3:
+    """Rotation vector [rad] of R_goal R^T (world frame), R given by its columns."""
+    E = [
+        [sum(R_goal[3 * i + k] * cols[k][j] for k in range(3)) for j in range(3)] for i in range(3)
+    ]
+    vx, vy, vz = E[2][1] - E[1][2], E[0][2] - E[2][0], E[1][0] - E[0][1]
+    s = 0.5 * math.sqrt(vx * vx + vy * vy + vz * vz)
+    c = 0.5 * (E[0][0] + E[1][1] + E[2][2] - 1.0)
+    theta = math.atan2(s, c)
+    if s > 1e-6 or c > 0.0:
+        f = 0.5 if s < 1e-12 else theta / (2.0 * s)
+        return (f * vx, f * vy, f * vz)
+    return _log_near_pi(E, theta, c, (vx, vy, vz))
+
+
+def _log_near_pi(E: list[list[float]], theta: float, c: float, v: Vec3) -> Vec3:
+    """Rotation vector of a rotation by about pi: the axis from the symmetric part,
+    (E + E^T) / 2 - cos(theta) I = (1 - cos(theta)) u u^T."""
+    k = max(range(3), key=lambda i: E[i][i])
+    col = [0.5 * (E[i][k] + E[k][i]) for i in range(3)]
+    col[k] = E[k][k] - c
+    norm = math.sqrt(sum(x * x for x in col)) or 1.0
+    sign = -1.0 if sum(c * x for c, x in zip(col, v, strict=True)) < 0 else 1.0
+    return (
+        sign * theta * col[0] / norm,
+        sign * theta * col[1] / norm,
+        sign * theta * col[2] / norm,
+    )

@@ -1,0 +1,108 @@
+"""The task residual and masked Jacobian for N joint vectors at once (numpy).
+
+Same definitions as ``_residual`` (see there): position rows, then a weighted
+pitch row or three weighted rotation-vector rows.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ._residual import rotation_log
+
+F64 = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class BatchTask:
+    """N targets prepared for the batch solver.
+
+    Attributes:
+        P: tool points [m], shape (N, 3).
+        pitch: pitches [rad], shape (N,), or None.
+        R: rotations R_world_tool, shape (N, 3, 3), or None.
+        weight: metres per radian for the angle rows [m/rad].
+    """
+
+    P: F64
+    pitch: F64 | None
+    R: F64 | None
+    weight: float
+
+    def take(self, idx: NDArray[np.intp]) -> BatchTask:
+        """The targets at indices ``idx``."""
+        pitch = None if self.pitch is None else self.pitch[idx]
+        return BatchTask(self.P[idx], pitch, None if self.R is None else self.R[idx], self.weight)
+
+
+@dataclass(frozen=True)
+class BatchResidual:
+    """Residuals e (k, m), masked weighted Jacobians (k, m, dof), errors [m], [rad] (k,)."""
+
+    e: F64
+    J: F64
+    position_error: F64
+    angle_error: F64
+
+    @property
+    def cost(self) -> F64:
+        """|e|^2 per target, shape (k,)."""
+        return np.einsum("km,km->k", self.e, self.e)
+
+
+def residual_batch(task: BatchTask, J: F64, T: F64) -> BatchResidual:
+    """Residuals of poses T (k, 4, 4) with geometric Jacobians J (k, 6, dof)."""
+    e_pos = task.P - T[:, :3, 3]
+    pos = np.sqrt(np.einsum("ki,ki->k", e_pos, e_pos))
+    w = task.weight
+    if task.pitch is not None:
+        pitch, grad = _pitch_and_gradient(J, T)
+        d = np.remainder(task.pitch - pitch + np.pi, 2.0 * np.pi) - np.pi
+        e = np.concatenate([e_pos, w * d[:, None]], axis=1)
+        return BatchResidual(
+            e, np.concatenate([J[:, :3], w * grad[:, None]], axis=1), pos, np.abs(d)
+        )
+    if task.R is not None:
+        rv = _rotation_log(task.R, T[:, :3, :3])
+        e = np.concatenate([e_pos, w * rv], axis=1)
+        Jm = np.concatenate([J[:, :3], w * J[:, 3:]], axis=1)
+        return BatchResidual(e, Jm, pos, np.sqrt(np.einsum("ki,ki->k", rv, rv)))
+    return BatchResidual(e_pos, J[:, :3], pos, np.zeros_like(pos))
+
+
+def _pitch_and_gradient(J: F64, T: F64) -> tuple[F64, F64]:
+    """Pitch [rad], shape (k,), and d pitch / dq, shape (k, dof) (see ``pitch_gradient``)."""
+    a, p = T[:, :3, 0], T[:, :3, 3]
+    ax, ay, az, px, py = a[:, 0:1], a[:, 1:2], a[:, 2:3], p[:, 0:1], p[:, 1:2]
+    rho = np.maximum(np.hypot(px, py), 1e-9)
+    h = (ax * px + ay * py) / rho
+    Jv, Jw = J[:, :3], J[:, 3:]
+    da = np.cross(Jw, a[:, :, None], axisa=1, axisb=1, axisc=1)
+    vx, vy = Jv[:, 0], Jv[:, 1]
+    dh = (da[:, 0] * px + ax * vx + da[:, 1] * py + ay * vy) / rho - h * (px * vx + py * vy) / (
+        rho * rho
+    )
+    grad = (h * da[:, 2] - az * dh) / np.maximum(az * az + h * h, 1e-300)
+    on_axis = np.hypot(p[:, 0], p[:, 1]) < 1e-9
+    h_pitch = np.where(on_axis, np.hypot(a[:, 0], a[:, 1]), h[:, 0])
+    return np.arctan2(a[:, 2], h_pitch), grad
+
+
+def _rotation_log(R_goal: F64, R: F64) -> F64:
+    """Rotation vectors [rad] of R_goal R^T, shape (k, 3)."""
+    E = R_goal @ R.transpose(0, 2, 1)
+    v = np.stack(
+        [E[:, 2, 1] - E[:, 1, 2], E[:, 0, 2] - E[:, 2, 0], E[:, 1, 0] - E[:, 0, 1]], axis=1
+    )
+    s = 0.5 * np.sqrt(np.einsum("ki,ki->k", v, v))
+    c = 0.5 * (np.trace(E, axis1=1, axis2=2) - 1.0)
+    theta = np.arctan2(s, c)
+    f = np.where(s < 1e-12, 0.5, theta / (2.0 * np.maximum(s, 1e-300)))
+    out = f[:, None] * v
+    for i in np.flatnonzero((s <= 1e-6) & (c <= 0.0)):
+        cols = (tuple(R[i, :, 0]), tuple(R[i, :, 1]), tuple(R[i, :, 2]))
+        out[i] = rotation_log(tuple(R_goal[i].ravel()), cols)  # type: ignore[arg-type]
+    return out

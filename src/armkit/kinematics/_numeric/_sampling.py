@@ -1,0 +1,38 @@
+"""Seeded joint vectors inside the limits: where restarts begin."""
+
+from __future__ import annotations
+
+import random
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ...model import ArmModel
+
+
+class JointSampler:
+    """Uniform joint vectors inside a model's limits, reproducible from a seed.
+
+    Args:
+        model: the arm.
+        seed: the random seed; the same seed gives the same sequence.
+    """
+
+    def __init__(self, model: ArmModel, seed: int) -> None:
+        self._random = random.Random(seed)
+        self._bounds = [(j.lower, j.upper) for j in model.joints]
+
+    def sample(self) -> list[float]:
+        """One joint vector [rad], dof floats, each inside its joint's limits."""
+        uniform = self._random.uniform
+        return [uniform(lo, hi) for lo, hi in self._bounds]
+
+
+def sample_joints(model: ArmModel, rng: np.random.Generator, n: int) -> NDArray[np.float64]:
+    """n joint vectors uniform inside the limits [rad], shape (n, dof)."""
+    return rng.uniform(model.lower, model.upper, size=(n, model.dof))
+
+
+def clamp_to_limits(model: ArmModel, q: list[float]) -> list[float]:
+    """q [rad] with every joint clamped into its limits."""
+    return [min(max(float(v), j.lower), j.upper) for v, j in zip(q, model.joints, strict=True)]

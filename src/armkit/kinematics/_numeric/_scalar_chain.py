@@ -1,0 +1,139 @@
+"""Tool pose and geometric Jacobian for ONE joint vector, in plain Python floats.
+
+For 2-6 joints, plain float arithmetic beats numpy's per-call overhead by an
+order of magnitude, which is what a single-target iterative solver needs.
+Same conventions as ``armkit.kinematics.fk`` / ``jacobian`` (checked by tests).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ...model import ArmModel
+from .._chain import chain_of
+
+Vec3 = tuple[float, float, float]
+Row = tuple[float, float, float, float, float, float]
+
+
+@dataclass(frozen=True, slots=True)
+class ScalarChain:
+    """The DH rows and the tool as Python floats.
+
+    Attributes:
+        modified: True for modified (Craig) DH.
+        rows: per joint (a [m], d [m], cos alpha, sin alpha, theta offset [rad], sign).
+        tool_R: rotation of T_flange_tool, row-major, 9 floats.
+        tool_p: translation of T_flange_tool [m].
+    """
+
+    modified: bool
+    rows: tuple[Row, ...]
+    tool_R: tuple[float, ...]
+    tool_p: Vec3
+
+
+@dataclass(frozen=True, slots=True)
+class ChainState:
+    """Tool pose and Jacobian at one q.
+
+    Attributes:
+        p: tool point [m].
+        R: tool rotation columns (x = approach, y, z), each a unit Vec3.
+        jv: per joint, the tool point's linear velocity per unit angle [m/rad].
+        jw: per joint, the angular velocity per unit angle (signed joint axis).
+    """
+
+    p: Vec3
+    R: tuple[Vec3, Vec3, Vec3]
+    jv: list[Vec3]
+    jw: list[Vec3]
+
+
+def scalar_chain(model: ArmModel) -> ScalarChain:
+    """The model's ``ScalarChain``, built once and cached on the model."""
+    sc = model._cache.get("scalar_chain")
+    if sc is None:
+        chain = chain_of(model)
+        t = chain.T_tool
+        sc = ScalarChain(
+            modified=chain.modified,
+            rows=chain.rows,
+            tool_R=tuple(float(t[i, j]) for i in range(3) for j in range(3)),
+            tool_p=(float(t[0, 3]), float(t[1, 3]), float(t[2, 3])),
+        )
+        model._cache["scalar_chain"] = sc
+    return sc  # type: ignore[no-any-return]
+
+
+def chain_state(sc: ScalarChain, q: list[float]) -> ChainState:
+    """Tool pose and Jacobian for joint angles q [rad], length dof."""
+    axes, origins, R, p = _frames(sc, q)
+    px, py, pz = p
+    jv: list[Vec3] = []
+    for (zx, zy, zz), (ox, oy, oz) in zip(axes, origins, strict=True):
+        dx, dy, dz = px - ox, py - oy, pz - oz
+        jv.append((zy * dz - zz * dy, zz * dx - zx * dz, zx * dy - zy * dx))
+    return ChainState(p, R, jv, axes)
+
+
+def _frames(
+    sc: ScalarChain, q: list[float]
+) -> tuple[list[Vec3], list[Vec3], tuple[Vec3, Vec3, Vec3], Vec3]:
+    """Signed joint axes, points on them, tool rotation columns and tool point."""
+    ax, ay, az, bx, by, bz, cx, cy, cz = 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0
+    px = py = pz = 0.0
+    axes: list[Vec3] = []
+    origins: list[Vec3] = []
+    modified = sc.modified
+    for (a, d, ca, sa, off, sign), qi in zip(sc.rows, q, strict=True):
+        th = sign * qi + off
+        c, s = math.cos(th), math.sin(th)
+        if modified:
+            px, py, pz = px + a * ax, py + a * ay, pz + a * az
+            bx, by, bz, cx, cy, cz = (
+                ca * bx + sa * cx, ca * by + sa * cy, ca * bz + sa * cz,
+                ca * cx - sa * bx, ca * cy - sa * by, ca * cz - sa * bz,
+            )  # fmt: skip
+            ax, ay, az, bx, by, bz = (
+                c * ax + s * bx, c * ay + s * by, c * az + s * bz,
+                c * bx - s * ax, c * by - s * ay, c * bz - s * az,
+            )  # fmt: skip
+            px, py, pz = px + d * cx, py + d * cy, pz + d * cz
+            axes.append((sign * cx, sign * cy, sign * cz))
+            origins.append((px, py, pz))
+        else:
+            axes.append((sign * cx, sign * cy, sign * cz))
+            origins.append((px, py, pz))
+            xx, xy, xz = c * ax + s * bx, c * ay + s * by, c * az + s * bz
+            yx, yy, yz = c * bx - s * ax, c * by - s * ay, c * bz - s * az
+            px, py, pz = px + d * cx + a * xx, py + d * cy + a * xy, pz + d * cz + a * xz
+            ax, ay, az = xx, xy, xz
+            bx, by, bz, cx, cy, cz = (
+                ca * yx + sa * cx, ca * yy + sa * cy, ca * yz + sa * cz,
+                ca * cx - sa * yx, ca * cy - sa * yy, ca * cz - sa * yz,
+            )  # fmt: skip
+    return axes, origins, *_tool(sc, (ax, ay, az), (bx, by, bz), (cx, cy, cz), (px, py, pz))
+
+
+def _tool(
+    sc: ScalarChain, a: Vec3, b: Vec3, c: Vec3, p: Vec3
+) -> tuple[tuple[Vec3, Vec3, Vec3], Vec3]:
+    """Right-multiply the flange frame (columns a, b, c, origin p) by T_flange_tool."""
+    t00, t01, t02, t10, t11, t12, t20, t21, t22 = sc.tool_R
+    cols = (
+        (a[0] * t00 + b[0] * t10 + c[0] * t20, a[1] * t00 + b[1] * t10 + c[1] * t20,
+         a[2] * t00 + b[2] * t10 + c[2] * t20),
+        (a[0] * t01 + b[0] * t11 + c[0] * t21, a[1] * t01 + b[1] * t11 + c[1] * t21,
+         a[2] * t01 + b[2] * t11 + c[2] * t21),
+        (a[0] * t02 + b[0] * t12 + c[0] * t22, a[1] * t02 + b[1] * t12 + c[1] * t22,
+         a[2] * t02 + b[2] * t12 + c[2] * t22),
+    )  # fmt: skip
+    tx, ty, tz = sc.tool_p
+    tip = (
+        p[0] + a[0] * tx + b[0] * ty + c[0] * tz,
+        p[1] + a[1] * tx + b[1] * ty + c[1] * tz,
+        p[2] + a[2] * tx + b[2] * ty + c[2] * tz,
+    )
+    return cols, tip

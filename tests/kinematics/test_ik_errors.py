@@ -1,0 +1,136 @@
+"""IK refuses what it cannot do, and says why."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from armkit import UnreachableError
+from armkit.kinematics import fk, ik, ik_batch
+from armkit.kinematics._family import family_of
+from armkit.model import load_model
+
+
+def test_too_far_too_close_and_limits() -> None:
+    m = load_model("openmanipulator_x")
+    with pytest.raises(UnreachableError, match="too far") as far:
+        ik(m, (1.0, 0.0, 0.1), -math.pi / 2)
+    assert far.value.reason == "too_far"
+    with pytest.raises(UnreachableError) as close:
+        ik(m, (0.01, 0.0, 0.077), 0.0)
+    assert close.value.reason in {"too_close", "joint_limit"}
+    with pytest.raises(
+        UnreachableError, match=r"(waist|shoulder|elbow|wrist) would be .* allowed"
+    ) as lim:
+        ik(m, (0.15, 0.0, 0.05), math.pi / 2)  # pointing up from low down: the shoulder cannot
+    assert lim.value.reason == "joint_limit"
+
+
+def test_off_plane_for_planar_arm() -> None:
+    m = load_model("planar2")
+    with pytest.raises(UnreachableError) as exc:
+        ik(m, (0.5, 0.1, 0.5))
+    assert exc.value.reason == "off_plane"
+
+
+def test_planar2_pitch_follows_position() -> None:
+    m = load_model("planar2")
+    with pytest.raises(UnreachableError) as exc:
+        ik(m, (0.5, 0.0, 0.5), 1.234)
+    assert exc.value.reason == "pitch"
+
+
+@pytest.mark.parametrize(
+    ("position", "match"),
+    [
+        ((0.1, float("nan"), 0.1), "finite"),
+        ((0.1, math.inf, 0.1), "finite"),
+        ((0.1, 0.2), "three numbers"),
+        (np.zeros(4), "shape"),
+        ("xyz", "three numbers"),
+    ],
+)
+def test_bad_position(position: object, match: str) -> None:
+    with pytest.raises(ValueError, match=match):
+        ik(load_model("openmanipulator_x"), position)  # type: ignore[arg-type]
+
+
+def test_bad_pitch_seed_and_method() -> None:
+    m = load_model("openmanipulator_x")
+    with pytest.raises(ValueError, match="pitch"):
+        ik(m, (0.2, 0, 0.1), float("nan"))
+    with pytest.raises(ValueError, match="q_seed"):
+        ik(m, (0.2, 0, 0.1), 0.0, q_seed=[0, 0])
+    with pytest.raises(ValueError, match="method must be one of"):
+        ik(m, (0.2, 0, 0.1), 0.0, method="magic")
+    with pytest.raises(ValueError, match="positions"):
+        ik_batch(m, np.zeros((3, 2)))
+    with pytest.raises(ValueError, match="pitches"):
+        ik_batch(m, np.zeros((3, 3)), np.zeros(2))
+
+
+def test_family_is_recognised_from_geometry_not_names(tmp_path: Path) -> None:
+    """The OpenManipulator-X rewritten in standard DH is still solved in closed form."""
+    text = """
+name = "omx_standard"
+dh_convention = "standard"
+[[joints]]
+name = "j1"
+limits_deg = [-180, 180]
+home_deg = 0
+dh = { a_mm = 0, alpha_deg = -90, d_mm = 77 }
+[[joints]]
+name = "j2"
+limits_deg = [-90, 90]
+home_deg = 0
+dh = { a_mm = 130, alpha_deg = 0, d_mm = 0, theta_offset_deg = -79.38 }
+[[joints]]
+name = "j3"
+limits_deg = [-90, 90]
+home_deg = 0
+dh = { a_mm = 124, alpha_deg = 0, d_mm = 0, theta_offset_deg = 79.38 }
+[[joints]]
+name = "j4"
+limits_deg = [-100, 110]
+home_deg = 0
+dh = { a_mm = 126, alpha_deg = 0, d_mm = 0 }
+"""
+    path = tmp_path / "omx_standard.toml"
+    path.write_text(text)
+    m = load_model(path)
+    assert family_of(m) is not None
+    q = np.radians([30, 20, -10, 15])
+    T = fk(m, q)
+    res = ik(m, T[:3, 3], -math.radians(25), q_seed=q)
+    assert np.allclose(res.q, q, atol=1e-9)
+
+
+def test_twisted_arm_is_not_family(tmp_path: Path) -> None:
+    text = """
+name = "twisted"
+dh_convention = "standard"
+[[joints]]
+name = "a"
+limits_deg = [-180, 180]
+home_deg = 0
+dh = { a_mm = 0, alpha_deg = 90, d_mm = 100 }
+[[joints]]
+name = "b"
+limits_deg = [-180, 180]
+home_deg = 0
+dh = { a_mm = 100, alpha_deg = 45, d_mm = 0 }
+[[joints]]
+name = "c"
+limits_deg = [-180, 180]
+home_deg = 0
+dh = { a_mm = 100, alpha_deg = 0, d_mm = 0 }
+"""
+    path = tmp_path / "twisted.toml"
+    path.write_text(text)
+    m = load_model(path)
+    assert family_of(m) is None
+    with pytest.raises(ValueError, match="not a base yaw"):
+        ik(m, (0.1, 0.1, 0.1), method="analytic")
