@@ -8,6 +8,7 @@ import sys
 from collections.abc import Sequence
 
 from .._errors import ArmkitError
+from ._parser import Parser
 
 # Modules that add sub-commands: each defines ``add_commands(sub)`` and its
 # handlers take the parsed ``args`` and return an exit code.
@@ -37,7 +38,7 @@ examples:
 
 def build_parser() -> argparse.ArgumentParser:
     """The full parser with every command module's sub-commands."""
-    parser = argparse.ArgumentParser(
+    parser = Parser(
         prog="armkit",
         description="Drive cheap robot arms by where the gripper should go.",
         epilog=EPILOG,
@@ -51,10 +52,16 @@ def build_parser() -> argparse.ArgumentParser:
         "(default: openmanipulator_x)",
     )
     parser.add_argument(
-        "--driver", default="sim", metavar="NAME", help="driver: sim (default), owi535, ssc32, maestro, dynamixel"
+        "--driver",
+        default="sim",
+        metavar="NAME",
+        help="driver: sim (default), owi535, ssc32, maestro, dynamixel",
     )
     parser.add_argument(
-        "--port", default=None, metavar="PORT", help="serial port or device for the driver ('emu' = emulator)"
+        "--port",
+        default=None,
+        metavar="PORT",
+        help="serial port or device for the driver ('emu' = emulator)",
     )
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     for name in COMMAND_MODULES:

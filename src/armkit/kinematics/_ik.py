@@ -14,7 +14,7 @@ from . import _analytic
 from ._analytic_batch import solve_batch as solve_batch_analytic
 from ._family import PlanarFamily, family_of, why_not_family
 from ._fast import fast_solver
-from ._fk import fk
+from ._fk import CHUNK, fk
 from ._pose import pitch_of
 from ._result import IKBatchResult, IKResult
 from ._target import Target
@@ -211,14 +211,34 @@ def ik_batch(
     assert fam is not None
     if pitch is None and len(fam.planar) == 3:
         return _free_pitch_batch(model, fam, P, seed)
-    q, ok, reason = solve_batch_analytic(model, fam, P, pitch, seed)
+    q, ok, reason = _analytic_chunks(model, fam, P, pitch, seed)
     return IKBatchResult(q=q, ok=ok, reason=reason, method="analytic")
+
+
+def _analytic_chunks(
+    model: ArmModel, fam: PlanarFamily, P: F64, pitch: F64 | None, seed: F64
+) -> tuple[F64, NDArray[np.bool_], NDArray[np.str_]]:
+    """The vectorised closed form over cache-sized chunks of targets."""
+    parts = [
+        solve_batch_analytic(
+            model,
+            fam,
+            P[s : s + CHUNK],
+            None if pitch is None else pitch[s : s + CHUNK],
+            seed[s : s + CHUNK],
+        )
+        for s in range(0, len(P), CHUNK)
+    ]
+    if len(parts) == 1:
+        return parts[0]
+    q, ok, reason = zip(*parts, strict=True)
+    return np.concatenate(q), np.concatenate(ok), np.concatenate(reason)
 
 
 def _free_pitch_batch(model: ArmModel, fam: PlanarFamily, P: F64, seed: F64) -> IKBatchResult:
     """Position-only targets: try the seed's pitch for all, then search per failed target."""
     preferred = np.asarray(pitch_of(fk(model, seed)), dtype=np.float64)
-    q, ok, reason = solve_batch_analytic(model, fam, P, preferred, seed)
+    q, ok, reason = _analytic_chunks(model, fam, P, preferred, seed)
     for i in np.flatnonzero(~ok):
         try:
             sols = _analytic.solve(model, fam, tuple(P[i].tolist()), None, tuple(seed[i].tolist()))

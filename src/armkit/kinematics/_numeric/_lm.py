@@ -12,6 +12,7 @@ per call on a 4-joint arm.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from ...model import ArmModel
@@ -35,8 +36,8 @@ class LMSettings:
         mu_down, mu_up: factors on mu after an accepted / a rejected step.
     """
 
-    run_iterations: int = 60
-    stall_iterations: int = 8
+    run_iterations: int = 20
+    stall_iterations: int = 4
     max_restarts: int = 60
     max_step: float = 1.0
     mu: float = 0.1
@@ -45,9 +46,11 @@ class LMSettings:
 
 
 DEFAULT_SETTINGS = LMSettings()
+CANDIDATES = 8  # random joint vectors drawn per restart; the best one starts the run
 
 
 DEFAULT_SETTINGS = LMSettings()
+CANDIDATES = 8  # random joint vectors drawn per restart; the best one starts the run
 
 
 @dataclass(frozen=True, slots=True)
@@ -79,7 +82,7 @@ def solve_lm(
     for k in range(restarts + 1):
         if k == 1:
             sampler = JointSampler(model, rng_seed)
-        q, res, its = lm_run(prob, q if sampler is None else sampler.sample())
+        q, res, its = lm_run(prob, q if sampler is None else _best_sample(prob, sampler))
         total += its
         done = within(res, tol_pos, tol_ang)
         if best is None or done or res.cost < best.residual.cost:
@@ -88,6 +91,17 @@ def solve_lm(
             break
     assert best is not None
     return Attempt(best.q, best.residual, total, best.restarts, best.converged)
+
+
+def _best_sample(prob: _Problem, sampler: JointSampler) -> list[float]:
+    """The lowest-cost of CANDIDATES random joint vectors inside the limits."""
+    best, cost = sampler.sample(), math.inf
+    for _ in range(CANDIDATES):
+        q = sampler.sample()
+        c = residual(prob.task, chain_state(prob.sc, q), jac=False).cost
+        if c < cost:
+            best, cost = q, c
+    return best
 
 
 def lm_run(prob: _Problem, q: list[float]) -> tuple[list[float], Residual, int]:

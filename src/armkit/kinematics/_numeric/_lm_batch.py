@@ -17,7 +17,7 @@ from numpy.typing import NDArray
 
 from ...model import ArmModel
 from .._jacobian import jacobian_and_pose
-from ._lm import DEFAULT_SETTINGS, LMSettings, solve_lm
+from ._lm import CANDIDATES, DEFAULT_SETTINGS, LMSettings, solve_lm
 from ._residual import Task, reach_bound
 from ._residual_batch import BatchResidual, BatchTask, residual_batch
 
@@ -103,11 +103,34 @@ def damped_steps(J: F64, e: F64, lam: F64, free: NDArray[np.bool_] | None = None
         J = J * free[:, None, :]
     m, n = J.shape[1], J.shape[2]
     Jt = J.transpose(0, 2, 1)
+    if m == 3 and n >= 3:
+        A = J @ Jt
+        A[:, [0, 1, 2], [0, 1, 2]] += lam[:, None]
+        return np.einsum("kjm,km->kj", Jt, solve3(A, e))
     if m <= n:
         A = J @ Jt + lam[:, None, None] * np.eye(m)
-        return (Jt @ np.linalg.solve(A, e[:, :, None]))[:, :, 0]
+        return np.asarray((Jt @ np.linalg.solve(A, e[:, :, None]))[:, :, 0], dtype=np.float64)
     A = Jt @ J + lam[:, None, None] * np.eye(n)
-    return np.linalg.solve(A, (Jt @ e[:, :, None]))[:, :, 0]
+    return np.asarray(np.linalg.solve(A, (Jt @ e[:, :, None]))[:, :, 0], dtype=np.float64)
+
+
+def solve3(A: F64, b: F64) -> F64:
+    """x with A x = b for k symmetric 3 x 3 matrices A (k, 3, 3), b (k, 3), by the adjugate."""
+    a, d, f = A[:, 0, 0], A[:, 0, 1], A[:, 0, 2]
+    c, g, h = A[:, 1, 1], A[:, 1, 2], A[:, 2, 2]
+    i00, i01, i02 = c * h - g * g, f * g - d * h, d * g - c * f
+    i11, i12, i22 = a * h - f * f, d * f - a * g, a * c - d * d
+    det = np.maximum(a * i00 + d * i01 + f * i02, 1e-300)
+    b0, b1, b2 = b[:, 0], b[:, 1], b[:, 2]
+    x = np.stack(
+        [
+            i00 * b0 + i01 * b1 + i02 * b2,
+            i01 * b0 + i11 * b1 + i12 * b2,
+            i02 * b0 + i12 * b1 + i22 * b2,
+        ],
+        axis=1,
+    )
+    return np.asarray(x / det[:, None], dtype=np.float64)
 
 
 def _iterate(model: ArmModel, task: BatchTask, s: _State, idx: IDX, st: LMSettings) -> None:
@@ -146,12 +169,23 @@ def _restart_stalled(
     go = stalled[s.restarts[stalled] < s.max_restarts[stalled]]
     if go.size == 0:
         return
-    q = rng.uniform(model.lower, model.upper, size=(go.size, model.dof))
-    r = _evaluate(model, task.take(go), q)
+    q, r = _best_of_samples(model, task.take(go), rng)
     s.q[go], s.e[go], s.J[go], s.cost[go] = q, r.e, r.J, r.cost
     s.pos[go], s.ang[go] = r.position_error, r.angle_error
     s.mu[go], s.best[go], s.since[go], s.run_its[go] = st.mu, s.cost[go], 0, 0
     s.restarts[go] += 1
+
+
+def _best_of_samples(
+    model: ArmModel, task: BatchTask, rng: np.random.Generator
+) -> tuple[F64, BatchResidual]:
+    """Per target, the lowest-cost of CANDIDATES random joint vectors inside the limits."""
+    k, c = len(task.P), CANDIDATES
+    q = rng.uniform(model.lower, model.upper, size=(k * c, model.dof))
+    r = _evaluate(model, task.take(np.repeat(np.arange(k), c)), q)
+    pick = np.arange(k) * c + r.cost.reshape(k, c).argmin(axis=1)
+    best = BatchResidual(r.e[pick], r.J[pick], r.position_error[pick], r.angle_error[pick])
+    return q[pick], best
 
 
 def _finish_tail(

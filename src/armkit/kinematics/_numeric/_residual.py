@@ -13,8 +13,8 @@ version for the batch solver is in ``_residual_batch``.
 from __future__ import annotations
 
 import math
-from operator import mul
 from dataclasses import dataclass
+from operator import mul
 
 import numpy as np
 

@@ -50,7 +50,7 @@ class BatchResidual:
     @property
     def cost(self) -> F64:
         """|e|^2 per target, shape (k,)."""
-        return np.einsum("km,km->k", self.e, self.e)
+        return np.asarray(np.einsum("km,km->k", self.e, self.e), dtype=np.float64)
 
 
 def residual_batch(task: BatchTask, J: F64, T: F64) -> BatchResidual:

@@ -1,0 +1,95 @@
+"""``armkit demo``: a short tour on the simulated OpenManipulator-X."""
+
+from __future__ import annotations
+
+import argparse
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .._errors import UnreachableError
+from ..kinematics import fk, ik, pitch_of
+from ..model import load_model
+from ._table import table
+
+TOUR = [  # (x, y, z) mm, pitch deg: above a cube, a cube to the left, reaching far, too far
+    ((200.0, 0.0, 50.0), -90.0),
+    ((150.0, 120.0, 30.0), -90.0),
+    ((280.0, -40.0, 120.0), 0.0),
+    ((180.0, 0.0, 250.0), 30.0),
+    ((450.0, 0.0, 50.0), -90.0),
+]
+
+
+def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
+    """Add ``demo``."""
+    p = sub.add_parser(
+        "demo",
+        help="a short tour on the simulated OpenManipulator-X (no hardware)",
+        description="Solve a few gripper targets on the simulated OpenManipulator-X, check each "
+        "answer by forward kinematics, and draw the first pose.",
+    )
+    p.add_argument(
+        "-o",
+        "--output",
+        default="demo_pose.png",
+        metavar="FILE",
+        help="picture (default demo_pose.png)",
+    )
+    p.set_defaults(func=run_demo)
+
+
+def run_demo(args: argparse.Namespace) -> int:
+    m = load_model("openmanipulator_x")
+    print(f"armkit demo: {m.description}\n")
+    print(
+        "Where should the gripper go?  armkit finds the joint angles and checks them by forward kinematics.\n"
+    )
+    rows, first = [], None
+    for xyz, pitch in TOUR:
+        try:
+            res = ik(m, np.array(xyz) / 1000.0, math.radians(pitch))
+        except UnreachableError as exc:
+            rows.append([*_fmt(xyz), pitch, f"unreachable ({exc.reason})", "", ""])
+            continue
+        first = res.q if first is None else first
+        T = fk(m, res.q)
+        err = float(np.linalg.norm(T[:3, 3] * 1000 - xyz))
+        angles = " ".join(f"{v:7.2f}" for v in np.degrees(res.q))
+        rows.append(
+            [*_fmt(xyz), pitch, angles, f"{err:.1e}", round(math.degrees(float(pitch_of(T))), 2)]
+        )
+    headers = [
+        "x mm",
+        "y mm",
+        "z mm",
+        "pitch",
+        "waist shoulder elbow wrist (deg)",
+        "error mm",
+        "fk pitch",
+    ]
+    print(table(headers, rows))
+    _picture(m, first, args.output)
+    print(
+        "\nNext: 'armkit --help', 'armkit --arm lynx6 ik 200 0 50 --pitch -90 --all', 'armkit arms'."
+    )
+    return 0
+
+
+def _fmt(xyz: tuple[float, float, float]) -> list[object]:
+    return [round(v, 1) for v in xyz]
+
+
+def _picture(m: Any, q: Any, output: str) -> None:
+    if q is None:
+        return
+    try:
+        from ..viz import plot_pose
+
+        path = plot_pose(m, q, Path(output), title="armkit demo: above a cube, pitch -90 deg")
+    except Exception as exc:  # a missing plot extra must not spoil the tour
+        print(f"\n(no picture: {exc})")
+        return
+    print(f"\npicture of the first pose: {path}")

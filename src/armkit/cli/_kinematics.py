@@ -1,0 +1,122 @@
+"""``armkit fk``, ``ik`` and ``plot``: millimetres and degrees in, millimetres and degrees out."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+from typing import Any
+
+import numpy as np
+
+from ..kinematics import fk, ik, pitch_of
+from ..model import ArmModel, load_model
+from ._table import table
+
+
+def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
+    """Add ``fk``, ``ik`` and ``plot``."""
+    p = sub.add_parser(
+        "fk",
+        help="joint angles (deg) -> gripper position (mm) and pitch (deg)",
+        description="Forward kinematics: joint angles in degrees, in model order (see 'armkit show'), "
+        "to the gripper point in mm and its pitch in degrees.",
+    )
+    p.add_argument("angles", nargs="+", type=float, metavar="DEG", help="one angle per joint [deg]")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(func=run_fk)
+    p = sub.add_parser(
+        "ik",
+        help="gripper position (mm) [+ pitch] -> joint angles (deg)",
+        description="Inverse kinematics: a gripper point X Y Z in mm (x forward, y left, z up) and "
+        "optionally its pitch in degrees (0 = level, -90 = pointing down) to joint angles in degrees.",
+    )
+    p.add_argument("xyz", nargs=3, type=float, metavar=("X", "Y", "Z"), help="target [mm]")
+    p.add_argument(
+        "--pitch", type=float, metavar="DEG", help="gripper pitch [deg]; default: the arm's own"
+    )
+    p.add_argument(
+        "--all", action="store_true", help="print every solution (elbow up/down, over the shoulder)"
+    )
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(func=run_ik)
+    p = sub.add_parser(
+        "plot",
+        help="draw the arm in a pose with each joint's axes (plot extra)",
+        description="Draw the arm in the given pose (degrees) with x/y/z axis indicators on every joint frame.",
+    )
+    p.add_argument("angles", nargs="+", type=float, metavar="DEG", help="one angle per joint [deg]")
+    p.add_argument(
+        "-o", "--output", default="pose.png", metavar="FILE", help="image file (default pose.png)"
+    )
+    p.set_defaults(func=run_plot)
+
+
+def joint_angles(m: ArmModel, degrees: list[float]) -> np.ndarray:
+    """Degrees from the command line -> radians, checked for count and finiteness."""
+    if len(degrees) != m.dof:
+        names = ", ".join(m.joint_names)
+        raise ValueError(
+            f"{m.name} needs {m.dof} joint angles in degrees ({names}), got {len(degrees)}"
+        )
+    if not all(math.isfinite(d) for d in degrees):
+        raise ValueError(f"joint angles must be finite numbers, got {degrees}")
+    return np.radians(degrees)
+
+
+def run_fk(args: argparse.Namespace) -> int:
+    m = load_model(args.arm)
+    q = joint_angles(m, args.angles)
+    T = fk(m, q)
+    pos = (T[:3, 3] * 1000).round(3).tolist()
+    pitch = round(math.degrees(float(pitch_of(T))), 3)
+    outside = [
+        j.name
+        for j, v in zip(m.joints, q, strict=True)
+        if not j.lower - 1e-9 <= v <= j.upper + 1e-9
+    ]
+    if args.json:
+        joints = dict(zip(m.joint_names, args.angles, strict=True))
+        print(
+            json.dumps(
+                {"arm": m.name, "joints_deg": joints, "position_mm": pos, "pitch_deg": pitch}
+            )
+        )
+        return 0
+    print(f"position: x {pos[0]:.2f}  y {pos[1]:.2f}  z {pos[2]:.2f} mm   pitch {pitch:.2f} deg")
+    if outside:
+        print(
+            f"note: outside the joint limits: {', '.join(outside)} (see 'armkit --arm {m.name} show')"
+        )
+    return 0
+
+
+def run_ik(args: argparse.Namespace) -> int:
+    m = load_model(args.arm)
+    target = [float(v) for v in args.xyz]
+    if not all(math.isfinite(v) for v in target):
+        raise ValueError(f"target must be finite numbers in mm, got {target}")
+    pitch = None if args.pitch is None else math.radians(args.pitch)
+    result = ik(m, np.array(target) / 1000.0, pitch)
+    sols = result.solutions if args.all else result.solutions[:1]
+    degs = [np.degrees(s).round(3).tolist() for s in sols]
+    if args.json:
+        out: dict[str, Any] = {"arm": m.name, "target_mm": target, "pitch_deg": args.pitch}
+        out["solutions"] = [{"joints_deg": dict(zip(m.joint_names, d, strict=True))} for d in degs]
+        print(json.dumps(out))
+        return 0
+    rows = [[k + 1, *d] for k, d in enumerate(degs)]
+    print(table(["#", *(f"{n} deg" for n in m.joint_names)], rows))
+    if not args.all and len(result.solutions) > 1:
+        print(f"({len(result.solutions)} solutions; --all shows every one)")
+    return 0
+
+
+def run_plot(args: argparse.Namespace) -> int:
+    m = load_model(args.arm)
+    q = joint_angles(m, args.angles)
+    from ..viz import plot_pose
+
+    path = plot_pose(m, q, args.output)
+    print(f"wrote {path}")
+    return 0
