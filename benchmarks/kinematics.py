@@ -52,14 +52,28 @@ def measure(name: str, n: int, batch: int, seed: int) -> list[str]:
     q = rng.uniform(m.lower, m.upper, (max(n, batch), m.dof))
     T = fk(m, q)
     P = T[:, :3, 3]
-    pitch = None if family_of(m) is not None and len(family_of(m).planar) == 2 else np.asarray(pitch_of(T))  # type: ignore[union-attr]
+    fam = family_of(m)
+    free = fam is not None and len(fam.planar) == 2  # planar2: the pitch follows from the position
+    pitch = None if free else np.asarray(pitch_of(T))
     targets = [(tuple(P[i].tolist()), None if pitch is None else float(pitch[i])) for i in range(n)]
     fk_us = statistics.median(per_call(lambda i=i: fk(m, q[i])) for i in range(min(n, 300))) * 1e6
     fk_ns = best_of(lambda: fk(m, q[:batch])) / batch * 1e9
     ik_us = statistics.median(per_call(lambda t=t: ik(m, t[0], t[1])) for t in targets) * 1e6
-    ikb_ns = best_of(lambda: ik_batch(m, P[:batch], None if pitch is None else pitch[:batch])) / batch * 1e9
+    ikb_ns = (
+        best_of(lambda: ik_batch(m, P[:batch], None if pitch is None else pitch[:batch]))
+        / batch
+        * 1e9
+    )
     ok = verify(m, targets)
-    return [name, f"{fk_us:.2f}", f"{fk_ns:.0f}", f"{ik_us:.2f}", f"{ikb_ns:.0f}", f"{1e9 / ikb_ns / 1e6:.2f}", f"{ok:.2f}"]
+    return [
+        name,
+        f"{fk_us:.2f}",
+        f"{fk_ns:.0f}",
+        f"{ik_us:.2f}",
+        f"{ikb_ns:.0f}",
+        f"{1e9 / ikb_ns / 1e6:.2f}",
+        f"{ok:.2f}",
+    ]
 
 
 def verify(m, targets) -> float:  # type: ignore[no-untyped-def]
@@ -69,18 +83,32 @@ def verify(m, targets) -> float:  # type: ignore[no-untyped-def]
         res = ik(m, p, pt)
         T = fk(m, res.q)
         close = np.linalg.norm(T[:3, 3] - p) < 1e-3
-        level = pt is None or abs(math.remainder(float(pitch_of(T)) - pt, 2 * math.pi)) < math.radians(0.01)
+        level = pt is None or abs(
+            math.remainder(float(pitch_of(T)) - pt, 2 * math.pi)
+        ) < math.radians(0.01)
         good += bool(close and level and m.within_limits(res.q))
     return 100.0 * good / len(targets)
 
 
 def main() -> None:
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--n", type=int, default=1000, help="single-call targets per arm (default 1000)")
+    ap = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
+    ap.add_argument(
+        "--n", type=int, default=1000, help="single-call targets per arm (default 1000)"
+    )
     ap.add_argument("--batch", type=int, default=100_000, help="batch size (default 100000)")
     ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args()
-    headers = ["arm", "fk us/call", "fk batch ns/pose", "ik us/call", "ik_batch ns/target", "ik_batch M/s", "ok %"]
+    headers = [
+        "arm",
+        "fk us/call",
+        "fk batch ns/pose",
+        "ik us/call",
+        "ik_batch ns/target",
+        "ik_batch M/s",
+        "ok %",
+    ]
     rows = [measure(name, args.n, args.batch, args.seed) for name in ARMS]
     widths = [max(len(h), *(len(r[i]) for r in rows)) for i, h in enumerate(headers)]
     print("  ".join(h.rjust(w) for h, w in zip(headers, widths, strict=True)))

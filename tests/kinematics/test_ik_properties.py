@@ -10,8 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from armkit import UnreachableError
-from armkit.kinematics import fk, ik, ik_batch, pitch_of
-from armkit.kinematics import _analytic
+from armkit.kinematics import _analytic, fk, ik, ik_batch, pitch_of
 from armkit.kinematics._family import family_of
 from armkit.model import load_model
 
@@ -70,7 +69,7 @@ def test_fast_path_agrees_with_reference(name: str) -> None:
     m = load_model(name)
     fam = family_of(m)
     assert fam is not None
-    q, P, pitch = reachable(name, 300, 4)
+    _, P, pitch = reachable(name, 300, 4)
     for i in range(len(P)):
         p = tuple(P[i].tolist())
         pt = None if pitch is None else float(pitch[i])

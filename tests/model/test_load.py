@@ -93,7 +93,7 @@ def test_not_toml_and_unknown_name(tmp_path: Path) -> None:
     p.write_text("name = [")
     with pytest.raises(ModelError, match="not valid TOML"):
         load_model(p)
-    with pytest.raises(ModelError, match="shipped arms are .*owi535"):
+    with pytest.raises(ModelError, match=r"shipped arms are .*owi535"):
         load_model("owi536")
     with pytest.raises(ModelError, match="no such model file"):
         load_model(tmp_path / "missing.toml")

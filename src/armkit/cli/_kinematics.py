@@ -31,7 +31,8 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         description="Inverse kinematics: a gripper point X Y Z in mm (x forward, y left, z up) and "
         "optionally its pitch in degrees (0 = level, -90 = pointing down) to joint angles in degrees.",
     )
-    p.add_argument("xyz", nargs=3, type=float, metavar=("X", "Y", "Z"), help="target [mm]")
+    for axis in "xyz":
+        p.add_argument(axis, type=float, metavar=axis.upper(), help=f"target {axis} [mm]")
     p.add_argument(
         "--pitch", type=float, metavar="DEG", help="gripper pitch [deg]; default: the arm's own"
     )
@@ -93,7 +94,7 @@ def run_fk(args: argparse.Namespace) -> int:
 
 def run_ik(args: argparse.Namespace) -> int:
     m = load_model(args.arm)
-    target = [float(v) for v in args.xyz]
+    target = [float(args.x), float(args.y), float(args.z)]
     if not all(math.isfinite(v) for v in target):
         raise ValueError(f"target must be finite numbers in mm, got {target}")
     pitch = None if args.pitch is None else math.radians(args.pitch)

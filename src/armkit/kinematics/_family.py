@@ -8,6 +8,7 @@ convention, offsets and flips, and for a user's own arm of that shape.
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -108,7 +109,7 @@ def _detect(model: ArmModel) -> PlanarFamily | None:
 
 def _on_line(axis: F64, point: F64, direction: F64, tip: F64) -> bool:
     """True if the joint axis is the line through ``tip`` along ``direction``."""
-    parallel = abs(axis @ direction) > 1 - _EPS
+    parallel = bool(abs(axis @ direction) > 1 - _EPS)
     return parallel and float(np.linalg.norm(np.cross(tip - point, direction))) < _EPS
 
 
@@ -129,7 +130,7 @@ def _geometry(
         return (float(p @ e_r), float(p @ e_z))
 
     centres = [plane(points[j]) for j in planar] + [plane(tool[:3, 3])]
-    links = tuple((b[0] - a[0], b[1] - a[1]) for a, b in zip(centres, centres[1:], strict=False))
+    links = tuple((b[0] - a[0], b[1] - a[1]) for a, b in itertools.pairwise(centres))
     approach = plane(tool[:3, 0])
     return PlanarFamily(
         base=0 if has_base else None,

@@ -129,8 +129,8 @@ def _point(position: ArrayLike) -> tuple[float, float, float]:
     if isinstance(position, np.ndarray) and position.shape != (3,):
         raise ValueError(f"position must have shape (3,), got {position.shape}")
     try:
-        x, y, z = position  # type: ignore[misc]
-        out = (float(x), float(y), float(z))
+        x, y, z = position  # type: ignore[misc, str-unpack]
+        out = (float(x), float(y), float(z))  # type: ignore[arg-type]
     except (TypeError, ValueError):
         raise ValueError(
             f"position must be three numbers (x, y, z) [m], got {position!r}"

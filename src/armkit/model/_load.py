@@ -90,7 +90,9 @@ class _Checker:
     def fail(self, where: str, message: str) -> ModelError:
         return ModelError(f"{self.path}: field '{where}': {message}")
 
-    def table(self, data: Any, where: str, schema: dict[str, Any], required: tuple[str, ...]) -> None:
+    def table(
+        self, data: Any, where: str, schema: dict[str, Any], required: tuple[str, ...]
+    ) -> None:
         if not isinstance(data, dict):
             raise self.fail(where, f"must be a table, got {type(data).__name__}")
         for key in data:
@@ -211,7 +213,9 @@ def _gripper(check: _Checker, data: Any) -> Gripper:
     check.table(data, "gripper", _GRIPPER, ())
     kind = data.get("kind", "parallel")
     if kind not in _GRIPPER_KINDS:
-        raise check.fail("gripper.kind", f"must be one of {', '.join(_GRIPPER_KINDS)}, got {kind!r}")
+        raise check.fail(
+            "gripper.kind", f"must be one of {', '.join(_GRIPPER_KINDS)}, got {kind!r}"
+        )
     lo, hi = check.numbers(data.get("width_mm", [0, 0]), "gripper.width_mm", 2)
     if lo > hi:
         raise check.fail("gripper.width_mm", f"min must be <= max, got [{lo}, {hi}]")

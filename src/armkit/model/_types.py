@@ -141,12 +141,17 @@ class ArmModel:
         """Index of the joint called ``name``; ValueError lists the valid names."""
         names = self.joint_names
         if name not in names:
-            raise ValueError(f"unknown joint {name!r} for {self.name}; joints are {', '.join(names)}")
+            raise ValueError(
+                f"unknown joint {name!r} for {self.name}; joints are {', '.join(names)}"
+            )
         return names.index(name)
 
     def within_limits(self, q: NDArray[np.float64], slack: float = 1e-9) -> NDArray[np.bool_]:
         """True where every joint of q [rad], shape (..., dof), is inside its limits."""
-        return np.all((q >= self.lower - slack) & (q <= self.upper + slack), axis=-1)
+        inside: NDArray[np.bool_] = np.all(
+            (q >= self.lower - slack) & (q <= self.upper + slack), axis=-1
+        )
+        return inside
 
     def with_tool_length(self, length: float) -> ArmModel:
         """The same arm with the tool's length along its approach axis set to ``length`` [m]."""

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -40,7 +41,7 @@ def plot_pose(
     return out
 
 
-def _pyplot():  # type: ignore[no-untyped-def]
+def _pyplot() -> Any:
     try:
         import matplotlib
 
@@ -51,7 +52,7 @@ def _pyplot():  # type: ignore[no-untyped-def]
     return plt
 
 
-def _draw(ax, frames: NDArray[np.float64]) -> None:  # type: ignore[no-untyped-def]
+def _draw(ax: Any, frames: NDArray[np.float64]) -> None:
     pts = frames[:, :3, 3] * 1000
     ax.plot(pts[:, 0], pts[:, 1], pts[:, 2], "-o", color="0.3", linewidth=4, markersize=5)
     reach = max(float(np.abs(pts).max()), 50.0)
