@@ -58,25 +58,19 @@ def ik(
         UnreachableError: no solution inside the limits (``reason`` says why).
         ValueError: malformed input, naming the argument.
     """
-    p = _point(position)
-    seed = (
-        _seed(model, q_seed)
-        if q_seed is not None
-        else model._cache.get("home") or _seed(model, None)
-    )
+    x, y, z = _point(position)
+    cache = model._cache
+    seed = cache.get("home") or _seed(model, None) if q_seed is None else _seed(model, q_seed)
     if pitch is not None:
-        pitch = (
-            float(pitch)
-            if isinstance(pitch, float) and math.isfinite(pitch)
-            else _finite(pitch, "pitch")
-        )
+        pitch = pitch if type(pitch) is float and math.isfinite(pitch) else _finite(pitch, "pitch")
     elif model.default_pitch is not None:
         pitch = model.default_pitch
     if orientation is None and (method == "auto" or method == "analytic"):
-        fast = model._cache["fast"] if "fast" in model._cache else fast_solver(model)
-        sols = fast(p[0], p[1], p[2], pitch, seed) if fast is not None else None
+        fast = cache["fast"] if "fast" in cache else fast_solver(model)
+        sols = fast(x, y, z, pitch, seed) if fast is not None else None
         if sols:
-            return IKResult.closed_form(sols, (model, p, pitch))
+            return IKResult.closed_form(sols, (model, (x, y, z), pitch))
+    p = (x, y, z)
     fam = family_of(model)
     use = _choose(model, fam, method, orientation)
     if use == "analytic":
@@ -126,8 +120,10 @@ def measure_error(
 
 def _point(position: ArrayLike) -> tuple[float, float, float]:
     """``position`` as three finite floats; ValueError naming it otherwise."""
-    if isinstance(position, np.ndarray) and position.shape != (3,):
-        raise ValueError(f"position must have shape (3,), got {position.shape}")
+    if isinstance(position, np.ndarray):
+        if position.shape != (3,):
+            raise ValueError(f"position must have shape (3,), got {position.shape}")
+        position = position.tolist()
     try:
         x, y, z = position  # type: ignore[misc, str-unpack]
         out = (float(x), float(y), float(z))  # type: ignore[arg-type]
