@@ -10,6 +10,8 @@ from ._errors import ModelError as ModelError
 from ._errors import NoSolutionError as NoSolutionError
 from ._errors import ScriptError as ScriptError
 from ._errors import UnreachableError as UnreachableError
+from .arm import Arm as Arm
+from .arm import Position as Position
 from .kinematics import IKBatchResult as IKBatchResult
 from .kinematics import IKResult as IKResult
 from .kinematics import fk as fk

@@ -1,0 +1,90 @@
+"""Drawing accuracy and time on the simulated servo arms.
+
+A 50 mm-radius circle and a 100 mm square, drawn by the simulated
+OpenManipulator-X and Lynx6 with naive stepping, early-waypoint streaming
+(seed 001) and time-parametrised streaming. For each: RMS and maximum distance
+of the true gripper path (1 kHz of simulated joint angles through FK) from the
+ideal path [mm], and the simulated drawing time [s].
+
+Run: .venv/bin/python benchmarks/paths.py
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+
+import numpy as np
+from numpy.typing import NDArray
+
+from armkit.kinematics import fk
+from armkit.model import ArmModel, load_model
+from armkit.motion import (
+    EarlyStreaming,
+    NaiveStepping,
+    Streamer,
+    TimedStreaming,
+    circle,
+    distance_to_polyline,
+    plan_path,
+    rectangle,
+)
+from armkit.sim.servo_arm import open_servo_sim
+
+F64 = NDArray[np.float64]
+SPACING = 0.002  # [m] between waypoints
+# arm -> (centre of the drawing [m], pitch [rad])
+SETUPS = {
+    "openmanipulator_x": ((0.17, 0.0, 0.05), -math.pi / 2),
+    "lynx6": ((0.17, 0.0, 0.03), -math.pi / 3),
+}
+SHAPES: dict[str, Callable[[tuple[float, float, float], float], F64]] = {
+    "circle r50": lambda c, sp: circle(c, 0.05, sp),
+    "square 100": lambda c, sp: rectangle(c, 0.1, 0.1, sp),
+}
+MODES: dict[str, Streamer] = {
+    "naive": NaiveStepping(),
+    "early 0.5": EarlyStreaming(fraction=0.5),
+    "timed 100Hz": TimedStreaming(rate=100.0, speed=0.06, accel=0.5),
+}
+
+
+def draw(model: ArmModel, points: F64, pitch: float, streamer: Streamer) -> tuple[F64, float]:
+    """Draw ``points`` on a fresh simulated arm; true tool points [m] while drawing, time [s]."""
+    arm = open_servo_sim(model)
+    path = plan_path(model, points, pitch, arm.read())
+    arm.move(path.q[0], wait=True)
+    arm.clock.sleep(0.2)  # pen down: let the servos settle on the first point
+    t0 = arm.clock.now()
+    streamer.run(arm, model, path, arm.clock)
+    t1 = arm.clock.now()
+    rec = arm.recording().between(t0, t1)
+    return fk(model, rec.q)[:, :3, 3], t1 - t0
+
+
+def main() -> None:
+    cols = ("rms mm", "max mm", "time s", "x naive")
+    head = f"{'arm':<18} {'shape':<11} {'mode':<12} " + " ".join(f"{c:>7}" for c in cols)
+    print(head)
+    print("-" * len(head))
+    started = time.perf_counter()
+    for arm_name, (centre, pitch) in SETUPS.items():
+        model = load_model(arm_name)
+        for shape, make in SHAPES.items():
+            ideal = make(centre, 0.0002)
+            naive_time = math.nan
+            for mode, streamer in MODES.items():
+                true, took = draw(model, make(centre, SPACING), pitch, streamer)
+                err = distance_to_polyline(true, ideal) * 1000
+                naive_time = took if mode == "naive" else naive_time
+                rms = float(np.sqrt(np.mean(err**2)))
+                print(
+                    f"{arm_name:<18} {shape:<11} {mode:<12} {rms:7.3f} {err.max():7.3f} "
+                    f"{took:7.2f} {naive_time / took:7.2f}"
+                )
+    print(f"\n(simulated; {time.perf_counter() - started:.1f} s of real time for the whole table)")
+
+
+if __name__ == "__main__":
+    main()

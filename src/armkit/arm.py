@@ -1,0 +1,238 @@
+"""``Arm``: a model and a driver in one object, in millimetres and degrees.
+
+The conversion to SI happens here, once; the work is done by the kinematics and
+motion functions. Every move is checked (reach, joint limits, timing) before a
+command goes to the driver, so a refused move moves nothing.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from types import TracebackType
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ._errors import DeviceError, JointLimitError
+from .drivers._driver import Driver
+from .drivers._registry import open_driver
+from .kinematics import fk, ik, pitch_of
+from .model import ArmModel, load_model
+from .motion import (
+    JointPath,
+    NaiveStepping,
+    Streamer,
+    TimedStreaming,
+    approach,
+    clock_of,
+    follow,
+    plan_path,
+    retreat,
+    trapezoid,
+)
+
+F64 = NDArray[np.float64]
+REACHED = math.radians(0.2)  # a move with a timeout is done when every joint is this close
+
+
+class Position(NamedTuple):
+    """Where the gripper is: x, y, z [mm] in the world frame, pitch [deg]."""
+
+    x: float
+    y: float
+    z: float
+    pitch: float
+
+
+@dataclass(frozen=True)
+class _Timing:
+    speed: float | None
+    duration: float | None
+    wait: bool
+    timeout: float | None
+
+
+class Arm:
+    """Drive an arm by where the gripper should go (mm, degrees).
+
+    Args:
+        model: a shipped arm name, a model file path, or an ``ArmModel``.
+        driver: a driver name (``"sim"``, ``"ssc32"``, ...) or an open ``Driver``.
+        port: the driver's port (see ``armkit.drivers.open_driver``).
+    """
+
+    def __init__(
+        self,
+        model: str | Path | ArmModel = "openmanipulator_x",
+        driver: str | Driver = "sim",
+        port: str | None = None,
+    ) -> None:
+        self.model = model if isinstance(model, ArmModel) else load_model(model)
+        self.driver = open_driver(self.model, driver, port) if isinstance(driver, str) else driver
+        self.clock = clock_of(self.driver)
+        self._kin = self.model
+
+    def move_to(
+        self,
+        x: float,
+        y: float,
+        z: float,
+        pitch: float | None = None,
+        *,
+        speed: float | None = None,
+        duration: float | None = None,
+        wait: bool = True,
+        timeout: float | None = None,
+    ) -> None:
+        """Move the gripper point to (x, y, z) [mm], approach ``pitch`` [deg] above the
+        horizontal (None: the model's default, else any), by a joint move.
+
+        Args:
+            speed: fraction of every joint's max velocity, (0, 1]; None = 1.
+            duration: time for the move [s]; None = as fast as allowed.
+            wait: block until the arm is there.  timeout: give up after [s] (DeviceError).
+        Raises:
+            UnreachableError: the point (and pitch) is out of reach or the joint limits.
+        """
+        pitch_rad = None if pitch is None else math.radians(pitch)
+        q = ik(self._kin, np.array([x, y, z]) / 1000.0, pitch_rad, self.driver.read()).q
+        self._move(q, _Timing(speed, duration, wait, timeout))
+
+    def move_joints(
+        self,
+        angles: Mapping[str, float] | Sequence[float],
+        *,
+        speed: float | None = None,
+        duration: float | None = None,
+        wait: bool = True,
+        timeout: float | None = None,
+    ) -> None:
+        """Move joints to ``angles`` [deg]: one per joint in order, or a dict by name
+        (joints not named stay where they are). Options as ``move_to``."""
+        self._move(self._joint_target(angles), _Timing(speed, duration, wait, timeout))
+
+    def turn_to(self, joint: str, deg: float, *, speed: float | None = None) -> None:
+        """Turn one joint to ``deg`` [deg]; the others stay."""
+        self.move_joints({joint: deg}, speed=speed)
+
+    def turn_by(self, joint: str, deg: float, *, speed: float | None = None) -> None:
+        """Turn one joint by ``deg`` [deg] from where it is now."""
+        self.model.joint_index(joint)
+        self.move_joints({joint: self.angles()[joint] + deg}, speed=speed)
+
+    def grip(self, width_mm: float) -> None:
+        """Open the gripper to ``width_mm`` [mm] (the grip point moves with it on
+        scissor grippers)."""
+        kin = self.model.with_grip_width(width_mm / 1000.0)
+        self.driver.grip(width_mm / 1000.0)
+        self._kin = kin
+
+    def home(self, *, speed: float | None = None) -> None:
+        """Move every joint to the model's home angles."""
+        self._move(self.model.home, _Timing(speed, None, True, None))
+
+    def position(self) -> Position:
+        """Where the gripper point is now [mm] and its pitch [deg]."""
+        T = fk(self._kin, self.driver.read())
+        x, y, z = (float(v) * 1000.0 for v in T[:3, 3])
+        return Position(x, y, z, math.degrees(float(pitch_of(T))))
+
+    def angles(self) -> dict[str, float]:
+        """Joint angles now [deg], by joint name."""
+        q = np.degrees(self.driver.read())
+        return {name: float(a) for name, a in zip(self.model.joint_names, q, strict=True)}
+
+    def follow(
+        self, points_mm: ArrayLike, pitch: float | None = None, *, streamer: Streamer | None = None
+    ) -> JointPath:
+        """Draw through ``points_mm`` [mm], shape (N, 3), at ``pitch`` [deg]: the whole
+        path is planned and checked first (PathError names the first bad point),
+        then the arm moves to its start and ``streamer`` (default timed) runs it."""
+        pts = np.asarray(points_mm, dtype=np.float64) / 1000.0
+        pitch_rad = None if pitch is None else math.radians(pitch)
+        path = plan_path(self._kin, pts, pitch_rad, self.driver.read())
+        follow(self.driver, self._kin, path, streamer or TimedStreaming(), self.clock)
+        return path
+
+    def approach(self, x: float, y: float, z: float, pitch: float | None = None) -> None:
+        """Come down onto (x, y, z) [mm] from above (001): a joint move to 30 mm
+        above it, then three waypoints straight down. The whole way is checked first."""
+        self._step_through(approach(np.array([x, y, z]) / 1000.0), pitch)
+
+    def retreat(self, pitch: float | None = None) -> None:
+        """Leave the current point the way ``approach`` came: three waypoints up to
+        30 mm above it, at ``pitch`` [deg] (None: keep the current pitch)."""
+        x, y, z, now = self.position()
+        pitch = now if pitch is None else pitch
+        self._step_through(retreat(np.array([x, y, z]) / 1000.0), pitch)
+
+    def stop(self) -> None:
+        """Stop every motor now."""
+        self.driver.stop()
+
+    def close(self) -> None:
+        """Stop and release the driver."""
+        try:
+            self.driver.stop()
+        finally:
+            self.driver.close()
+
+    def __enter__(self) -> Arm:
+        return self
+
+    def __exit__(
+        self, kind: type[BaseException] | None, exc: BaseException | None, tb: TracebackType | None
+    ) -> None:
+        self.close()
+
+    def _joint_target(self, angles: Mapping[str, float] | Sequence[float]) -> F64:
+        if isinstance(angles, Mapping):
+            q = np.degrees(self.driver.read())
+            for name, deg in angles.items():
+                q[self.model.joint_index(name)] = deg
+        else:
+            q = np.asarray(angles, dtype=np.float64)
+            if q.shape != (self.model.dof,):
+                names = ", ".join(self.model.joint_names)
+                raise ValueError(f"give {self.model.dof} angles ({names}), got {len(q)}")
+        if not np.all(np.isfinite(q)):
+            raise ValueError(f"joint angles must be finite, got {list(q)}")
+        return np.radians(q)
+
+    def _move(self, q: F64, timing: _Timing) -> None:
+        """Check limits and timing, then send; with a timeout, poll until there."""
+        _check_limits(self.model, q)
+        speed = 1.0 if timing.speed is None else timing.speed
+        trapezoid(self.model, self.driver.read(), q, speed, timing.duration)  # raises if too fast
+        wait = timing.wait and timing.timeout is None
+        self.driver.move(q, duration=timing.duration, speed=timing.speed, wait=wait)
+        if timing.wait and timing.timeout is not None:
+            self._wait_until(q, timing.timeout)
+
+    def _step_through(self, points_m: F64, pitch: float | None) -> None:
+        """Plan ``points_m`` [m] (1 mm tolerance between waypoints), then step through them."""
+        pitch_rad = None if pitch is None else math.radians(pitch)
+        path = plan_path(self._kin, points_m, pitch_rad, self.driver.read(), tolerance=1e-3)
+        follow(self.driver, self._kin, path, NaiveStepping(), self.clock)
+
+    def _wait_until(self, q: F64, timeout: float) -> None:
+        deadline = self.clock.now() + timeout
+        while np.max(np.abs(self.driver.read() - q)) > REACHED:
+            if self.clock.now() >= deadline:
+                self.driver.stop()
+                raise DeviceError(f"the arm did not reach its target within {timeout} s; stopped")
+            self.clock.sleep(0.005)
+
+
+def _check_limits(model: ArmModel, q: F64) -> None:
+    """JointLimitError naming the first joint of ``q`` [rad] outside its limits."""
+    for joint, angle in zip(model.joints, q, strict=True):
+        if not joint.lower - 1e-9 <= angle <= joint.upper + 1e-9:
+            raise JointLimitError(
+                f"{joint.name} {math.degrees(angle):.2f} deg is outside its limits "
+                f"{math.degrees(joint.lower):.2f}..{math.degrees(joint.upper):.2f} deg"
+            )

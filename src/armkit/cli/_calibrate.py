@@ -1,0 +1,61 @@
+"""``armkit calibrate``: measure this unit and save it (OWI timings, Lynx6 pulse tables)."""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+from typing import Any
+
+from .._errors import ArmkitError
+from ..drivers import open_driver
+from ..model import load_model
+
+# driver name -> the module whose run_calibration(model, driver, ask, say) measures it
+CALIBRATORS = {
+    "owi535": "armkit.drivers.timed",
+    "ssc32": "armkit.drivers.servo",
+    "maestro": "armkit.drivers.servo",
+}
+
+
+def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
+    """Add ``calibrate``."""
+    p = sub.add_parser(
+        "calibrate",
+        help="measure this unit and save it (OWI: joint timings; Lynx6: servo pulse tables)",
+        description="Guide a person through measuring this arm unit, then write its calibration "
+        "file (atomically) to the config directory ($ARMKIT_CONFIG_DIR, else ~/.config/armkit). "
+        "OWI-535 (--driver owi535, or sim): each joint is timed limit to limit, up and down. "
+        "Lynx6 (--driver ssc32 or maestro): each servo visits its table points (ends and every "
+        "30 deg) and you type the angle you measure.",
+    )
+    p.set_defaults(func=run_calibrate)
+
+
+def _module_for(model_name: str, driver: str) -> str:
+    if driver == "sim" and model_name == "owi535":
+        return CALIBRATORS["owi535"]
+    if driver not in CALIBRATORS:
+        raise ValueError(
+            f"calibrate works with --driver {', '.join(CALIBRATORS)} (or sim on the owi535), got {driver!r}"
+        )
+    return CALIBRATORS[driver]
+
+
+def _ask(prompt: str) -> str:
+    try:
+        return input(prompt + " ")
+    except EOFError:
+        raise ArmkitError("calibration needs a person at the keyboard, but input ended") from None
+
+
+def run_calibrate(args: argparse.Namespace) -> int:
+    model = load_model(args.arm)
+    module = importlib.import_module(_module_for(model.name, args.driver))
+    driver = open_driver(model, args.driver, args.port)
+    try:
+        path = module.run_calibration(model, driver, _ask, print)
+    finally:
+        driver.close()
+    print(f"wrote {path}")
+    return 0

@@ -1,0 +1,117 @@
+"""Cartesian path -> joint path: IK at every point on one branch, the whole path
+checked before anything moves.
+
+Each point's solution is the one nearest the previous point's (the first point's:
+nearest the arm's current angles), so the elbow never flips mid-path. Between
+two samples the arm moves in joint space; the check evaluates FK halfway
+between them and refuses the path if the arm would leave the straight piece by
+more than ``tolerance`` (a branch flip, a singularity, too coarse a spacing).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .._errors import UnreachableError
+from ..kinematics import fk, ik
+from ..model import ArmModel
+
+F64 = NDArray[np.float64]
+DEFAULT_TOLERANCE = 0.2e-3  # [m]
+
+
+@dataclass(frozen=True)
+class JointPath:
+    """A Cartesian path and the joint angles that follow it.
+
+    Attributes:
+        points: tool points [m], shape (N, 3).
+        q: joint angles [rad], shape (N, dof), one branch throughout.
+    """
+
+    points: F64
+    q: F64
+
+
+class PathError(UnreachableError):
+    """A path cannot be followed; ``index`` is the first point that fails."""
+
+    def __init__(self, message: str, *, reason: str, index: int) -> None:
+        super().__init__(message, reason=reason)
+        self.index = index
+
+
+def plan_path(
+    model: ArmModel,
+    points: ArrayLike,
+    pitch: float | None,
+    q_start: ArrayLike,
+    tolerance: float = DEFAULT_TOLERANCE,
+) -> JointPath:
+    """Joint angles for every point of ``points`` [m], shape (N, 3), at ``pitch``
+    [rad] (None: the model's default, else free), starting on the branch nearest
+    ``q_start`` [rad], shape (dof,).
+
+    Raises:
+        PathError: naming the first point that is unreachable or where the arm
+            would leave the path by more than ``tolerance`` [m], and why.
+    """
+    p = np.asarray(points, dtype=np.float64)
+    if p.ndim != 2 or p.shape[1] != 3 or p.shape[0] < 1 or not np.all(np.isfinite(p)):
+        raise ValueError(f"points must be finite, shape (N, 3), got {p.shape}")
+    q, failure = _solve_all(model, p, pitch, np.asarray(q_start, dtype=np.float64))
+    _check_between(model, p[: q.shape[0]], q, tolerance)
+    if failure is not None:
+        raise failure
+    return JointPath(p, q)
+
+
+def _solve_all(
+    model: ArmModel, p: F64, pitch: float | None, seed: F64
+) -> tuple[F64, PathError | None]:
+    """Solutions up to the first unreachable point, shape (k, dof), and its error."""
+    out = np.empty((p.shape[0], model.dof))
+    for i, point in enumerate(p):
+        try:
+            seed = ik(model, point, pitch, seed).q
+        except UnreachableError as exc:
+            message = f"point {i} of {p.shape[0]} at {_mm(point)} is unreachable: {exc}"
+            return out[:i], PathError(message, reason=exc.reason or "unreachable", index=i)
+        out[i] = seed
+    return out, None
+
+
+def _check_between(model: ArmModel, p: F64, q: F64, tolerance: float) -> None:
+    """Refuse the path where FK halfway between samples strays from the segment."""
+    if p.shape[0] < 2:
+        return
+    mid = fk(model, (q[:-1] + q[1:]) / 2.0)[:, :3, 3]
+    off = _distance_to_segments(mid, p[:-1], p[1:])
+    bad = np.flatnonzero(off > tolerance)
+    if bad.size:
+        i = int(bad[0])
+        step = math.degrees(float(np.max(np.abs(q[i + 1] - q[i]))))
+        raise PathError(
+            f"between point {i} at {_mm(p[i])} and point {i + 1} the arm would leave the path "
+            f"by {off[i] * 1000:.2f} mm (a joint turns {step:.1f} deg: elbow flip or "
+            f"singularity); use a smaller spacing or another path",
+            reason="discontinuous",
+            index=i,
+        )
+
+
+def _distance_to_segments(x: F64, a: F64, b: F64) -> F64:
+    """Distance [m] from each point x[i] to the segment a[i]-b[i]; shapes (N, 3) -> (N,)."""
+    ab = b - a
+    length2 = np.sum(ab * ab, axis=1)
+    s = np.sum((x - a) * ab, axis=1) / np.where(length2 > 0, length2, 1.0)
+    closest = a + np.clip(s, 0.0, 1.0)[:, None] * ab
+    return np.asarray(np.linalg.norm(x - closest, axis=1))
+
+
+def _mm(point: F64) -> str:
+    return "(" + ", ".join(f"{v * 1000:.1f}" for v in point) + ") mm"

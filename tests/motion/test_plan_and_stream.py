@@ -1,0 +1,106 @@
+"""Planning (one branch, whole path checked first) and the three ways to stream."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from armkit.kinematics import fk
+from armkit.model import ArmModel, load_model
+from armkit.motion import (
+    EarlyStreaming,
+    NaiveStepping,
+    PathError,
+    Streamer,
+    TimedStreaming,
+    circle,
+    distance_to_polyline,
+    line,
+    plan_path,
+    rectangle,
+    time_path,
+)
+from armkit.sim.servo_arm import open_servo_sim
+
+DOWN = -math.pi / 2
+
+
+@settings(max_examples=25, derandomize=True, deadline=None)
+@given(st.floats(0.14, 0.2), st.floats(-0.05, 0.05), st.floats(0.03, 0.08), st.floats(0.005, 0.03))
+def test_planned_circle_is_on_the_path_and_within_limits(x, y, z, r) -> None:
+    omx = load_model("openmanipulator_x")
+    pts = circle([x, y, z], r, 0.002)
+    path = plan_path(omx, pts, DOWN, omx.home)
+    T = fk(omx, path.q)
+    np.testing.assert_allclose(T[:, :3, 3], pts, atol=1e-6)
+    assert np.all(omx.within_limits(path.q))
+    # between samples (joint-space interpolation) the tool stays near the circle
+    fine = np.linspace(0, 1, 5)[1:-1, None, None]
+    between = (path.q[:-1][None] * (1 - fine) + path.q[1:][None] * fine).reshape(-1, omx.dof)
+    assert np.max(distance_to_polyline(fk(omx, between)[:, :3, 3], pts)) < 0.2e-3
+
+
+def test_branch_of_the_start_is_kept() -> None:
+    planar = load_model("planar2")
+    pts = line([0.5, 0.0, 0.5], [0.7, 0.0, 0.2], 0.005)
+    for elbow_sign in (1.0, -1.0):
+        seed = np.array([0.0, elbow_sign * 1.5])
+        path = plan_path(planar, pts, None, seed)
+        assert np.all(np.sign(path.q[:, 1]) == elbow_sign)
+        np.testing.assert_allclose(fk(planar, path.q)[:, :3, 3], pts, atol=1e-9)
+
+
+def test_unreachable_point_is_named(omx: ArmModel) -> None:
+    pts = line([0.15, 0.0, 0.05], [0.45, 0.0, 0.05], 0.002)
+    with pytest.raises(PathError) as info:
+        plan_path(omx, pts, DOWN, omx.home)
+    i = info.value.index
+    assert 0 < i < len(pts)
+    assert f"point {i} of {len(pts)}" in str(info.value)
+    assert info.value.reason == "too_far"
+    plan_path(omx, pts[:i], DOWN, omx.home)  # everything before it is fine
+
+
+def test_coarse_spacing_that_leaves_the_path_is_refused(omx: ArmModel) -> None:
+    pts = np.array([[0.12, -0.1, 0.05], [0.12, 0.1, 0.05]])
+    with pytest.raises(PathError, match="leave the path") as info:
+        plan_path(omx, pts, DOWN, omx.home)
+    assert info.value.index == 0 and info.value.reason == "discontinuous"
+
+
+def test_timed_path_keeps_joint_limits_and_stops_at_corners(omx: ArmModel) -> None:
+    pts = rectangle([0.17, 0.0, 0.05], 0.08, 0.08, 0.002)
+    timed = time_path(omx, plan_path(omx, pts, DOWN, omx.home), speed=0.5, accel=5.0)
+    vel = np.diff(timed.q, axis=0) / np.diff(timed.t)[:, None]
+    vmax = np.array([j.max_velocity for j in omx.joints])
+    assert np.all(np.abs(vel) <= vmax * (1 + 1e-9))
+    assert np.all(np.diff(timed.t) > 0)
+
+
+STREAMERS: dict[str, tuple[Streamer, float]] = {
+    "naive": (NaiveStepping(), 0.3e-3),
+    "early": (EarlyStreaming(fraction=0.5), 0.3e-3),
+    "timed": (TimedStreaming(rate=100.0, speed=0.06), 0.3e-3),
+}
+
+
+@pytest.mark.parametrize("mode", sorted(STREAMERS))
+@pytest.mark.parametrize("arm_name", ["openmanipulator_x", "lynx6"])
+def test_streamed_drawing_stays_near_the_path(mode: str, arm_name: str) -> None:
+    model = load_model(arm_name)
+    streamer, tolerance = STREAMERS[mode]
+    pitch = DOWN if arm_name == "openmanipulator_x" else -math.pi / 3
+    pts = circle([0.17, 0.0, 0.04], 0.02, 0.002)
+    arm = open_servo_sim(model)
+    path = plan_path(model, pts, pitch, arm.read())
+    arm.move(path.q[0])
+    t0 = arm.clock.now()
+    streamer.run(arm, model, path, arm.clock)
+    true = fk(model, arm.recording().between(t0, arm.clock.now()).q)[:, :3, 3]
+    assert np.max(distance_to_polyline(true, pts)) < tolerance
+    np.testing.assert_allclose(true[-1], pts[-1], atol=0.5e-3)  # servos settle to 0.05 deg
+    assert arm.clock.now() - t0 > 0.5  # it really took (simulated) time to draw 126 mm
