@@ -30,8 +30,10 @@ lint: $(DEVSTAMP)
 test: lint
 	$(BIN)/python -m pytest
 
-bench: $(STAMP)
+bench: $(DEVSTAMP)
 	$(BIN)/python benchmarks/kinematics.py
+	$(BIN)/python benchmarks/paths.py
+	$(BIN)/python benchmarks/bus.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info src/*.egg-info .pytest_cache .mypy_cache .ruff_cache

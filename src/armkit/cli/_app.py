@@ -21,6 +21,7 @@ COMMAND_MODULES = (
     "armkit.cli._owi",
     "armkit.cli._calibrate",
     "armkit.cli._compare",
+    "armkit.cli._dynamixel",
 )
 
 EPILOG = """\

@@ -1,0 +1,79 @@
+"""``armkit dxl-scan``: which Dynamixel servos answer on a port, and how they are."""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+from typing import Any
+
+from ..devices import _xm430 as xm
+from ..devices.dynamixel import DynamixelBus
+from ._table import table
+
+MODEL_NAMES = {xm.MODEL_NUMBER: "XM430-W350"}
+MODE_NAMES = {0: "current", 1: "velocity", 3: "position", 4: "extended", 5: "current-position"}
+
+
+def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
+    """Add ``dxl-scan``."""
+    p = sub.add_parser(
+        "dxl-scan",
+        help="list the Dynamixel servos answering on --port",
+        description="Ping IDs on --port (a serial device, or 'emu' for the emulator) and show"
+        " each servo's model, mode, torque, hardware error and position (ticks and degrees).",
+    )
+    p.add_argument("--baud", type=int, default=1_000_000, help="bits/s (default 1000000)")
+    p.add_argument("--ids", default="0-252", metavar="A-B", help="ID range to ping (default 0-252)")
+    p.set_defaults(func=run_scan)
+
+
+def parse_ids(text: str) -> range:
+    """``"11-15"`` -> range(11, 16); ValueError for anything else outside 0..252."""
+    low, _, high = text.partition("-")
+    try:
+        first, last = int(low), int(high or low)
+    except ValueError:
+        raise ValueError(f"--ids must look like 11-15 or 7, got {text!r}") from None
+    if not 0 <= first <= last <= 252:
+        raise ValueError(f"--ids must be inside 0-252, got {text!r}")
+    return range(first, last + 1)
+
+
+def run_scan(args: argparse.Namespace) -> int:
+    ids = parse_ids(args.ids)
+    if not args.port:
+        raise ValueError("dxl-scan needs --port: a serial device (/dev/ttyUSB0) or 'emu'")
+    with contextlib.ExitStack() as stack:
+        port = args.port
+        if port == "emu":
+            from ..sim.dynamixel_emulator import DynamixelEmulator
+
+            port = stack.enter_context(DynamixelEmulator()).port
+        bus = stack.enter_context(DynamixelBus(port, args.baud, retries=0))
+        rows = [_row(bus, sid, model) for sid, model in bus.scan(ids).items()]
+    if not rows:
+        print(
+            f"no servo answered on {args.port} at {args.baud} baud (IDs {args.ids});"
+            " check power, cable and baud (a new XM430 is ID 1 at 57600)"
+        )
+        return 1
+    print(table(["id", "model", "name", "mode", "torque", "hw error", "tick", "deg"], rows))
+    return 0
+
+
+def _row(bus: DynamixelBus, sid: int, model: int) -> list[object]:
+    name = MODEL_NAMES.get(model, "?")
+    if model != xm.MODEL_NUMBER:
+        return [sid, model, name, "", "", "", "", ""]
+    errors = bus.hardware_error(sid)
+    tick = bus.read(sid, "Present Position", alert_ok=True)
+    return [
+        sid,
+        model,
+        name,
+        MODE_NAMES.get(bus.read(sid, "Operating Mode", alert_ok=True), "?"),
+        "on" if bus.read(sid, "Torque Enable", alert_ok=True) else "off",
+        xm.describe_hardware_error(errors) if errors else "-",
+        tick,
+        round((tick - 2048) * 360.0 / xm.TICKS_PER_TURN, 2),
+    ]

@@ -1,0 +1,150 @@
+"""The XM430-W350 control table (ROBOTIS e-manual, Protocol 2.0 firmware) as data.
+
+Each register is (address, size [bytes], signed, access, factory default).
+Addresses below 64 are EEPROM: writable only while Torque Enable is 0.
+Units: position [tick] (4096 per turn), velocity [0.229 rev/min], acceleration
+[214.577 rev/min^2], current [2.69 mA], voltage [0.1 V], temperature [deg C];
+in time-based profile mode (Drive Mode bit 2) both profile registers are [ms].
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+MODEL_NUMBER = 1020  # XM430-W350
+TICKS_PER_TURN = 4096
+VELOCITY_UNIT_RPM = 0.229
+ACCELERATION_UNIT_RPM2 = 214.577
+CURRENT_UNIT_MA = 2.69
+
+# Operating Mode values
+MODE_CURRENT = 0
+MODE_VELOCITY = 1
+MODE_POSITION = 3
+MODE_EXTENDED_POSITION = 4
+MODE_CURRENT_POSITION = 5
+MODE_PWM = 16
+
+DRIVE_MODE_TIME_BASED = 0x04  # Drive Mode bit 2: profiles in ms instead of velocity units
+
+# Hardware Error Status bits
+HARDWARE_ERRORS: dict[int, str] = {
+    0x01: "input voltage error",
+    0x04: "overheating",
+    0x08: "motor encoder error",
+    0x10: "electrical shock",
+    0x20: "overload",
+}
+
+
+@dataclass(frozen=True, slots=True)
+class Register:
+    """One control-table entry.
+
+    Attributes:
+        name: the e-manual's name (``"Goal Position"``).
+        address: first byte. size: 1, 2 or 4 bytes, little-endian.
+        signed: two's complement. writable: False for read-only registers.
+        default: factory value.
+    """
+
+    name: str
+    address: int
+    size: int
+    signed: bool = False
+    writable: bool = True
+    default: int = 0
+
+    @property
+    def eeprom(self) -> bool:
+        """True for EEPROM registers (address < 64): locked while torque is on."""
+        return self.address < 64
+
+    def encode(self, value: int) -> bytes:
+        """``value`` as wire bytes; ValueError when it does not fit the register."""
+        try:
+            return int(value).to_bytes(self.size, "little", signed=self.signed)
+        except OverflowError:
+            kind = "signed" if self.signed else "unsigned"
+            raise ValueError(
+                f"{self.name}: {value} does not fit a {kind} {self.size}-byte register"
+            ) from None
+
+    def decode(self, raw: bytes | bytearray) -> int:
+        """Wire bytes (exactly ``size``) -> value, signed if the register is."""
+        return int.from_bytes(raw, "little", signed=self.signed)
+
+    def from_unsigned(self, value: int) -> int:
+        """Fix an SDK value that came back unsigned (sync reads are) to this register's sign."""
+        return self.decode(int(value).to_bytes(self.size, "little", signed=False))
+
+
+_REGISTERS: tuple[Register, ...] = (
+    Register("Model Number", 0, 2, writable=False, default=MODEL_NUMBER),
+    Register("Model Information", 2, 4, writable=False),
+    Register("Firmware Version", 6, 1, writable=False, default=46),
+    Register("ID", 7, 1, default=1),
+    Register("Baud Rate", 8, 1, default=1),
+    Register("Return Delay Time", 9, 1, default=250),
+    Register("Drive Mode", 10, 1),
+    Register("Operating Mode", 11, 1, default=MODE_POSITION),
+    Register("Secondary ID", 12, 1, default=255),
+    Register("Protocol Type", 13, 1, default=2),
+    Register("Homing Offset", 20, 4, signed=True),
+    Register("Moving Threshold", 24, 4, default=10),
+    Register("Temperature Limit", 31, 1, default=80),
+    Register("Max Voltage Limit", 32, 2, default=160),
+    Register("Min Voltage Limit", 34, 2, default=95),
+    Register("PWM Limit", 36, 2, default=885),
+    Register("Current Limit", 38, 2, default=1193),
+    Register("Velocity Limit", 44, 4, default=200),
+    Register("Max Position Limit", 48, 4, default=4095),
+    Register("Min Position Limit", 52, 4, default=0),
+    Register("Shutdown", 63, 1, default=52),
+    Register("Torque Enable", 64, 1),
+    Register("LED", 65, 1),
+    Register("Status Return Level", 68, 1, default=2),
+    Register("Registered Instruction", 69, 1, writable=False),
+    Register("Hardware Error Status", 70, 1, writable=False),
+    Register("Velocity I Gain", 76, 2, default=1920),
+    Register("Velocity P Gain", 78, 2, default=100),
+    Register("Position D Gain", 80, 2),
+    Register("Position I Gain", 82, 2),
+    Register("Position P Gain", 84, 2, default=800),
+    Register("Bus Watchdog", 98, 1),
+    Register("Goal PWM", 100, 2, signed=True, default=885),
+    Register("Goal Current", 102, 2, signed=True, default=1193),
+    Register("Goal Velocity", 104, 4, signed=True),
+    Register("Profile Acceleration", 108, 4),
+    Register("Profile Velocity", 112, 4),
+    Register("Goal Position", 116, 4, signed=True, default=2048),
+    Register("Realtime Tick", 120, 2, writable=False),
+    Register("Moving", 122, 1, writable=False),
+    Register("Moving Status", 123, 1, writable=False),
+    Register("Present PWM", 124, 2, signed=True, writable=False),
+    Register("Present Current", 126, 2, signed=True, writable=False),
+    Register("Present Velocity", 128, 4, signed=True, writable=False),
+    Register("Present Position", 132, 4, signed=True, writable=False, default=2048),
+    Register("Velocity Trajectory", 136, 4, signed=True, writable=False),
+    Register("Position Trajectory", 140, 4, signed=True, writable=False),
+    Register("Present Input Voltage", 144, 2, writable=False, default=120),
+    Register("Present Temperature", 146, 1, writable=False, default=30),
+)
+
+XM430_W350: dict[str, Register] = {reg.name: reg for reg in _REGISTERS}
+
+CONTROL_TABLE_SIZE = 147  # bytes: last register ends at address 146
+
+
+def register(name: str) -> Register:
+    """The register called ``name``; KeyError lists the known names."""
+    try:
+        return XM430_W350[name]
+    except KeyError:
+        raise KeyError(f"no XM430-W350 register {name!r}; known: {', '.join(XM430_W350)}") from None
+
+
+def describe_hardware_error(bits: int) -> str:
+    """Hardware Error Status bits -> ``"overload, overheating"``."""
+    names = [text for bit, text in HARDWARE_ERRORS.items() if bits & bit]
+    return ", ".join(names) if names else f"unknown hardware error 0x{bits:02x}"
