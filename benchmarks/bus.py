@@ -194,21 +194,46 @@ def omx_rows(cycles: int, repeats: int) -> list[tuple[str, float]]:
 
 
 # === SSC-32 section ========================================================
-# Owned by the SSC-32 engineer: add an SSC-32 group move over
-# armkit.sim.ssc32_emulator here, returning (row name, us per cycle) rows and the
-# wire time of its bytes at the port's baud rate; main() prints it as a second table.
+SSC32_PULSES = {0: 1500, 1: 1620, 2: 1410, 3: 1730, 4: 1500, 5: 1200}
+SSC32_BAUD = 115_200  # the SSC-32's fastest rate
+
+
 def ssc32_rows(cycles: int, repeats: int) -> tuple[list[tuple[str, float]], float] | None:
-    """SSC-32 group-move rows and their wire time [us], or None while not built."""
-    return None
+    """SSC-32 group-move rows (6-servo group move + QP read-back) and their wire time [us]."""
+    from armkit.devices.ssc32 import SSC32, group_move_bytes, parse_pulses, query_pulse_bytes
+    from armkit.sim.ssc32_emulator import SSC32Emulator
+
+    channels = list(SSC32_PULSES)
+    move = group_move_bytes(SSC32_PULSES, 1000)
+    query = query_pulse_bytes(channels)
+    reply = bytes(p // 10 for p in SSC32_PULSES.values())
+    wire = wire_us([move, query, reply], SSC32_BAUD)
+
+    def pure() -> object:
+        group_move_bytes(SSC32_PULSES, 1000)
+        query_pulse_bytes(channels)
+        return parse_pulses(reply, channels)
+
+    with SSC32Emulator(SSC32_BAUD) as emu, SSC32(emu.port, SSC32_BAUD) as board:
+
+        def full() -> object:
+            board.group_move(SSC32_PULSES, 1000)
+            return board.query_pulses(channels)
+
+        fast = per_cycle_us(cycles, repeats, **{"armkit bytes + parse (pure)": pure})
+        slow = per_cycle_us(max(1, cycles // 5), repeats, **{"armkit SSC32, pty + emulator": full})
+    return list(fast.items()) + list(slow.items()), wire
 
 
 # ===========================================================================
 
 
-def print_table(title: str, wire: float, rows: list[tuple[str, float]]) -> None:
+def print_table(
+    title: str, wire: float, rows: list[tuple[str, float]], baud: str = "1 Mbps"
+) -> None:
     print(f"\n{title}\n{'':-<72}")
     print(f"{'':38} {'us/cycle':>10} {'% of wire':>10}")
-    print(f"{'wire time at 1 Mbps':38} {wire:10.1f} {100.0:9.1f}%")
+    print(f"{'wire time at ' + baud:38} {wire:10.1f} {100.0:9.1f}%")
     for name, us in rows:
         print(f"{name:38} {us:10.1f} {100 * us / wire:9.1f}%")
 
@@ -234,7 +259,9 @@ def main() -> None:
     )
     ssc32 = ssc32_rows(args.cycles, args.repeats)
     if ssc32 is not None:
-        print_table("SSC-32 group move", ssc32[1], ssc32[0])
+        print_table(
+            "SSC-32 group move (6 servos) + QP read-back", ssc32[1], ssc32[0], "115200 baud"
+        )
 
 
 if __name__ == "__main__":

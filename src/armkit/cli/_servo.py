@@ -1,0 +1,120 @@
+"""Servo-controller commands: a raw pulse for testing, and the active pulse tables."""
+
+from __future__ import annotations
+
+import argparse
+from contextlib import ExitStack
+from typing import Any
+
+from .._errors import DeviceError
+
+SERVO_DRIVERS = ("ssc32", "maestro")
+
+SERVO_EPILOG = """\
+examples:
+  armkit --driver ssc32 --port /dev/ttyUSB0 servo 0 1500
+  armkit --driver maestro --port emu servo 2 1200 --time-ms 500
+"""
+
+TABLE_EPILOG = """\
+examples:
+  armkit --arm lynx6 --driver ssc32 servo-table
+"""
+
+
+def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
+    """Add ``servo`` (one raw pulse) and ``servo-table`` (the tables in use)."""
+    p = sub.add_parser(
+        "servo",
+        help="send one servo a raw pulse [µs] (ssc32/maestro; for testing the wiring)",
+        epilog=SERVO_EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("channel", type=int, help="controller channel (SSC-32: 0..31, Maestro: 0..23)")
+    p.add_argument("pulse", type=float, help="pulse width [µs], 500..2500 (1500 = centre)")
+    p.add_argument("--time-ms", type=int, default=None, help="time for the move [ms]")
+    p.set_defaults(func=run_servo)
+    t = sub.add_parser(
+        "servo-table",
+        help="print each servo's pulse table for --arm on --driver (ssc32/maestro)",
+        epilog=TABLE_EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    t.set_defaults(func=run_table)
+
+
+def _servo_driver(args: argparse.Namespace) -> str:
+    if args.driver not in SERVO_DRIVERS:
+        raise ValueError(
+            f"this command needs --driver ssc32 or --driver maestro, not {args.driver!r}"
+        )
+    return str(args.driver)
+
+
+def run_servo(args: argparse.Namespace) -> int:
+    """Check the pulse, send it, wait, print what the controller reports back."""
+    driver = _servo_driver(args)
+    if not args.port:
+        raise DeviceError("servo needs --port (your controller's serial device, or emu)")
+    with ExitStack() as stack:
+        device = stack.enter_context(_open_device(driver, args, stack))
+        if driver == "ssc32":
+            device.move(args.channel, round(args.pulse), time_ms=args.time_ms)
+            device.wait(_wait_s(args.time_ms))
+            back = float(device.query_pulses([args.channel])[args.channel])
+        else:
+            device.group_move({args.channel: args.pulse}, args.time_ms)
+            device.wait(_wait_s(args.time_ms))
+            back = device.get_position(args.channel)
+    print(f"channel {args.channel}: sent {args.pulse:g} µs, controller reports {back:g} µs")
+    return 0
+
+
+def _wait_s(time_ms: int | None) -> float:
+    return (time_ms or 0) / 1000.0 + 2.0
+
+
+def _open_device(driver: str, args: argparse.Namespace, stack: ExitStack) -> Any:
+    """The device at ``args.port`` (an emulator kept open by ``stack`` for ``emu``).
+    Channel and pulse are checked here, before the port is opened."""
+    from ..devices import maestro, ssc32
+
+    if driver == "ssc32":
+        ssc32.check_channel(args.channel)
+        ssc32.check_pulse(args.channel, round(args.pulse))
+        port = _emulated(stack, "ssc32") if args.port == "emu" else args.port
+        return ssc32.SSC32(port)
+    ssc32.check_channel(args.channel, maestro.CHANNELS)
+    maestro.target_bytes(args.channel, args.pulse)
+    port = _emulated(stack, "maestro") if args.port == "emu" else args.port
+    return maestro.Maestro(port)
+
+
+def _emulated(stack: ExitStack, driver: str) -> str:
+    if driver == "ssc32":
+        from ..sim.ssc32_emulator import SSC32Emulator
+
+        return stack.enter_context(SSC32Emulator()).port
+    from ..sim.maestro_emulator import MaestroEmulator
+
+    return stack.enter_context(MaestroEmulator()).port
+
+
+def run_table(args: argparse.Namespace) -> int:
+    """Print every servo's table: point (degrees or mm) -> pulse [µs]."""
+    from ..drivers.servo._config import load_setup
+    from ..model import load_model
+
+    driver = _servo_driver(args)
+    model = load_model(args.arm)
+    setup = load_setup(model, driver)
+    source = setup.unit_file if setup.unit_file.is_file() else "ideal (no unit file)"
+    print(f"{model.name} on {driver}: tables from {source}")
+    for table in (*setup.joints, *([setup.grip] if setup.grip else [])):
+        unit = "deg" if table.unit == "deg" else "mm"
+        points = "  ".join(
+            f"{table.shown(v):.1f}->{p:.0f}"
+            for v, p in zip(table.values, table.pulses_us, strict=True)
+        )
+        print(f"  {table.name:<9} ch {table.channel:>2}  [{unit} -> µs]  {points}")
+    return 0

@@ -1,0 +1,207 @@
+"""Pololu Maestro servo controller: the compact binary protocol on a serial port.
+
+Commands (Pololu Maestro user's guide, "compact protocol"); data bytes carry 7 bits:
+
+    0x84 ch lo hi   set target, quarter-µs (lo = value & 0x7F, hi = value >> 7); 0 = off
+    0x87 ch lo hi   set speed limit, 0.25 µs per 10 ms (= 25 µs/s per unit); 0 = none
+    0x89 ch lo hi   set acceleration limit, 0.25 µs per 10 ms per 80 ms; 0 = none
+    0x90 ch         get position -> 2 bytes, little-endian, quarter-µs
+    0x93            get moving state -> 1 byte, 0 = done, 1 = moving
+    0xA1            get errors -> 2 bytes, little-endian bit field (cleared by reading)
+
+The Maestro has no feedback: "position" is the pulse it is sending, ramped by
+the speed and acceleration limits. pyserial is imported only when a port opens.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Iterable, Mapping
+
+from .._errors import DeviceError
+from .ssc32 import PULSE_MAX_US, PULSE_MIN_US, SerialLink, check_channel
+
+SET_TARGET = 0x84
+SET_SPEED = 0x87
+SET_ACCELERATION = 0x89
+GET_POSITION = 0x90
+GET_MOVING_STATE = 0x93
+GET_ERRORS = 0xA1
+CHANNELS = range(24)  # Mini Maestro 24; the Micro Maestro has 6
+SPEED_UNIT_US_PER_S = 25.0  # one speed unit: 0.25 µs per 10 ms
+LIMIT_MAX = 0x3FFF  # largest 14-bit value a data pair can carry
+
+
+def _seven_bit_pair(value: int) -> bytes:
+    return bytes([value & 0x7F, (value >> 7) & 0x7F])
+
+
+def _check_limit(name: str, channel: int, value: int) -> None:
+    if not isinstance(value, int) or not 0 <= value <= LIMIT_MAX:
+        raise ValueError(f"{name} {value!r} on channel {channel} is outside 0..{LIMIT_MAX}")
+
+
+def target_bytes(channel: int, pulse_us: float) -> bytes:
+    """``0x84 ch lo hi``: move ``channel`` to ``pulse_us`` [µs, 500..2500, 0.25 µs steps]."""
+    check_channel(channel, CHANNELS)
+    if not isinstance(pulse_us, int | float) or not PULSE_MIN_US <= pulse_us <= PULSE_MAX_US:
+        raise ValueError(
+            f"pulse {pulse_us!r} µs on channel {channel} is outside "
+            f"{PULSE_MIN_US}..{PULSE_MAX_US} µs; give a pulse in that range"
+        )
+    return bytes([SET_TARGET, channel]) + _seven_bit_pair(round(pulse_us * 4))
+
+
+def speed_bytes(channel: int, units: int) -> bytes:
+    """``0x87 ch lo hi``: speed limit in units of 25 µs/s (0 = unlimited)."""
+    check_channel(channel, CHANNELS)
+    _check_limit("speed", channel, units)
+    return bytes([SET_SPEED, channel]) + _seven_bit_pair(units)
+
+
+def acceleration_bytes(channel: int, units: int) -> bytes:
+    """``0x89 ch lo hi``: acceleration limit (0 = unlimited)."""
+    check_channel(channel, CHANNELS)
+    _check_limit("acceleration", channel, units)
+    return bytes([SET_ACCELERATION, channel]) + _seven_bit_pair(units)
+
+
+def position_query_bytes(channel: int) -> bytes:
+    """``0x90 ch``: ask for the pulse ``channel`` is sending (reply: 2 bytes LE, quarter-µs)."""
+    check_channel(channel, CHANNELS)
+    return bytes([GET_POSITION, channel])
+
+
+def parse_position(reply: bytes) -> float:
+    """Pulse [µs] (0 = off) from a 2-byte position reply; ValueError if impossible."""
+    if len(reply) != 2:
+        raise ValueError(f"position reply has {len(reply)} bytes, expected 2")
+    quarter = int.from_bytes(reply, "little")
+    if quarter > LIMIT_MAX:
+        raise ValueError(f"position {quarter} quarter-µs is beyond {LIMIT_MAX}")
+    return quarter / 4.0
+
+
+def parse_moving(reply: bytes) -> bool:
+    """True while moving, from the 1-byte moving-state reply; ValueError if not 0 or 1."""
+    if reply not in (b"\x00", b"\x01"):
+        raise ValueError(f"moving-state reply {reply!r} is not 0 or 1")
+    return reply == b"\x01"
+
+
+def speed_units(delta_us: float, time_s: float) -> int:
+    """The speed limit [units of 25 µs/s] that covers ``delta_us`` in at least ``time_s``
+    (rounded down, so never faster; at least 1, since 0 would mean unlimited)."""
+    return max(1, math.floor(abs(delta_us) / time_s / SPEED_UNIT_US_PER_S))
+
+
+class Maestro:
+    """A Pololu Maestro on a serial port (its USB command port, or TTL at ``baudrate``).
+
+    Args:
+        port: serial device path, or an emulator's ``.port``.
+        baudrate: for the TTL port (the Maestro detects it); ignored over USB.
+        timeout_s: how long to wait for a reply [s].  retries: extra tries per query.
+    """
+
+    def __init__(
+        self, port: str, baudrate: int = 9600, *, timeout_s: float = 0.1, retries: int = 2
+    ) -> None:
+        self._link = SerialLink("Maestro", port, baudrate, timeout_s, retries)
+
+    @property
+    def port(self) -> str:
+        """The serial port's path."""
+        return self._link.port
+
+    def set_target(self, channel: int, pulse_us: float) -> None:
+        """Move ``channel`` to ``pulse_us`` [µs] at its present speed limit."""
+        self._link.write(target_bytes(channel, pulse_us))
+
+    def set_speed(self, channel: int, units: int) -> None:
+        """Speed limit of ``channel`` [units of 25 µs/s]; 0 = unlimited."""
+        self._link.write(speed_bytes(channel, units))
+
+    def set_acceleration(self, channel: int, units: int) -> None:
+        """Acceleration limit of ``channel``; 0 = unlimited."""
+        self._link.write(acceleration_bytes(channel, units))
+
+    def get_position(self, channel: int) -> float:
+        """The pulse ``channel`` is sending now [µs]; 0 = off."""
+        what = f"position of channel {channel}"
+        return self._link.exchange(position_query_bytes(channel), 2, parse_position, what)
+
+    def is_moving(self) -> bool:
+        """True while any servo is still ramping toward its target."""
+        return self._link.exchange(bytes([GET_MOVING_STATE]), 1, parse_moving, "moving state")
+
+    def errors(self) -> int:
+        """The error bit field (reading clears it)."""
+        request = bytes([GET_ERRORS])
+        return self._link.exchange(request, 2, lambda r: int.from_bytes(r, "little"), "errors")
+
+    def group_move(
+        self,
+        pulses: Mapping[int, float],
+        time_ms: int | None = None,
+        speeds: Mapping[int, int] | None = None,
+    ) -> None:
+        """Move several servos to arrive together: each one's speed limit is set to
+        cover its distance in the move's time (at least ``time_ms``, longer if a
+        ``speeds`` limit [µs/s] needs it), then all targets go out in one write.
+        Speeds round down to 25 µs/s steps, so servos arrive within one step of each
+        other and never early. Servos never commanded before jump."""
+        data = b"".join(target_bytes(ch, pw) for ch, pw in pulses.items())  # validates
+        starts = {ch: self.get_position(ch) for ch in pulses}
+        move_s = _move_time(pulses, starts, time_ms, speeds or {})
+        limits = b"".join(
+            speed_bytes(ch, speed_units(pw - starts[ch], move_s) if move_s > 0 else 0)
+            for ch, pw in pulses.items()
+        )
+        self._link.write(limits + data)
+
+    def wait(self, timeout_s: float, poll_s: float = 0.005) -> None:
+        """Poll the moving state until done; DeviceError after ``timeout_s`` [s]."""
+        deadline = time.monotonic() + timeout_s
+        while self.is_moving():
+            if time.monotonic() > deadline:
+                raise DeviceError(
+                    f"Maestro on {self.port} still moving after {timeout_s:.2f} s; "
+                    "check its speed limits and servo power, or wait longer"
+                )
+            time.sleep(poll_s)
+
+    def stop(self, channels: Iterable[int]) -> None:
+        """Hold each servo in ``channels`` where it is now (target := position)."""
+        for ch in channels:
+            pulse = self.get_position(ch)
+            if pulse:
+                self._link.write(bytes([SET_TARGET, ch]) + _seven_bit_pair(round(pulse * 4)))
+
+    def close(self) -> None:
+        """Release the port. Safe to call twice."""
+        self._link.close()
+
+    def __enter__(self) -> Maestro:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+
+def _move_time(
+    pulses: Mapping[int, float],
+    starts: Mapping[int, float],
+    time_ms: int | None,
+    speeds: Mapping[int, int],
+) -> float:
+    """Seconds the group move takes: at least ``time_ms``, and long enough that no
+    servo with a ``speeds`` entry [µs/s] exceeds it (servos that are off jump)."""
+    needed = [(time_ms or 0) / 1000.0]
+    for ch, limit in speeds.items():
+        if limit <= 0:
+            raise ValueError(f"speed of channel {ch} must be > 0 µs/s, got {limit}")
+        if starts.get(ch):
+            needed.append(abs(pulses[ch] - starts[ch]) / limit)
+    return max(needed)

@@ -1,0 +1,295 @@
+"""Lynxmotion SSC-32 / SSC-32U servo controller: the ASCII protocol on a serial port.
+
+Commands (SSC-32U user guide; spaces optional, every line ends with CR):
+
+    #<ch>P<pw>S<spd> ... #<ch>P<pw>T<ms>\\r   one servo, or a group move: every servo
+                                              starts and finishes together, in at
+                                              least T ms and no faster than each S
+    Q\\r                                       "." = move done, "+" = still moving
+    QP<ch>QP<ch>...\\r                          one binary byte per servo = pulse / 10 µs
+    STOP<ch>\\r                                stop that servo where it is
+    VER\\r                                     firmware version text, ends with CR
+
+Pulses are µs (500..2500), speeds µs/s, times ms (at most 65535). The board has
+no feedback: QP reports the pulse it is sending, 0 for a servo never commanded
+(the first command to a servo ignores S and T and jumps).
+
+pyserial is imported only when a port is opened (``serial`` extra).
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Iterable, Mapping
+from typing import Any, TypeVar
+
+from .._errors import DeviceError
+
+PULSE_MIN_US = 500
+PULSE_MAX_US = 2500
+CHANNELS = range(32)
+BAUDRATES = (9600, 38400, 115200)
+TIME_MAX_MS = 65535
+SPEED_MAX_US_PER_S = 65535
+CR = b"\r"
+STATUS_QUERY = b"Q\r"
+VERSION_QUERY = b"VER\r"
+STATUS_REPLY = {b".": False, b"+": True}  # Q reply byte -> still moving
+
+T = TypeVar("T")
+
+
+def check_channel(channel: int, channels: range = CHANNELS) -> None:
+    """Raise ValueError unless ``channel`` is one of ``channels``."""
+    if not isinstance(channel, int) or channel not in channels:
+        raise ValueError(
+            f"servo channel {channel!r} does not exist; use {channels.start}..{channels.stop - 1}"
+        )
+
+
+def check_pulse(channel: int, pulse_us: int) -> None:
+    """Raise ValueError unless ``pulse_us`` [µs] is an int in 500..2500."""
+    if not isinstance(pulse_us, int) or not PULSE_MIN_US <= pulse_us <= PULSE_MAX_US:
+        raise ValueError(
+            f"pulse {pulse_us!r} µs on channel {channel} is outside "
+            f"{PULSE_MIN_US}..{PULSE_MAX_US} µs; give a whole number of µs in that range"
+        )
+
+
+def _check_int(name: str, value: int, low: int, high: int, unit: str) -> None:
+    if not isinstance(value, int) or not low <= value <= high:
+        raise ValueError(f"{name} {value!r} {unit} is outside {low}..{high} {unit}")
+
+
+def check_baudrate(baudrate: int) -> None:
+    """Raise ValueError unless ``baudrate`` is one the SSC-32 can be set to."""
+    if baudrate not in BAUDRATES:
+        raise ValueError(
+            f"SSC-32 baud rate {baudrate!r} is not one of {BAUDRATES}; set the board's"
+        )
+
+
+def group_move_bytes(
+    pulses: Mapping[int, int],
+    time_ms: int | None = None,
+    speeds: Mapping[int, int] | None = None,
+) -> bytes:
+    """The bytes of one (group) move: ``#<ch>P<pw>[S<spd>]`` per servo, then ``[T<ms>]`` CR.
+
+    Args:
+        pulses: channel -> pulse [µs], at least one.
+        time_ms: time for the whole move [ms], 1..65535, or None.
+        speeds: channel -> maximum speed [µs/s] for some of those channels, or None.
+
+    Raises:
+        ValueError: an empty move, an unknown channel, or a value out of range.
+    """
+    speeds = dict(speeds or {})
+    if not pulses:
+        raise ValueError("a move needs at least one servo; give channel -> pulse")
+    for ch in speeds:
+        if ch not in pulses:
+            raise ValueError(f"speed given for channel {ch}, which is not in the move")
+    parts = [_servo_clause(ch, pw, speeds.get(ch)) for ch, pw in pulses.items()]
+    if time_ms is not None:
+        _check_int("move time", time_ms, 1, TIME_MAX_MS, "ms")
+        parts.append(f"T{time_ms}")
+    return "".join(parts).encode("ascii") + CR
+
+
+def _servo_clause(channel: int, pulse_us: int, speed: int | None) -> str:
+    check_channel(channel)
+    check_pulse(channel, pulse_us)
+    if speed is None:
+        return f"#{channel}P{pulse_us}"
+    _check_int(f"speed of channel {channel}", speed, 1, SPEED_MAX_US_PER_S, "µs/s")
+    return f"#{channel}P{pulse_us}S{speed}"
+
+
+def query_pulse_bytes(channels: Iterable[int]) -> bytes:
+    """The bytes of one pulse query ``QP<ch>...`` CR for ``channels`` (reply: one byte each)."""
+    channels = list(channels)
+    if not channels:
+        raise ValueError("a pulse query needs at least one channel")
+    for ch in channels:
+        check_channel(ch)
+    return "".join(f"QP{ch}" for ch in channels).encode("ascii") + CR
+
+
+def stop_bytes(channel: int) -> bytes:
+    """The bytes that stop servo ``channel`` at its present pulse."""
+    check_channel(channel)
+    return f"STOP{channel}".encode("ascii") + CR
+
+
+def parse_status(reply: bytes) -> bool:
+    """True while moving, from the one-byte reply to ``Q``; ValueError if it is neither."""
+    if reply not in STATUS_REPLY:
+        raise ValueError(f"status reply {reply!r} is not '.' or '+'")
+    return STATUS_REPLY[reply]
+
+
+def parse_pulses(reply: bytes, channels: list[int]) -> dict[int, int]:
+    """Channel -> pulse [µs] (0 = never commanded) from the reply to a pulse query."""
+    if len(reply) != len(channels):
+        raise ValueError(f"pulse reply has {len(reply)} bytes, expected {len(channels)}")
+    pulses = {ch: 10 * b for ch, b in zip(channels, reply, strict=True)}
+    for ch, pw in pulses.items():
+        if pw and not PULSE_MIN_US <= pw <= PULSE_MAX_US:
+            raise ValueError(
+                f"channel {ch} reports {pw} µs, outside {PULSE_MIN_US}..{PULSE_MAX_US}"
+            )
+    return pulses
+
+
+def _complete(reply: bytes, size: int | None) -> bytes:
+    if not reply:
+        raise ValueError("no reply")
+    if size is not None and len(reply) != size:
+        raise ValueError(f"reply {reply!r} has {len(reply)} bytes, expected {size}")
+    return reply
+
+
+def _import_serial() -> Any:
+    try:
+        import serial
+    except ModuleNotFoundError:
+        raise DeviceError(
+            "pyserial is not installed; install armkit's serial extra: pip install 'armkit[serial]'"
+        ) from None
+    return serial
+
+
+class SerialLink:
+    """A serial port with bounded request/reply exchanges (used by SSC-32 and Maestro).
+
+    A reply that is missing, late or malformed is drained away and the request is
+    sent again, at most ``retries`` more times; only queries are ever repeated.
+    """
+
+    def __init__(self, name: str, port: str, baudrate: int, timeout_s: float, retries: int):
+        serial = _import_serial()
+        self.name, self.port, self.baudrate = name, port, baudrate
+        self.timeout_s, self.retries = timeout_s, retries
+        try:
+            self._serial = serial.Serial(port, baudrate, timeout=timeout_s, write_timeout=1.0)
+        except (serial.SerialException, OSError) as exc:
+            raise DeviceError(f"cannot open {name} on {port}: {exc}; check the port name") from None
+
+    def write(self, data: bytes) -> None:
+        """Send ``data`` as it is."""
+        try:
+            self._serial.write(data)
+        except Exception as exc:
+            raise DeviceError(f"{self.name} on {self.port}: write failed: {exc}") from None
+
+    def exchange(
+        self, request: bytes, size: int | None, parse: Callable[[bytes], T], what: str
+    ) -> T:
+        """Send ``request``, read ``size`` bytes (None: up to CR), return ``parse(reply)``;
+        DeviceError naming ``what`` was asked and the last fault after 1 + retries tries."""
+        problem = ""
+        for _ in range(1 + self.retries):
+            self._serial.reset_input_buffer()
+            self.write(request)
+            try:
+                return parse(_complete(self._read(size), size))
+            except ValueError as exc:
+                problem = str(exc)
+                self._drain()
+        raise DeviceError(
+            f"{self.name} on {self.port}: {what}: {problem} after {1 + self.retries} "
+            f"tries; check power, cable and baud rate ({self.baudrate})"
+        )
+
+    def _read(self, size: int | None) -> bytes:
+        return bytes(self._serial.read_until(CR) if size is None else self._serial.read(size))
+
+    def _drain(self) -> None:
+        time.sleep(self.timeout_s)
+        self._serial.reset_input_buffer()
+
+    def close(self) -> None:
+        """Release the port. Safe to call twice."""
+        self._serial.close()
+
+
+class SSC32:
+    """An SSC-32 / SSC-32U on a serial port.
+
+    Args:
+        port: serial device path (``/dev/ttyUSB0``, or an emulator's ``.port``).
+        baudrate: 9600 (factory default), 38400 or 115200, as set on the board.
+        timeout_s: how long to wait for a reply [s].  retries: extra tries per query.
+    """
+
+    def __init__(
+        self, port: str, baudrate: int = 9600, *, timeout_s: float = 0.1, retries: int = 2
+    ) -> None:
+        check_baudrate(baudrate)
+        self.port = port
+        self._link = SerialLink("SSC-32", port, baudrate, timeout_s, retries)
+
+    def move(
+        self, channel: int, pulse_us: int, *, speed: int | None = None, time_ms: int | None = None
+    ) -> None:
+        """Move one servo to ``pulse_us`` [µs], at most ``speed`` [µs/s], in ``time_ms`` [ms]."""
+        self.group_move({channel: pulse_us}, time_ms, None if speed is None else {channel: speed})
+
+    def group_move(
+        self,
+        pulses: Mapping[int, int],
+        time_ms: int | None = None,
+        speeds: Mapping[int, int] | None = None,
+    ) -> None:
+        """Move several servos so they start and finish together (see ``group_move_bytes``)."""
+        self._link.write(group_move_bytes(pulses, time_ms, speeds))
+
+    def is_moving(self) -> bool:
+        """True while the last move is still running (``Q``)."""
+        return self._link.exchange(STATUS_QUERY, 1, parse_status, "status query (Q)")
+
+    def wait(self, timeout_s: float, poll_s: float = 0.005) -> None:
+        """Poll ``Q`` until the move is done; DeviceError if it is not within ``timeout_s`` [s]."""
+        deadline = time.monotonic() + timeout_s
+        while self.is_moving():
+            if time.monotonic() > deadline:
+                raise DeviceError(
+                    f"SSC-32 on {self.port} still moving after {timeout_s:.2f} s; "
+                    "check for a stalled servo, or wait longer"
+                )
+            time.sleep(poll_s)
+
+    def query_pulses(self, channels: Iterable[int]) -> dict[int, int]:
+        """Channel -> pulse being sent [µs] (0 = never commanded), by one ``QP`` query."""
+        channels = list(channels)
+        request = query_pulse_bytes(channels)
+        what = f"pulse query (QP) of channel {', '.join(map(str, channels))}"
+        return self._link.exchange(
+            request, len(channels), lambda r: parse_pulses(r, channels), what
+        )
+
+    def stop(self, channels: Iterable[int]) -> None:
+        """Stop each servo in ``channels`` where it is now."""
+        for ch in channels:
+            self._link.write(stop_bytes(ch))
+
+    def version(self) -> str:
+        """The firmware's version text (``VER``)."""
+        return self._link.exchange(VERSION_QUERY, None, _parse_version, "version query (VER)")
+
+    def close(self) -> None:
+        """Release the port. Safe to call twice."""
+        self._link.close()
+
+    def __enter__(self) -> SSC32:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+
+def _parse_version(reply: bytes) -> str:
+    if not reply.endswith(CR) or not reply.isascii() or len(reply) < 2:
+        raise ValueError(f"version reply {reply!r} is not text ending with CR")
+    return reply[:-1].decode("ascii")

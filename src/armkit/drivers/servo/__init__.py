@@ -1,0 +1,13 @@
+"""Hobby-servo arms (Lynx6, AL5D) on an SSC-32 or a Pololu Maestro, through pulse tables.
+
+``open_ssc32(model, port)`` / ``open_maestro(model, port)`` return a driver that
+turns joint angles into pulses through each servo's ``ServoCalibration`` table;
+``run_calibration`` measures a unit's tables. pyserial is imported only when a
+port is opened.
+"""
+
+from ._arm import ServoArmDriver as ServoArmDriver
+from ._calibrate import run_calibration as run_calibration
+from ._open import open_maestro as open_maestro
+from ._open import open_ssc32 as open_ssc32
+from ._table import ServoCalibration as ServoCalibration

@@ -1,0 +1,96 @@
+"""The few things the servo arm driver asks of a servo controller, for SSC-32 and Maestro.
+
+Pulses are µs (floats; each controller rounds to its own resolution), times ms.
+"""
+
+from __future__ import annotations
+
+from typing import Protocol
+
+from ...devices.maestro import Maestro
+from ...devices.ssc32 import SSC32, TIME_MAX_MS
+
+
+class ServoBus(Protocol):
+    """A servo controller as the driver sees it.
+
+    Attributes:
+        name: driver name (``"ssc32"``).  read_resolution_us: step of read-back pulses [µs].
+        max_time_ms: longest single move [ms].
+    """
+
+    name: str
+    read_resolution_us: float
+    max_time_ms: int
+
+    def move(self, pulses: dict[int, float], time_ms: int | None) -> None:
+        """One coordinated move: channel -> pulse [µs], all arriving together after ``time_ms``."""
+        ...
+
+    def wait(self, timeout_s: float) -> None:
+        """Block until the move is done; DeviceError after ``timeout_s`` [s]."""
+        ...
+
+    def read(self, channels: list[int]) -> dict[int, float]:
+        """Channel -> pulse being sent [µs]; 0 = never commanded."""
+        ...
+
+    def stop(self, channels: list[int]) -> None:
+        """Hold each servo where it is now."""
+        ...
+
+    def close(self) -> None:
+        """Release the port."""
+        ...
+
+
+class SSC32Bus:
+    """``ServoBus`` over an ``SSC32``: one group-move line per move, one ``QP`` line per read."""
+
+    name = "ssc32"
+    read_resolution_us = 10.0
+    max_time_ms = TIME_MAX_MS
+
+    def __init__(self, device: SSC32) -> None:
+        self.device = device
+
+    def move(self, pulses: dict[int, float], time_ms: int | None) -> None:
+        self.device.group_move({ch: round(p) for ch, p in pulses.items()}, time_ms)
+
+    def wait(self, timeout_s: float) -> None:
+        self.device.wait(timeout_s)
+
+    def read(self, channels: list[int]) -> dict[int, float]:
+        return {ch: float(p) for ch, p in self.device.query_pulses(channels).items()}
+
+    def stop(self, channels: list[int]) -> None:
+        self.device.stop(channels)
+
+    def close(self) -> None:
+        self.device.close()
+
+
+class MaestroBus:
+    """``ServoBus`` over a ``Maestro``: per-servo speed limits make a group move."""
+
+    name = "maestro"
+    read_resolution_us = 0.25
+    max_time_ms = 10 * TIME_MAX_MS
+
+    def __init__(self, device: Maestro) -> None:
+        self.device = device
+
+    def move(self, pulses: dict[int, float], time_ms: int | None) -> None:
+        self.device.group_move(pulses, time_ms)
+
+    def wait(self, timeout_s: float) -> None:
+        self.device.wait(timeout_s)
+
+    def read(self, channels: list[int]) -> dict[int, float]:
+        return {ch: self.device.get_position(ch) for ch in channels}
+
+    def stop(self, channels: list[int]) -> None:
+        self.device.stop(channels)
+
+    def close(self) -> None:
+        self.device.close()

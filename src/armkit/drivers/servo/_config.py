@@ -1,0 +1,184 @@
+"""Where a servo arm's tables come from: the model's defaults, then the unit's own file.
+
+The model file's ``[drivers.<name>]`` section (``ssc32`` or ``maestro``; the
+Maestro falls back to the SSC-32's) gives:
+
+    channels      one per joint, then the gripper's (optional)
+    baudrate      serial speed (default 9600)
+    center_deg    per joint: the joint angle at 1500 µs (default 90, as 002)
+    direction     per joint: +1, or -1 for a servo mounted the other way round
+    grip_pulse_us [closed, open] gripper pulses [µs] (default [500, 2500])
+
+A unit's measured tables (written by ``run_calibration``) live in
+``<config dir>/<arm>-<driver>.toml``; the config dir is ``$ARMKIT_CONFIG_DIR``, else
+``$XDG_CONFIG_HOME/armkit``, else ``~/.config/armkit``.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import tempfile
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from ..._errors import ModelError
+from ...model import ArmModel
+from ._table import ServoCalibration, ideal_grip, ideal_joint
+
+_SCALE = {"deg": math.radians(1.0), "mm": 0.001}  # shown value -> SI
+_VALUE_KEY = {"deg": "angles_deg", "mm": "widths_mm"}
+
+
+@dataclass(frozen=True)
+class ServoSetup:
+    """Everything a servo driver needs to know before it opens a port.
+
+    Attributes:
+        joints: one table per joint, model order.  grip: the gripper's table, or None.
+        baudrate: serial speed.  unit_file: the unit's calibration file (it may not exist yet).
+    """
+
+    joints: tuple[ServoCalibration, ...]
+    grip: ServoCalibration | None
+    baudrate: int
+    unit_file: Path
+
+
+def config_dir() -> Path:
+    """The user's armkit configuration directory (not created)."""
+    if os.environ.get("ARMKIT_CONFIG_DIR"):
+        return Path(os.environ["ARMKIT_CONFIG_DIR"]).expanduser()
+    xdg = os.environ.get("XDG_CONFIG_HOME")
+    return (Path(xdg) if xdg else Path.home() / ".config") / "armkit"
+
+
+def driver_section(model: ArmModel, driver: str) -> dict[str, Any]:
+    """The model's ``[drivers.<driver>]`` table (the Maestro may use the SSC-32's)."""
+    for name in (driver, "ssc32"):
+        if isinstance(model.drivers.get(name), dict):
+            return dict(model.drivers[name])
+    raise ModelError(
+        f"{model.name} has no [drivers.{driver}] section; add one with channels = [...] "
+        "(one channel per joint, then the gripper's)"
+    )
+
+
+def load_setup(model: ArmModel, driver: str) -> ServoSetup:
+    """The tables for ``model`` on ``driver``: model defaults overridden by the unit's file.
+
+    Raises:
+        ModelError: the driver section or the unit file is wrong (names the field).
+    """
+    section = driver_section(model, driver)
+    joints, grip = _defaults(model, section, f"{model.name} [drivers.{driver}]")
+    unit_file = config_dir() / f"{model.name}-{driver}.toml"
+    if unit_file.is_file():
+        joints, grip = _apply_unit_file(unit_file, joints, grip)
+    return ServoSetup(joints, grip, int(section.get("baudrate", 9600)), unit_file)
+
+
+def _per_joint(
+    section: dict[str, Any], key: str, default: float, dof: int, where: str
+) -> list[Any]:
+    value = section.get(key, [default] * dof)
+    if not isinstance(value, list) or len(value) != dof:
+        raise ModelError(f"{where}: {key} must be a list of {dof} numbers, one per joint")
+    return value
+
+
+def _defaults(
+    model: ArmModel, section: dict[str, Any], where: str
+) -> tuple[tuple[ServoCalibration, ...], ServoCalibration | None]:
+    dof = model.dof
+    channels = section.get("channels")
+    if (
+        not isinstance(channels, list)
+        or len(channels) not in (dof, dof + 1)
+        or len(set(channels)) != len(channels)
+        or not all(isinstance(ch, int) and 0 <= ch <= 31 for ch in channels)
+    ):
+        raise ModelError(
+            f"{where}: channels must list {dof} different joint channels (+ 1 for the "
+            f"gripper), each 0..31; got {channels!r}"
+        )
+    centers = _per_joint(section, "center_deg", 90.0, dof, where)
+    directions = _per_joint(section, "direction", 1, dof, where)
+    try:
+        joints = tuple(
+            ideal_joint(j.name, ch, j.lower, j.upper, center, direction)
+            for j, ch, center, direction in zip(
+                model.joints, channels, centers, directions, strict=False
+            )
+        )
+        grip = _default_grip(model, section, channels[dof]) if len(channels) > dof else None
+    except (ValueError, TypeError) as exc:
+        raise ModelError(f"{where}: {exc}") from None
+    return joints, grip
+
+
+def _default_grip(model: ArmModel, section: dict[str, Any], channel: int) -> ServoCalibration:
+    pulses = section.get("grip_pulse_us", [500.0, 2500.0])
+    g = model.gripper
+    return ideal_grip(channel, g.width_min, g.width_max, pulses)
+
+
+def _apply_unit_file(
+    path: Path, joints: tuple[ServoCalibration, ...], grip: ServoCalibration | None
+) -> tuple[tuple[ServoCalibration, ...], ServoCalibration | None]:
+    try:
+        servos = tomllib.loads(path.read_text(encoding="utf-8")).get("servos", {})
+    except (OSError, tomllib.TOMLDecodeError) as exc:
+        raise ModelError(f"{path}: cannot read the calibration: {exc}") from None
+    by_name = {c.name: c for c in (*joints, *([grip] if grip else []))}
+    for name, entry in servos.items():
+        if name not in by_name:
+            raise ModelError(
+                f"{path}: [servos.{name}] is not a servo of this arm ({', '.join(by_name)})"
+            )
+        by_name[name] = _entry_to_table(path, name, entry, by_name[name])
+    return tuple(by_name[c.name] for c in joints), (by_name["grip"] if grip else None)
+
+
+def _entry_to_table(
+    path: Path, name: str, entry: Any, default: ServoCalibration
+) -> ServoCalibration:
+    key = _VALUE_KEY[default.unit]
+    try:
+        values = tuple(float(v) * _SCALE[default.unit] for v in entry[key])
+        pulses = tuple(float(p) for p in entry["pulses_us"])
+        channel = int(entry.get("channel", default.channel))
+        return ServoCalibration(name, channel, values, pulses, default.unit)
+    except (KeyError, TypeError, ValueError) as exc:
+        raise ModelError(
+            f"{path}: [servos.{name}] needs {key} and pulses_us lists of numbers: {exc}"
+        ) from None
+
+
+def table_to_toml(cal: ServoCalibration) -> str:
+    """One ``[servos.<name>]`` TOML table for ``cal``, in degrees or millimetres."""
+    values = ", ".join(f"{cal.shown(v):.3f}" for v in cal.values)
+    pulses = ", ".join(f"{p:.1f}" for p in cal.pulses_us)
+    return (
+        f"[servos.{cal.name}]\nchannel = {cal.channel}\n"
+        f"{_VALUE_KEY[cal.unit]} = [{values}]\npulses_us = [{pulses}]\n"
+    )
+
+
+def write_atomic(path: Path, text: str) -> None:
+    """Write ``text`` to ``path`` so that readers see the old file or the new one, never
+    half of one: a temporary file in the same directory, fsync, then ``os.replace``."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as handle:
+            os.fchmod(handle.fileno(), 0o644)  # a config file, not a secret
+            handle.write(text)
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
