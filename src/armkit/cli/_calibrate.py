@@ -53,8 +53,14 @@ def run_calibrate(args: argparse.Namespace) -> int:
     model = load_model(args.arm)
     module = importlib.import_module(_module_for(model.name, args.driver))
     driver = open_driver(model, args.driver, args.port)
+    ask = _ask
+    if args.driver == "sim":  # the simulated OWI is timed by an automatic operator
+        from ..sim.owi_operator import auto_operator
+
+        operator = auto_operator(driver)
+        ask = operator.ask if operator is not None else _ask
     try:
-        path = module.run_calibration(model, driver, _ask, print)
+        path = module.run_calibration(model, driver, ask, print)
     finally:
         driver.close()
     print(f"wrote {path}")

@@ -139,9 +139,11 @@ def _keep(model: ArmModel, fam: PlanarFamily, q: list[float], attempt: _Attempt)
     for i, joint in enumerate(model.joints):
         value = _wrap_into(q[i], joint.lower, joint.upper)
         if value is None:
-            excess = max(joint.lower - q[i], q[i] - joint.upper)
+            mid = 0.5 * (joint.lower + joint.upper)
+            nearest = mid + math.remainder(q[i] - mid, _TWO_PI)  # the turn nearest the range
+            excess = max(joint.lower - nearest, nearest - joint.upper)
             if worst is None or excess > worst[0]:
-                worst = (excess, i, q[i])
+                worst = (excess, i, nearest)
         else:
             q[i] = value
     if worst is None:

@@ -1,0 +1,113 @@
+"""OWI-535 commands: keys (keyboard mode), pick-place, rehome, light."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from .._errors import ArmkitError
+
+if TYPE_CHECKING:
+    from ..drivers.timed import TimedDriver
+
+
+def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
+    """Add ``keys``, ``pick-place``, ``rehome`` and ``light``."""
+    p = sub.add_parser(
+        "keys",
+        help="OWI-535: drive the joints from the keyboard, one key = one 250 ms move",
+        description="000's letters: w/s gripper close/open, e/d wrist, r/f elbow, u/j shoulder, "
+        "i/k base, l/p light on/off, ? help, q quit. No Enter needed.",
+    )
+    p.set_defaults(func=_keys)
+    p = sub.add_parser(
+        "pick-place", help="OWI-535: pick the object at A up and put it down at B (mm, world frame)"
+    )
+    for name in ("ax", "ay", "az", "bx", "by", "bz"):
+        p.add_argument(
+            name, type=float, metavar=name.upper(), help=f"{name[0].upper()} {name[1]} [mm]"
+        )
+    p.add_argument(
+        "--lift", type=float, default=40.0, metavar="MM", help="travel height above A and B [mm]"
+    )
+    p.set_defaults(func=_pick_place)
+    p = sub.add_parser(
+        "rehome", help="OWI-535: drive each joint against its limit so its angle is known again"
+    )
+    p.set_defaults(func=_rehome)
+    p = sub.add_parser("light", help="OWI-535: switch the gripper light on or off")
+    p.add_argument("state", choices=("on", "off"))
+    p.set_defaults(func=_light)
+
+
+def _open(args: argparse.Namespace) -> TimedDriver:
+    """The OWI driver named by --arm/--driver/--port."""
+    from ..drivers import open_driver
+    from ..drivers.timed import TimedDriver
+    from ..model import load_model
+
+    model = load_model(args.arm)
+    if "owi535" not in model.drivers:
+        raise ArmkitError(
+            f"'{args.command}' is for the OWI-535; add --arm owi535 (got {model.name})"
+        )
+    driver = open_driver(model, args.driver, args.port)
+    if not isinstance(driver, TimedDriver):
+        driver.close()
+        raise ArmkitError(f"'{args.command}' needs --driver owi535 or sim, not {args.driver!r}")
+    return driver
+
+
+def _keys(args: argparse.Namespace) -> int:
+    from ..drivers.timed._keys import run_keys
+
+    driver = _open(args)
+    try:
+        return run_keys(driver)
+    finally:
+        driver.close()
+
+
+def _pick_place(args: argparse.Namespace) -> int:
+    from ..tasks.pick_place_owi import pick_place
+
+    driver = _open(args)
+    try:
+        a = np.array([args.ax, args.ay, args.az]) / 1000.0
+        b = np.array([args.bx, args.by, args.bz]) / 1000.0
+        pick_place(driver.model, driver, a, b, lift_m=args.lift / 1000.0, say=print)
+        _summary(driver)
+    finally:
+        driver.close()
+    return 0
+
+
+def _rehome(args: argparse.Namespace) -> int:
+    from ..drivers.timed import rehome
+
+    driver = _open(args)
+    try:
+        rehome(driver, print)
+        _summary(driver)
+    finally:
+        driver.close()
+    return 0
+
+
+def _light(args: argparse.Namespace) -> int:
+    driver = _open(args)
+    try:
+        driver.set_light(args.state == "on")
+        print(f"light {args.state}")
+    finally:
+        driver.close()
+    return 0
+
+
+def _summary(driver: TimedDriver) -> None:
+    from ..drivers.timed._keys import status_line
+
+    print(status_line(driver), file=sys.stdout)

@@ -1,0 +1,270 @@
+"""The OWI-535 driver: joints that know their angle, on timed motors.
+
+Angles are estimated through the unit's timing model and kept in its state
+file, written atomically before a move (marked uncertain, with the move in
+progress, so a ``kill -9`` leaves an honest file) and after it (with the new
+estimate). A move cut short keeps the estimate of where it stopped and stays
+uncertain until the arm is re-homed.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..._errors import ArmkitError
+from ...model import ArmModel
+from ._clock import Clock
+from ._config import OwiConfig, default_timing, owi_config
+from ._estimate import MOVING, after_run, pending_of, recovered
+from ._motors import Device, Motors, Run
+from ._order import safe_order
+from ._plan import MoveReport, ShortMoveError, Step, plan_turns
+from ._safety import ExitGuard
+from ._state import ArmState, load, save
+from ._timing import TimingModel
+
+F64 = NDArray[np.float64]
+
+
+class TimedDriver:
+    """A :class:`~armkit.drivers.Driver` for the OWI-535 (open-loop timed motors)."""
+
+    def __init__(
+        self,
+        model: ArmModel,
+        device: Device,
+        clock: Clock,
+        path: Path,
+        unit: str = "default",
+        *,
+        durable: bool = True,
+    ) -> None:
+        """Open the unit whose state file is ``path`` (created on first use), send stop, and
+        if the last process died mid-move, account for it. ``durable=False`` skips fsync
+        (simulations)."""
+        self.durable = durable
+        self.model, self.clock, self.path = model, clock, path
+        self.config: OwiConfig = owi_config(model)
+        self.motors = Motors(
+            device,
+            clock,
+            base_reversed=self.config.base_reversed,
+            watchdog_margin_s=self.config.watchdog_margin_s,
+        )
+        self.state = load(path) if path.exists() else _fresh_state(model, unit)
+        self.motors.light = self.state.light
+        self._guard = ExitGuard(self.motors.stop)
+        self._guard.install()
+        self._closed = False
+        self.simulation: object | None = None  # the OwiSim behind a simulated device
+        self.motors.stop()
+        if self.state.pending is not None:
+            self._save(recovered(self.state, time.time()))
+
+    # -- Driver protocol -------------------------------------------------
+    @property
+    def joint_names(self) -> tuple[str, ...]:
+        """base, shoulder, elbow, wrist."""
+        return self.model.joint_names
+
+    def read(self) -> F64:
+        """Estimated joint angles [rad], shape (4,)."""
+        return np.array(self.state.angles)
+
+    def move(
+        self,
+        q: F64,
+        *,
+        duration: float | None = None,
+        speed: float | None = None,
+        wait: bool = True,
+    ) -> None:
+        """Turn every joint to ``q`` [rad], shape (4,), one joint at a time in an order that
+        keeps the arm off the table. The OWI's motors have one speed, so ``duration`` and
+        ``speed`` cannot change it; moves always block. Joints within the 200 ms
+        resolution stay where they are.
+
+        Raises:
+            JointLimitError: a target is outside the unit's limits (nothing moves).
+            UnreachableError: every order would sweep the arm through the table.
+        """
+        if speed is not None and not 0.0 < speed <= 1.0:
+            raise ValueError(f"speed must be in (0, 1], got {speed}")
+        self.move_report(np.asarray(q, dtype=float))
+
+    def move_report(self, q: F64, *, table: bool = True) -> MoveReport:
+        """:meth:`move`, returning what was done (steps, clamped or skipped joints).
+        ``table=False`` skips the table check (calibration, re-homing: the arm stands at
+        the edge of the table)."""
+        if q.shape != (4,):
+            raise ValueError(f"q must have shape (4,), got {q.shape}")
+        plan_turns(
+            self.timing,
+            self.joint_names,
+            self.read(),
+            dict(enumerate(q)),
+            0.0,
+            clamp=False,
+            skip_short=True,
+        )
+        order = safe_order(self.read(), q, self.timing.lengths, self.model.dh[0].d, table)
+        report = MoveReport()
+        for j in order:
+            part = self._plan({j: float(q[j])}, clamp=False, skip_short=True)
+            report.notes += part.notes
+            report.steps += self._run_steps(part.steps)
+        return report
+
+    def grip(self, width: float) -> None:
+        """Open (``width`` [m] over half the gripper's range) or close the gripper."""
+        self.open_gripper(width > (self.model.gripper.width_min + self.model.gripper.width_max) / 2)
+
+    def stop(self) -> None:
+        """Stop every motor now (the light keeps its state)."""
+        self.motors.stop()
+
+    def close(self) -> None:
+        """Stop, save, release the device. Safe to call twice."""
+        if self._closed:
+            return
+        self._closed = True
+        try:
+            self.motors.stop()
+        finally:
+            self._guard.uninstall()
+            self.motors.device.close()
+
+    # -- joints that know their angle ------------------------------------
+    @property
+    def timing(self) -> TimingModel:
+        """The unit's timing model."""
+        return self.state.timing
+
+    def turn_to(self, joint: str, angle: float, *, clamp: bool = True) -> MoveReport:
+        """Turn ``joint`` to ``angle`` [rad]; beyond a limit it is clamped (noted) or, with
+        ``clamp=False``, refused. Moves under the minimum time are refused (ShortMoveError)."""
+        return self.turn_many({joint: angle}, clamp=clamp)
+
+    def turn_by(self, joint: str, delta: float, *, clamp: bool = True) -> MoveReport:
+        """Turn ``joint`` by ``delta`` [rad] from its estimated angle (see :meth:`turn_to`)."""
+        return self.turn_to(
+            joint, self.state.angles[self.model.joint_index(joint)] + delta, clamp=clamp
+        )
+
+    def turn_many(self, targets: dict[str, float], *, clamp: bool = True) -> MoveReport:
+        """Turn several joints at once ({name: angle [rad]}), all motors started together."""
+        index = {self.model.joint_index(name): float(a) for name, a in targets.items()}
+        report = self._plan(index, clamp=clamp, skip_short=False)
+        report.steps = self._run_steps(report.steps)
+        return report
+
+    def turn_for(self, joint: str, direction: int, seconds: float) -> None:
+        """Run one motor for ``seconds`` [s] (000's timed turn; keyboard mode), the angle
+        estimated by the timing model and clamped at the limits."""
+        j = self.model.joint_index(joint)
+        if direction not in (-1, 1):
+            raise ValueError(f"turn {joint} needs direction -1 or +1, got {direction}")
+        if seconds < self.timing.min_move_s:
+            raise ShortMoveError(
+                f"turn {joint} for {seconds * 1000:.0f} ms is under the "
+                f"{self.timing.min_move_s * 1000:.0f} ms minimum; run it longer"
+            )
+        self._run_steps([Step(j, direction, seconds, math.nan)])
+
+    def drive_to_limit(
+        self, joint: str, direction: int, wait: Callable[[], object] | None = None
+    ) -> float:
+        """Run ``joint`` against its limit in ``direction`` until ``wait()`` returns (a person
+        saying it is there), or with no ``wait`` for 1.25 times the slowest limit-to-limit
+        time; then its angle is that limit, exactly. Returns the motor time [s].
+
+        Raises:
+            ArmkitError: nobody answered before the watchdog stopped the arm.
+        """
+        j = self.model.joint_index(joint)
+        worst = (
+            1.25 * (self.timing.upper[j] - self.timing.lower[j]) / min(self.timing.joints[j].rates)
+        )
+        worst /= self.timing.battery(self.state.motor_s)
+        step = Step(
+            j, direction, worst, self.timing.upper[j] if direction > 0 else self.timing.lower[j]
+        )
+        run = Run({joint: (direction, worst)})
+        before = self.state
+        self._save(before.with_(uncertain=True, reason=MOVING, pending=pending_of([step])))
+        try:
+            if wait is None:
+                self.motors.execute(run)
+            else:
+                self.motors.run_until(run, wait, 2 * worst + self.config.watchdog_margin_s)
+        finally:
+            self._save(after_run(before, [step], run, self.joint_names, at_limit=run.complete))
+        if not run.complete:
+            raise ArmkitError(
+                f"the {joint} was stopped by the watchdog before anyone said it reached "
+                "its limit; start again"
+            )
+        return run.elapsed[joint]
+
+    def open_gripper(self, open_: bool) -> None:
+        """Open or close the gripper for its timed period; nothing is sent if it already is."""
+        wanted = "open" if open_ else "closed"
+        if self.state.gripper == wanted:
+            return
+        run = Run({"gripper": (1 if open_ else -1, self.timing.gripper_s)})
+        self._save(self.state.with_(gripper="unknown"))
+        try:
+            self.motors.execute(run)
+        finally:
+            self._save(self.state.with_(gripper=wanted if run.complete else "unknown"))
+
+    def set_light(self, on: bool) -> None:
+        """Switch the light on or off (kept across stops)."""
+        self.motors.set_light(on)
+        self._save(self.state.with_(light=on))
+
+    def set_state(self, state: ArmState) -> None:
+        """Replace the unit's state (calibration, re-homing) and save it."""
+        self._save(state)
+
+    # -- internals ---------------------------------------------------------
+    def _plan(self, targets: dict[int, float], *, clamp: bool, skip_short: bool) -> MoveReport:
+        q = self.read()
+        return plan_turns(
+            self.timing,
+            self.joint_names,
+            q,
+            targets,
+            self.state.motor_s,
+            clamp=clamp,
+            skip_short=skip_short,
+        )
+
+    def _run_steps(self, steps: list[Step]) -> list[Step]:
+        if not steps:
+            return steps
+        names = self.joint_names
+        run = Run({names[s.joint]: (s.direction, s.seconds) for s in steps})
+        before = self.state
+        self._save(before.with_(uncertain=True, reason=MOVING, pending=pending_of(steps)))
+        try:
+            self.motors.execute(run)
+        finally:
+            self._save(after_run(before, steps, run, self.joint_names))
+        return steps
+
+    def _save(self, state: ArmState) -> None:
+        self.state = state
+        save(state, self.path, self.durable)
+
+
+def _fresh_state(model: ArmModel, unit: str) -> ArmState:
+    return ArmState(
+        unit=unit, timing=default_timing(model), angles=tuple(float(a) for a in model.home)
+    )

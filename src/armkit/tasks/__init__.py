@@ -1,0 +1,1 @@
+"""Jobs for an arm: pick and place, stacking, drawing, music, search."""

@@ -1,0 +1,45 @@
+"""Fixtures for the OWI-535 tests: a private config directory and a simulated arm
+driven by the real driver through the simulated pyusb device."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+
+from armkit.devices.owi535 import open_device
+from armkit.drivers.timed import TimedDriver, state_path
+from armkit.model import ArmModel, load_model
+from armkit.sim.owi_sim import OwiSim, build_sim
+
+
+@pytest.fixture
+def owi() -> ArmModel:
+    return load_model("owi535")
+
+
+@pytest.fixture(autouse=True)
+def config_dir(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    d = tmp_path / "config"
+    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(d))
+    return d
+
+
+@pytest.fixture
+def sim(owi: ArmModel) -> OwiSim:
+    return build_sim(owi, seed=7)
+
+
+@pytest.fixture
+def driver(owi: ArmModel, sim: OwiSim) -> Iterator[TimedDriver]:
+    d = TimedDriver(
+        owi, open_device(sim.backend), sim.clock, state_path("test"), "test", durable=False
+    )
+    yield d
+    d.close()
+
+
+def sent(sim: OwiSim) -> list[str]:
+    """Every command sent so far, as hex strings ('400000')."""
+    return [t.data.hex() for t in sim.backend.transfers]
