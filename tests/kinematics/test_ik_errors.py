@@ -139,5 +139,7 @@ dh = { a_mm = 100, alpha_deg = 0, d_mm = 0 }
 def test_limit_message_names_the_nearest_miss() -> None:
     """(200, 0, 50) mm with a level gripper needs the OWI's wrist at about -64.5 deg (limit -60):
     the message names the wrist, not the over-the-shoulder base angle."""
-    with pytest.raises(UnreachableError, match=r"wrist would be -64\.\d deg, allowed -60\.0\.\.60\.0"):
+    with pytest.raises(
+        UnreachableError, match=r"wrist would be -64\.\d deg, allowed -60\.0\.\.60\.0"
+    ):
         ik(load_model("owi535"), (0.2, 0.0, 0.05))

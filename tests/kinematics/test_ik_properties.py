@@ -51,10 +51,10 @@ def test_batch_round_trip_10000(name: str) -> None:
     assert np.abs(res.q - q).max() < 1e-6  # seeded with q, the nearest branch is q
 
 
-@pytest.mark.parametrize("name", ARMS)
+@pytest.mark.parametrize(
+    "name", [a for a in ARMS if a != "planar2"]
+)  # planar2: pitch follows position
 def test_pitch_is_met(name: str) -> None:
-    if name == "planar2":
-        pytest.skip("planar2's pitch follows from its position")
     m = load_model(name)
     _, P, pitch = reachable(name, 500, 3)
     assert pitch is not None

@@ -18,7 +18,8 @@ from ..model import ArmModel
 from ._family import PlanarFamily, family_of
 
 Q = tuple[float, ...]
-FastSolver = Callable[[float, float, float, float | None, Q], list[Q] | None]
+Ranked = list[tuple[float, Q]]  # (squared distance to the seed, solution), unsorted
+FastSolver = Callable[[float, float, float, float | None, Q], tuple[Q, Ranked] | None]
 _TWO_PI = 2.0 * math.pi
 _SLACK = 1e-9
 
@@ -63,7 +64,9 @@ def _yaw_three(model: ArmModel, fam: PlanarFamily) -> FastSolver:
     tp, sqrt, atan2, acos, rem = _TWO_PI, math.sqrt, math.atan2, math.acos, math.remainder
     sin, cos, pi = math.sin, math.cos, math.pi
 
-    def solve(x: float, y: float, z: float, pitch: float | None, seed: Q) -> list[Q] | None:
+    def solve(
+        x: float, y: float, z: float, pitch: float | None, seed: Q
+    ) -> tuple[Q, Ranked] | None:
         r2 = x * x + y * y - lat * lat
         if pitch is None or r2 <= 1e-24:
             return None
@@ -75,9 +78,14 @@ def _yaw_three(model: ArmModel, fam: PlanarFamily) -> FastSolver:
             sp, cp = sp / norm, cp / norm
         e0, e1, e2, e3 = seed[0], seed[1], seed[2], seed[3]
         rest = seed[4:]
-        found: list[tuple[float, Q]] = []
-        for r, ca in ((rr, cp), (-rr, -cp)):
-            q0 = rem(bs * (heading - atan2(-lat, r) if lat else heading + (r < 0) * pi), tp)
+        found: Ranked = []
+        best_d, best = math.inf, seed
+        if lat:
+            bases = (bs * (heading - atan2(-lat, rr)), bs * (heading - atan2(-lat, -rr)))
+        else:
+            bases = (bs * heading, bs * (heading + pi))
+        for r, ca, q0 in ((rr, cp, bases[0]), (-rr, -cp, bases[1])):
+            q0 = rem(q0, tp)
             q0 = q0 + tp if q0 < lo0 else (q0 - tp if q0 > hi0 else q0)
             if not lo0 <= q0 <= hi0:
                 continue
@@ -104,12 +112,12 @@ def _yaw_three(model: ArmModel, fam: PlanarFamily) -> FastSolver:
                 q3 = q3 + tp if q3 < lo3 else (q3 - tp if q3 > hi3 else q3)
                 if lo3 <= q3 <= hi3:
                     d0, d1, d2, d3 = q0 - e0, q1 - e1, q2 - e2, q3 - e3
+                    d = d0 * d0 + d1 * d1 + d2 * d2 + d3 * d3
                     sol = (q0, q1, q2, q3, *rest) if rest else (q0, q1, q2, q3)
-                    found.append((d0 * d0 + d1 * d1 + d2 * d2 + d3 * d3, sol))
-        if len(found) < 2:
-            return [found[0][1]] if found else []
-        found.sort()
-        return [q for _, q in found]
+                    found.append((d, sol))
+                    if d < best_d:
+                        best_d, best = d, sol
+        return (best, found) if found else None
 
     return solve
 
@@ -123,7 +131,9 @@ def _planar_two(model: ArmModel, fam: PlanarFamily) -> FastSolver:
     ux, uy = fam.u[0], fam.u[1]
     tp, atan2, acos, sqrt, rem = _TWO_PI, math.atan2, math.acos, math.sqrt, math.remainder
 
-    def solve(x: float, y: float, z: float, pitch: float | None, seed: Q) -> list[Q] | None:
+    def solve(
+        x: float, y: float, z: float, pitch: float | None, seed: Q
+    ) -> tuple[Q, Ranked] | None:
         if pitch is not None or abs(x * ux + y * uy) > 1e-9:
             return None
         wx, wz = -uy * x + ux * y - c1x, z - c1z
@@ -133,7 +143,7 @@ def _planar_two(model: ArmModel, fam: PlanarFamily) -> FastSolver:
         cg = 1.0 if cg > 1.0 else (-1.0 if cg < -1.0 else cg)
         g, t = acos(cg), atan2(l2 * sqrt(1.0 - cg * cg), l1 + l2 * cg)
         aim = atan2(wz, wx) - ang1
-        found: list[tuple[float, Q]] = []
+        found: Ranked = []
         for gg, tt in ((g, t), (-g, -t)) if g > 1e-12 else ((g, t),):
             q1 = rem(s1 * (aim - tt), tp)
             q1 = q1 + tp if q1 < lo1 else (q1 - tp if q1 > hi1 else q1)
@@ -141,7 +151,6 @@ def _planar_two(model: ArmModel, fam: PlanarFamily) -> FastSolver:
             q2 = q2 + tp if q2 < lo2 else (q2 - tp if q2 > hi2 else q2)
             if lo1 <= q1 <= hi1 and lo2 <= q2 <= hi2:
                 found.append(((q1 - seed[0]) ** 2 + (q2 - seed[1]) ** 2, (q1, q2)))
-        found.sort()
-        return [q for _, q in found]
+        return (min(found)[1], found) if found else None
 
     return solve

@@ -58,7 +58,12 @@ def ik(
         UnreachableError: no solution inside the limits (``reason`` says why).
         ValueError: malformed input, naming the argument.
     """
-    x, y, z = _point(position)
+    if isinstance(position, tuple) and len(position) == 3:  # the common case, without a call
+        x, y, z = float(position[0]), float(position[1]), float(position[2])
+        if not (math.isfinite(x) and math.isfinite(y) and math.isfinite(z)):
+            raise ValueError(f"position must be finite, got {(x, y, z)}")
+    else:
+        x, y, z = _point(position)
     cache = model._cache
     seed = cache.get("home") or _seed(model, None) if q_seed is None else _seed(model, q_seed)
     if pitch is not None:
@@ -67,9 +72,9 @@ def ik(
         pitch = model.default_pitch
     if orientation is None and (method == "auto" or method == "analytic"):
         fast = cache["fast"] if "fast" in cache else fast_solver(model)
-        sols = fast(x, y, z, pitch, seed) if fast is not None else None
-        if sols:
-            return IKResult.closed_form(sols, (model, (x, y, z), pitch))
+        found = fast(x, y, z, pitch, seed) if fast is not None else None
+        if found is not None:
+            return IKResult.closed_form(found[0], found[1], (model, (x, y, z), pitch))
     p = (x, y, z)
     fam = family_of(model)
     use = _choose(model, fam, method, orientation)
@@ -104,7 +109,7 @@ def _closed_form(
     seed: tuple[float, ...],
 ) -> IKResult:
     sols = _analytic.solve(model, fam, p, pitch, seed)
-    return IKResult.closed_form(sols, (model, p, pitch))
+    return IKResult.closed_form(sols[0], list(enumerate(sols)), (model, p, pitch))  # type: ignore[arg-type]
 
 
 def measure_error(

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -65,7 +66,10 @@ class IKResult:
     def solutions(self) -> F64:
         """Every solution [rad], best first, shape (k, dof)."""
         if not isinstance(self._solutions, np.ndarray):
-            self._solutions = np.array(self._solutions, dtype=np.float64)
+            sols: Any = self._solutions
+            if isinstance(self, _ClosedForm):  # (distance, solution) pairs: best first
+                sols = [q for _, q in sorted(sols, key=lambda pair: pair[0])]
+            self._solutions = np.array(sols, dtype=np.float64)
         return self._solutions
 
     @property
@@ -83,17 +87,31 @@ class IKResult:
             self._errors = _measure(self._check, self.q)
         return self._errors
 
-    @classmethod
-    def closed_form(cls, solutions: list[tuple[float, ...]], check: Checker) -> IKResult:
-        """A closed-form result: every solution, best first; errors measured on demand."""
-        self = cls.__new__(cls)
-        self._q, self._solutions, self.method = solutions[0], solutions, "analytic"
-        self.iterations, self.restarts, self._errors, self._check = 0, 0, None, check
+    @staticmethod
+    def closed_form(
+        best: tuple[float, ...], ranked: list[tuple[float, tuple[float, ...]]], check: Checker
+    ) -> IKResult:
+        """A closed-form result from (distance, solution) pairs in any order; they are
+        sorted, and the errors measured, only when read."""
+        self = _new_closed()
+        self._q, self._solutions, self._errors, self._check = best, ranked, None, check
         return self
 
     def __repr__(self) -> str:
         q = np.round(np.degrees(self.q), 3).tolist()
         return f"IKResult(q_deg={q}, solutions={len(self.solutions)}, method={self.method!r})"
+
+
+class _ClosedForm(IKResult):
+    """A closed-form IKResult: method, iterations and restarts are fixed for the class."""
+
+    __slots__ = ()
+    method = "analytic"  # type: ignore[assignment]
+    iterations = 0  # type: ignore[assignment]
+    restarts = 0  # type: ignore[assignment]
+
+
+_new_closed = partial(object.__new__, _ClosedForm)
 
 
 def _measure(check: Checker | None, q: F64) -> tuple[float, float]:

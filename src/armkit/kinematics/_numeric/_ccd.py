@@ -20,7 +20,7 @@ from ._residual import Task, residual
 from ._sampling import clamp_to_limits
 from ._scalar_chain import ChainState, Vec3, chain_state, scalar_chain
 
-MAX_SWEEPS = 400
+MAX_SWEEPS = 200
 
 
 def solve_ccd(

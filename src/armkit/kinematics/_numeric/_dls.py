@@ -11,9 +11,11 @@ import math
 from collections.abc import Sequence
 from operator import mul
 
+import numpy as np
+
 
 def dls_step(
-    cols: list[tuple[float, ...]], e: list[float], lam: float, free: list[bool]
+    cols: list[tuple[float, ...]], e: list[float], lam: float, free: list[bool] | None
 ) -> list[float]:
     """Damped least-squares joint step.
 
@@ -21,12 +23,12 @@ def dls_step(
         cols: task Jacobian J by columns: per joint, m floats [task unit / rad].
         e: task error, m floats [task unit].
         lam: damping, > 0 [task unit^2].
-        free: per joint, False to keep it still.
+        free: per joint, False to keep it still; None: all free.
 
     Returns:
         dq: joint step [rad], one float per joint (0.0 for frozen joints).
     """
-    if all(free):
+    if free is None or all(free):
         return _step(cols, e, lam)
     idx = [i for i, f in enumerate(free) if f]
     dq = [0.0] * len(free)
@@ -43,10 +45,26 @@ def _step(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[flo
         return _step3(cols, e, lam)
     if m == 4 and n >= 4:
         return _step4(cols, e, lam)
+    if max(m, n) >= 5 and min(m, n) >= 5:
+        return _step_numpy(cols, e, lam)
     if m <= n:
         y = cholesky_solve(_gram([list(r) for r in zip(*cols, strict=True)], lam), e)
         return [sum(map(mul, col, y)) for col in cols]
     return cholesky_solve(_gram(cols, lam), [sum(map(mul, c, e)) for c in cols])
+
+
+def _step_numpy(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[float]:
+    """The damped step by numpy, cheaper than plain floats from about 5 x 5 on."""
+    Jt = np.array(cols)  # (n, m)
+    if Jt.shape[1] <= Jt.shape[0]:
+        A = Jt.T @ Jt
+        A.flat[:: A.shape[0] + 1] += lam
+        step: list[float] = (Jt @ np.linalg.solve(A, np.array(e))).tolist()
+        return step
+    A = Jt @ Jt.T
+    A.flat[:: A.shape[0] + 1] += lam
+    step = np.linalg.solve(A, Jt @ np.array(e)).tolist()
+    return step
 
 
 def _step3(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[float]:
@@ -77,13 +95,9 @@ def _step4(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[fl
         s22 += z * z
         s23 += z * w
         s33 += w * w
-    A = (
-        (s00 + lam, s01, s02, s03),
-        (s01, s11 + lam, s12, s13),
-        (s02, s12, s22 + lam, s23),
-        (s03, s13, s23, s33 + lam),
+    y0, y1, y2, y3 = _solve4(
+        (s00 + lam, s01, s02, s03, s11 + lam, s12, s13, s22 + lam, s23, s33 + lam), e
     )
-    y0, y1, y2, y3 = cholesky_solve(A, e)
     return [x * y0 + y * y1 + z * y2 + w * y3 for x, y, z, w in cols]
 
 
@@ -124,6 +138,28 @@ def cholesky_solve(A: Sequence[Sequence[float]], b: Sequence[float]) -> list[flo
             y[i] -= L[t][i] * y[t]
         y[i] /= L[i][i]
     return y
+
+
+def _solve4(u: tuple[float, ...], b: Sequence[float]) -> tuple[float, float, float, float]:
+    """x with A x = b for a symmetric positive definite 4 x 4 A given by its upper
+    triangle u = (a00, a01, a02, a03, a11, a12, a13, a22, a23, a33): Cholesky, unrolled."""
+    a00, a01, a02, a03, a11, a12, a13, a22, a23, a33 = u
+    l00 = math.sqrt(max(a00, 1e-300))
+    l10, l20, l30 = a01 / l00, a02 / l00, a03 / l00
+    l11 = math.sqrt(max(a11 - l10 * l10, 1e-300))
+    l21, l31 = (a12 - l20 * l10) / l11, (a13 - l30 * l10) / l11
+    l22 = math.sqrt(max(a22 - l20 * l20 - l21 * l21, 1e-300))
+    l32 = (a23 - l30 * l20 - l31 * l21) / l22
+    l33 = math.sqrt(max(a33 - l30 * l30 - l31 * l31 - l32 * l32, 1e-300))
+    y0 = b[0] / l00
+    y1 = (b[1] - l10 * y0) / l11
+    y2 = (b[2] - l20 * y0 - l21 * y1) / l22
+    y3 = (b[3] - l30 * y0 - l31 * y1 - l32 * y2) / l33
+    x3 = y3 / l33
+    x2 = (y2 - l32 * x3) / l22
+    x1 = (y1 - l21 * x2 - l31 * x3) / l11
+    x0 = (y0 - l10 * x1 - l20 * x2 - l30 * x3) / l00
+    return x0, x1, x2, x3
 
 
 def _solve3(A: Sequence[Sequence[float]], b: Sequence[float]) -> list[float]:

@@ -29,12 +29,11 @@ def solve_jacobian(
     hi = [j.upper for j in model.joints]
     q = clamp_to_limits(model, q_seed)
     res = residual(task, chain_state(sc, q))
-    free = [True] * len(q)
     for it in range(MAX_ITERATIONS):
         if within(res, tol_pos, tol_ang):
             return Attempt(q, res, it, 0, True)
         assert res.cols is not None
-        dq = dls_step(res.cols, res.e, EPS, free)
+        dq = dls_step(res.cols, res.e, EPS, None)
         big = max(abs(v) for v in dq)
         k = MAX_STEP / big if big > MAX_STEP else 1.0
         q = [min(max(v + k * d, a), b) for v, d, a, b in zip(q, dq, lo, hi, strict=True)]

@@ -2,34 +2,41 @@
 
 The same method as ``_lm`` (damped step with outward-pushing joints at a limit
 frozen, clamping, lam = mu |e|^2 with Marquardt's mu, seeded restarts inside
-the limits) on arrays of shape (k, ...): converged targets drop out, stalled
-ones restart from random joint vectors in the same loop. When only a handful
-remain, numpy's per-call overhead would dominate, so the scalar solver of
-``_lm`` finishes them from where they are.
+the limits) on arrays of runs: one run per target to begin with, from its
+seed. A target is done when any of its runs converges, and its runs drop
+out; a stalled run restarts from a new point inside the limits. Once few
+targets remain, each gets several runs side by side: numpy's per-call cost
+does not grow with a few more rows, so parallel restarts are nearly free.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ...model import ArmModel
-from .._jacobian import jacobian_and_pose
-from ._lm import CANDIDATES, DEFAULT_SETTINGS, LMSettings, solve_lm
-from ._residual import Task, reach_bound
-from ._residual_batch import BatchResidual, BatchTask, residual_batch
+from .._fk import fk
+from ._batch_chain import jacobian_and_pose_lean
+from ._lm import CANDIDATES, LMSettings
+from ._residual import reach_bound
+from ._residual_batch import BatchResidual, BatchTask, residual_batch, task_cost
 
 F64 = NDArray[np.float64]
 IDX = NDArray[np.intp]
-TAIL = 12  # below this many active targets, the scalar solver takes over
+# Shorter runs than the scalar solver's (a restart is cheap here), and a larger
+# restart budget, since parallel runs spend it several at a time.
+BATCH_SETTINGS = LMSettings(run_iterations=15, stall_iterations=3, max_restarts=240)
+FEW_ROWS = 256  # once fewer runs than this are left, add parallel runs up to it
+MAX_RUNS = 32  # parallel runs per target at most
 
 
 @dataclass
-class _State:
-    """Per-target solver state, arrays of length N (J: (N, m, dof))."""
+class _Runs:
+    """One row per LM run: its target (owner), q (r, dof), residual, damping, progress."""
 
+    owner: IDX
     q: F64
     e: F64
     J: F64
@@ -39,11 +46,20 @@ class _State:
     mu: F64
     best: F64
     since: NDArray[np.int64]
-    run_its: NDArray[np.int64]
-    iterations: NDArray[np.int64]
-    restarts: NDArray[np.int64]
-    max_restarts: NDArray[np.int64]
-    active: NDArray[np.bool_]
+    its: NDArray[np.int64]
+
+    def keep(self, mask: NDArray[np.bool_]) -> _Runs:
+        """The runs where ``mask`` is True."""
+        return _Runs(**{f.name: getattr(self, f.name)[mask] for f in fields(self)})
+
+    def join(self, other: _Runs) -> _Runs:
+        """These runs followed by ``other``."""
+        return _Runs(
+            **{
+                f.name: np.concatenate([getattr(self, f.name), getattr(other, f.name)])
+                for f in fields(self)
+            }
+        )
 
 
 @dataclass(frozen=True)
@@ -60,145 +76,157 @@ def solve_lm_batch(
     model: ArmModel, task: BatchTask, q0: F64, tol_pos: float, tol_ang: float, rng_seed: int
 ) -> BatchOutcome:
     """LM on N targets from seeds q0 [rad], shape (N, dof) (clamped into the limits)."""
-    settings = DEFAULT_SETTINGS
-    lo, hi = model.lower, model.upper
-    s = _initial(model, task, np.clip(q0, lo, hi), settings)
+    st, n = BATCH_SETTINGS, len(task.P)
     rng = np.random.default_rng(rng_seed)
-    for _ in range(settings.run_iterations * (settings.max_restarts + 1)):
-        s.active &= ~((s.pos <= tol_pos) & (s.ang <= tol_ang))
-        idx = np.flatnonzero(s.active)
-        if idx.size <= TAIL:
+    out = BatchOutcome(q0.copy(), np.zeros(n, bool), np.zeros(n, np.int64), np.zeros(n, np.int64))
+    far = np.linalg.norm(task.P, axis=1) > reach_bound(model)
+    budget = np.where(far, 0, st.max_restarts)
+    q = np.clip(q0, model.lower, model.upper)
+    runs = _new_runs(np.arange(n), q, _evaluate(model, task, q), st)
+    while runs.owner.size:
+        conv = (runs.pos <= tol_pos) & (runs.ang <= tol_ang)
+        out.converged[runs.owner[conv]] = True
+        out.q[runs.owner[conv]] = runs.q[conv]
+        if conv.any():
+            runs = runs.keep(~out.converged[runs.owner])
+        if not runs.owner.size:
             break
-        _iterate(model, task.take(idx), s, idx, settings)
-        _restart_stalled(model, task, s, idx, rng, settings)
-    _finish_tail(model, task, s, tol_pos, tol_ang, rng_seed)
-    converged = (s.pos <= tol_pos) & (s.ang <= tol_ang)
-    return BatchOutcome(s.q, converged, s.iterations, s.restarts)
+        out.iterations[:] += np.bincount(runs.owner, minlength=n) > 0
+        _iterate(model, task.take(runs.owner), runs, st)
+        runs = _respawn(model, task, runs, out, budget, rng, st)
+    return out
 
 
 def _evaluate(model: ArmModel, task: BatchTask, q: F64) -> BatchResidual:
-    J, T = jacobian_and_pose(model, q)
+    J, T = jacobian_and_pose_lean(model, q)
     return residual_batch(task, J, T)
 
 
-def _initial(model: ArmModel, task: BatchTask, q: F64, settings: LMSettings) -> _State:
-    r = _evaluate(model, task, q)
-    n = len(q)
-    zeros = np.zeros(n, dtype=np.int64)
-    far = np.linalg.norm(task.P, axis=1) > reach_bound(model)
-    return _State(
-        q=q, e=r.e, J=r.J, cost=r.cost, pos=r.position_error, ang=r.angle_error,
-        mu=np.full(n, settings.mu), best=r.cost, since=zeros.copy(), run_its=zeros.copy(),
-        iterations=zeros.copy(), restarts=zeros.copy(),
-        max_restarts=np.where(far, 0, settings.max_restarts), active=np.ones(n, dtype=bool),
+def _new_runs(owner: IDX, q: F64, r: BatchResidual, st: LMSettings) -> _Runs:
+    k = len(owner)
+    zeros = np.zeros(k, dtype=np.int64)
+    return _Runs(
+        owner, q, r.e, r.J, r.cost, r.position_error, r.angle_error,
+        np.full(k, st.mu), r.cost.copy(), zeros, zeros.copy(),
     )  # fmt: skip
 
 
 def damped_steps(J: F64, e: F64, lam: F64, free: NDArray[np.bool_] | None = None) -> F64:
     """Damped least-squares steps dq [rad], shape (k, dof), for J (k, m, dof), e (k, m).
 
-    Joints where ``free`` (k, dof) is False get no motion.
+    Joints where ``free`` (k, dof) is False get no motion. The small m x m (or
+    dof x dof) systems are formed and factored entry by entry, each entry a
+    contiguous array over the k targets: far fewer, cheaper numpy calls than
+    batched matmul and ``np.linalg.solve`` on thousands of 4 x 4 matrices.
     """
     if free is not None:
         J = J * free[:, None, :]
-    m, n = J.shape[1], J.shape[2]
-    Jt = J.transpose(0, 2, 1)
-    if m == 3 and n >= 3:
-        A = J @ Jt
-        A[:, [0, 1, 2], [0, 1, 2]] += lam[:, None]
-        return np.einsum("kjm,km->kj", Jt, solve3(A, e))
-    if m <= n:
-        A = J @ Jt + lam[:, None, None] * np.eye(m)
-        return np.asarray((Jt @ np.linalg.solve(A, e[:, :, None]))[:, :, 0], dtype=np.float64)
-    A = Jt @ J + lam[:, None, None] * np.eye(n)
-    return np.asarray(np.linalg.solve(A, (Jt @ e[:, :, None]))[:, :, 0], dtype=np.float64)
+    Jc = np.ascontiguousarray(J.transpose(1, 2, 0))  # (m, dof, k)
+    ec = np.ascontiguousarray(e.T)  # (m, k)
+    m, n = Jc.shape[0], Jc.shape[1]
+    if m <= n:  # dq = J^T (J J^T + lam I)^-1 e
+        gram = [[(Jc[r] * Jc[c]).sum(axis=0) for c in range(r + 1)] for r in range(m)]
+        y = np.stack(cholesky_solve_lanes(gram, list(ec), lam))
+        return np.asarray((Jc * y[:, None, :]).sum(axis=0).T, dtype=np.float64)
+    Jn = Jc.transpose(1, 0, 2)  # (dof, m, k): dq = (J^T J + lam I)^-1 J^T e
+    gram = [[(Jn[r] * Jn[c]).sum(axis=0) for c in range(r + 1)] for r in range(n)]
+    rhs = [(Jn[i] * ec).sum(axis=0) for i in range(n)]
+    return np.asarray(np.stack(cholesky_solve_lanes(gram, rhs, lam)).T, dtype=np.float64)
 
 
-def solve3(A: F64, b: F64) -> F64:
-    """x with A x = b for k symmetric 3 x 3 matrices A (k, 3, 3), b (k, 3), by the adjugate."""
-    a, d, f = A[:, 0, 0], A[:, 0, 1], A[:, 0, 2]
-    c, g, h = A[:, 1, 1], A[:, 1, 2], A[:, 2, 2]
-    i00, i01, i02 = c * h - g * g, f * g - d * h, d * g - c * f
-    i11, i12, i22 = a * h - f * f, d * f - a * g, a * c - d * d
-    det = np.maximum(a * i00 + d * i01 + f * i02, 1e-300)
-    b0, b1, b2 = b[:, 0], b[:, 1], b[:, 2]
-    x = np.stack(
-        [
-            i00 * b0 + i01 * b1 + i02 * b2,
-            i01 * b0 + i11 * b1 + i12 * b2,
-            i02 * b0 + i12 * b1 + i22 * b2,
-        ],
-        axis=1,
-    )
-    return np.asarray(x / det[:, None], dtype=np.float64)
+def cholesky_solve_lanes(gram: list[list[F64]], b: list[F64], lam: F64) -> list[F64]:
+    """x with (A + lam I) x = b in every lane: A's lower triangle ``gram[r][c]`` (c <= r)
+    and b are lists of arrays of shape (k,), one lane per target."""
+    size = len(b)
+    L: list[list[F64]] = [[] for _ in range(size)]
+    for i in range(size):
+        for j in range(i + 1):
+            s = gram[i][j] + lam if i == j else gram[i][j].copy()
+            for t in range(j):
+                s -= L[i][t] * L[j][t]
+            L[i].append(np.sqrt(np.maximum(s, 1e-300)) if i == j else s / L[j][j])
+    y: list[F64] = []
+    for i in range(size):
+        s = b[i].copy()
+        for t in range(i):
+            s -= L[i][t] * y[t]
+        y.append(s / L[i][i])
+    for i in reversed(range(size)):
+        for t in range(i + 1, size):
+            y[i] = y[i] - L[t][i] * y[t]
+        y[i] = y[i] / L[i][i]
+    return y
 
 
-def _iterate(model: ArmModel, task: BatchTask, s: _State, idx: IDX, st: LMSettings) -> None:
-    """One damped step for the targets idx; accept where the cost fell."""
+def _iterate(model: ArmModel, task: BatchTask, s: _Runs, st: LMSettings) -> None:
+    """One damped step for every run (in place); accepted where the cost fell."""
     lo, hi = model.lower, model.upper
-    q, J, e = s.q[idx], s.J[idx], s.e[idx]
-    lam = s.mu[idx] * s.cost[idx] + 1e-12
-    dq = damped_steps(J, e, lam)
-    frozen = ((q <= lo) & (dq < 0.0)) | ((q >= hi) & (dq > 0.0))
+    lam = s.mu * s.cost + 1e-12
+    dq = damped_steps(s.J, s.e, lam)
+    frozen = ((s.q <= lo) & (dq < 0.0)) | ((s.q >= hi) & (dq > 0.0))
     rows = np.flatnonzero(frozen.any(axis=1))
     if rows.size:
-        dq[rows] = damped_steps(J[rows], e[rows], lam[rows], ~frozen[rows])
+        dq[rows] = damped_steps(s.J[rows], s.e[rows], lam[rows], ~frozen[rows])
     big = np.abs(dq).max(axis=1)
     dq *= np.minimum(1.0, st.max_step / np.maximum(big, 1e-300))[:, None]
-    trial = np.clip(q + dq, lo, hi)
+    trial = np.clip(s.q + dq, lo, hi)
     r = _evaluate(model, task, trial)
-    acc = r.cost < s.cost[idx]
-    a = idx[acc]
-    s.q[a], s.e[a], s.J[a], s.cost[a] = trial[acc], r.e[acc], r.J[acc], r.cost[acc]
-    s.pos[a], s.ang[a] = r.position_error[acc], r.angle_error[acc]
-    s.mu[idx] = np.where(acc, np.maximum(s.mu[idx] * st.mu_down, 1e-4), s.mu[idx] * st.mu_up)
-    better = s.cost[idx] < 0.95 * s.best[idx]
-    s.since[idx] = np.where(better, 0, s.since[idx] + 1)
-    s.best[idx] = np.minimum(s.best[idx], s.cost[idx])
-    s.iterations[idx] += 1
-    s.run_its[idx] += 1
+    acc = r.cost < s.cost
+    s.q[acc], s.e[acc], s.J[acc], s.cost[acc] = trial[acc], r.e[acc], r.J[acc], r.cost[acc]
+    s.pos[acc], s.ang[acc] = r.position_error[acc], r.angle_error[acc]
+    s.mu[:] = np.where(acc, np.maximum(s.mu * st.mu_down, 1e-4), s.mu * st.mu_up)
+    better = s.cost < 0.95 * s.best
+    s.since[:] = np.where(better, 0, s.since + 1)
+    np.minimum(s.best, s.cost, out=s.best)
+    s.its += 1
 
 
-def _restart_stalled(
-    model: ArmModel, task: BatchTask, s: _State, idx: IDX, rng: np.random.Generator, st: LMSettings
-) -> None:
-    """Restart stalled targets from random q inside the limits; give up when out of restarts."""
-    stalled = idx[(s.since[idx] >= st.stall_iterations) | (s.run_its[idx] >= st.run_iterations)]
-    spent = stalled[s.restarts[stalled] >= s.max_restarts[stalled]]
-    s.active[spent] = False
-    go = stalled[s.restarts[stalled] < s.max_restarts[stalled]]
-    if go.size == 0:
-        return
-    q, r = _best_of_samples(model, task.take(go), rng)
-    s.q[go], s.e[go], s.J[go], s.cost[go] = q, r.e, r.J, r.cost
-    s.pos[go], s.ang[go] = r.position_error, r.angle_error
-    s.mu[go], s.best[go], s.since[go], s.run_its[go] = st.mu, s.cost[go], 0, 0
-    s.restarts[go] += 1
+def _respawn(
+    model: ArmModel,
+    task: BatchTask,
+    runs: _Runs,
+    out: BatchOutcome,
+    budget: NDArray[np.int64],
+    rng: np.random.Generator,
+    st: LMSettings,
+) -> _Runs:
+    """Drop stalled runs; restart their targets (while restarts last), with extra
+    parallel runs once few runs are left."""
+    stalled = (runs.since >= st.stall_iterations) | (runs.its >= st.run_iterations)
+    if not stalled.any() and runs.owner.size >= FEW_ROWS:
+        return runs
+    waiting = runs.owner[stalled]
+    runs = runs.keep(~stalled)
+    live = np.bincount(runs.owner, minlength=len(out.q))
+    owners = _restart_owners(waiting, live, budget - out.restarts)
+    if owners.size == 0:
+        return runs
+    np.add.at(out.restarts, owners, 1)
+    q, r = _restart_points(model, task.take(owners), out.restarts[owners], rng)
+    return runs.join(_new_runs(owners, q, r, st))
 
 
-def _best_of_samples(
-    model: ArmModel, task: BatchTask, rng: np.random.Generator
+def _restart_owners(waiting: IDX, live: NDArray[np.int64], left: NDArray[np.int64]) -> IDX:
+    """Targets to start new runs for: each stalled run's target, and while fewer than
+    FEW_ROWS runs exist, more runs for every unfinished target (up to MAX_RUNS each)."""
+    want = np.bincount(waiting, minlength=len(live))
+    unfinished = np.flatnonzero((live + want) > 0)
+    total = live.sum() + want.sum()
+    if unfinished.size and total < FEW_ROWS:
+        per = min(MAX_RUNS, FEW_ROWS // unfinished.size)
+        want[unfinished] = np.maximum(want[unfinished], per - live[unfinished])
+    want = np.minimum(want, np.maximum(left, 0))
+    return np.repeat(np.arange(len(live)), want)
+
+
+def _restart_points(
+    model: ArmModel, task: BatchTask, restarts: NDArray[np.int64], rng: np.random.Generator
 ) -> tuple[F64, BatchResidual]:
-    """Per target, the lowest-cost of CANDIDATES random joint vectors inside the limits."""
+    """Per run, where it begins (as ``_lm._restart_point``): the lowest-cost of CANDIDATES
+    random joint vectors for an odd restart count, else one uniform sample."""
     k, c = len(task.P), CANDIDATES
-    q = rng.uniform(model.lower, model.upper, size=(k * c, model.dof))
-    r = _evaluate(model, task.take(np.repeat(np.arange(k), c)), q)
-    pick = np.arange(k) * c + r.cost.reshape(k, c).argmin(axis=1)
-    best = BatchResidual(r.e[pick], r.J[pick], r.position_error[pick], r.angle_error[pick])
-    return q[pick], best
-
-
-def _finish_tail(
-    model: ArmModel, task: BatchTask, s: _State, tol_pos: float, tol_ang: float, rng_seed: int
-) -> None:
-    """The scalar solver continues each target still active."""
-    for i in np.flatnonzero(s.active):
-        R = None if task.R is None else tuple(float(v) for v in task.R[i].ravel())
-        pitch = None if task.pitch is None else float(task.pitch[i])
-        one = Task(tuple(float(v) for v in task.P[i]), pitch, R, task.weight)  # type: ignore[arg-type]
-        out = solve_lm(model, one, s.q[i].tolist(), tol_pos, tol_ang, rng_seed + 1 + int(i))
-        s.q[i] = out.q
-        s.pos[i], s.ang[i] = out.residual.position_error, out.residual.angle_error
-        s.iterations[i] += out.iterations
-        s.restarts[i] += out.restarts
-        s.active[i] = False
+    q = rng.uniform(model.lower, model.upper, size=(k, c, model.dof))
+    cost = task_cost(task.take(np.repeat(np.arange(k), c)), fk(model, q.reshape(k * c, -1)))
+    pick = np.where(restarts % 2 == 1, cost.reshape(k, c).argmin(axis=1), 0)
+    start = q[np.arange(k), pick]
+    return start, _evaluate(model, task, start)

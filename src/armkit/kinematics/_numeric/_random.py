@@ -17,7 +17,7 @@ from ._residual import Task, reach_bound, residual
 from ._sampling import clamp_to_limits
 from ._scalar_chain import chain_state, scalar_chain
 
-MAX_TRIES = 4000
+MAX_TRIES = 2000
 MAX_SIGMA = 0.1  # [rad]
 
 

@@ -39,11 +39,6 @@ class Task:
     R: tuple[float, ...] | None
     weight: float
 
-    @property
-    def rows(self) -> int:
-        """Number of residual rows: 3, 4 or 6."""
-        return 3 if self.pitch is None and self.R is None else (4 if self.R is None else 6)
-
 
 @dataclass(frozen=True, slots=True)
 class Residual:

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from .._pose import pitch_of
 from ._residual import rotation_log
 
 F64 = NDArray[np.float64]
@@ -73,6 +74,21 @@ def residual_batch(task: BatchTask, J: F64, T: F64) -> BatchResidual:
     return BatchResidual(e_pos, J[:, :3], pos, np.zeros_like(pos))
 
 
+def task_cost(task: BatchTask, T: F64) -> F64:
+    """|e|^2 per pose T (k, 4, 4) [m^2], without the Jacobian (to rank candidates)."""
+    d = task.P - T[:, :3, 3]
+    cost = np.einsum("ki,ki->k", d, d)
+    w2 = task.weight * task.weight
+    if task.pitch is not None:
+        a = np.remainder(task.pitch - pitch_of(T) + np.pi, 2.0 * np.pi) - np.pi
+        cost += w2 * a * a
+    elif task.R is not None:
+        E = np.einsum("kij,kjl->kil", task.R, T[:, :3, :3].transpose(0, 2, 1))
+        c = np.clip(0.5 * (np.trace(E, axis1=1, axis2=2) - 1.0), -1.0, 1.0)
+        cost += w2 * np.arccos(c) ** 2
+    return np.asarray(cost, dtype=np.float64)
+
+
 def _pitch_and_gradient(J: F64, T: F64) -> tuple[F64, F64]:
     """Pitch [rad], shape (k,), and d pitch / dq, shape (k, dof) (see ``pitch_gradient``)."""
     a, p = T[:, :3, 0], T[:, :3, 3]
@@ -80,12 +96,11 @@ def _pitch_and_gradient(J: F64, T: F64) -> tuple[F64, F64]:
     rho = np.maximum(np.hypot(px, py), 1e-9)
     h = (ax * px + ay * py) / rho
     Jv, Jw = J[:, :3], J[:, 3:]
-    da = np.cross(Jw, a[:, :, None], axisa=1, axisb=1, axisc=1)
+    wx, wy, wz = Jw[:, 0], Jw[:, 1], Jw[:, 2]
+    dax, day, daz = wy * az - wz * ay, wz * ax - wx * az, wx * ay - wy * ax  # w x a
     vx, vy = Jv[:, 0], Jv[:, 1]
-    dh = (da[:, 0] * px + ax * vx + da[:, 1] * py + ay * vy) / rho - h * (px * vx + py * vy) / (
-        rho * rho
-    )
-    grad = (h * da[:, 2] - az * dh) / np.maximum(az * az + h * h, 1e-300)
+    dh = (dax * px + ax * vx + day * py + ay * vy) / rho - h * (px * vx + py * vy) / (rho * rho)
+    grad = (h * daz - az * dh) / np.maximum(az * az + h * h, 1e-300)
     on_axis = np.hypot(p[:, 0], p[:, 1]) < 1e-9
     h_pitch = np.where(on_axis, np.hypot(a[:, 0], a[:, 1]), h[:, 0])
     return np.arctan2(a[:, 2], h_pitch), grad

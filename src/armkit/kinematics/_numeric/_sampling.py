@@ -4,9 +4,6 @@ from __future__ import annotations
 
 import random
 
-import numpy as np
-from numpy.typing import NDArray
-
 from ...model import ArmModel
 
 
@@ -26,11 +23,6 @@ class JointSampler:
         """One joint vector [rad], dof floats, each inside its joint's limits."""
         uniform = self._random.uniform
         return [uniform(lo, hi) for lo, hi in self._bounds]
-
-
-def sample_joints(model: ArmModel, rng: np.random.Generator, n: int) -> NDArray[np.float64]:
-    """n joint vectors uniform inside the limits [rad], shape (n, dof)."""
-    return rng.uniform(model.lower, model.upper, size=(n, model.dof))
 
 
 def clamp_to_limits(model: ArmModel, q: list[float]) -> list[float]:

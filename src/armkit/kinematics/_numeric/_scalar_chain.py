@@ -82,39 +82,76 @@ def _frames(
     sc: ScalarChain, q: list[float]
 ) -> tuple[list[Vec3], list[Vec3], tuple[Vec3, Vec3, Vec3], Vec3]:
     """Signed joint axes, points on them, tool rotation columns and tool point."""
+    if sc.modified:
+        axes, origins, a, b, c, p = _modified_frames(sc.rows, q)
+    else:
+        axes, origins, a, b, c, p = _standard_frames(sc.rows, q)
+    return axes, origins, *_tool(sc, a, b, c, p)
+
+
+Frames = tuple[list[Vec3], list[Vec3], Vec3, Vec3, Vec3, Vec3]
+
+
+def _modified_frames(rows: tuple[Row, ...], q: list[float]) -> Frames:
+    """Right-multiply by Rx(alpha) Tx(a) Rz(theta) Tz(d) per row; zero terms skipped."""
     ax, ay, az, bx, by, bz, cx, cy, cz = 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0
     px = py = pz = 0.0
     axes: list[Vec3] = []
     origins: list[Vec3] = []
-    modified = sc.modified
-    for (a, d, ca, sa, off, sign), qi in zip(sc.rows, q, strict=True):
-        th = sign * qi + off
-        c, s = math.cos(th), math.sin(th)
-        if modified:
+    for (a, d, ca, sa, off, sign), qi in zip(rows, q, strict=True):
+        if a:
             px, py, pz = px + a * ax, py + a * ay, pz + a * az
+        if ca == 0.0:
+            bx, by, bz, cx, cy, cz = sa * cx, sa * cy, sa * cz, -sa * bx, -sa * by, -sa * bz
+        elif sa:
             bx, by, bz, cx, cy, cz = (
                 ca * bx + sa * cx, ca * by + sa * cy, ca * bz + sa * cz,
                 ca * cx - sa * bx, ca * cy - sa * by, ca * cz - sa * bz,
             )  # fmt: skip
-            ax, ay, az, bx, by, bz = (
-                c * ax + s * bx, c * ay + s * by, c * az + s * bz,
-                c * bx - s * ax, c * by - s * ay, c * bz - s * az,
-            )  # fmt: skip
+        elif ca < 0.0:
+            bx, by, bz, cx, cy, cz = -bx, -by, -bz, -cx, -cy, -cz
+        th = sign * qi + off
+        c, s = math.cos(th), math.sin(th)
+        ax, ay, az, bx, by, bz = (
+            c * ax + s * bx, c * ay + s * by, c * az + s * bz,
+            c * bx - s * ax, c * by - s * ay, c * bz - s * az,
+        )  # fmt: skip
+        if d:
             px, py, pz = px + d * cx, py + d * cy, pz + d * cz
-            axes.append((sign * cx, sign * cy, sign * cz))
-            origins.append((px, py, pz))
-        else:
-            axes.append((sign * cx, sign * cy, sign * cz))
-            origins.append((px, py, pz))
-            xx, xy, xz = c * ax + s * bx, c * ay + s * by, c * az + s * bz
-            yx, yy, yz = c * bx - s * ax, c * by - s * ay, c * bz - s * az
-            px, py, pz = px + d * cx + a * xx, py + d * cy + a * xy, pz + d * cz + a * xz
-            ax, ay, az = xx, xy, xz
+        axes.append((cx, cy, cz) if sign > 0.0 else (-cx, -cy, -cz))
+        origins.append((px, py, pz))
+    return axes, origins, (ax, ay, az), (bx, by, bz), (cx, cy, cz), (px, py, pz)
+
+
+def _standard_frames(rows: tuple[Row, ...], q: list[float]) -> Frames:
+    """Right-multiply by Rz(theta) Tz(d) Tx(a) Rx(alpha) per row; zero terms skipped."""
+    ax, ay, az, bx, by, bz, cx, cy, cz = 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0
+    px = py = pz = 0.0
+    axes: list[Vec3] = []
+    origins: list[Vec3] = []
+    for (a, d, ca, sa, off, sign), qi in zip(rows, q, strict=True):
+        axes.append((cx, cy, cz) if sign > 0.0 else (-cx, -cy, -cz))
+        origins.append((px, py, pz))
+        th = sign * qi + off
+        c, s = math.cos(th), math.sin(th)
+        ax, ay, az, bx, by, bz = (
+            c * ax + s * bx, c * ay + s * by, c * az + s * bz,
+            c * bx - s * ax, c * by - s * ay, c * bz - s * az,
+        )  # fmt: skip
+        if d:
+            px, py, pz = px + d * cx, py + d * cy, pz + d * cz
+        if a:
+            px, py, pz = px + a * ax, py + a * ay, pz + a * az
+        if ca == 0.0:
+            bx, by, bz, cx, cy, cz = sa * cx, sa * cy, sa * cz, -sa * bx, -sa * by, -sa * bz
+        elif sa:
             bx, by, bz, cx, cy, cz = (
-                ca * yx + sa * cx, ca * yy + sa * cy, ca * yz + sa * cz,
-                ca * cx - sa * yx, ca * cy - sa * yy, ca * cz - sa * yz,
+                ca * bx + sa * cx, ca * by + sa * cy, ca * bz + sa * cz,
+                ca * cx - sa * bx, ca * cy - sa * by, ca * cz - sa * bz,
             )  # fmt: skip
-    return axes, origins, *_tool(sc, (ax, ay, az), (bx, by, bz), (cx, cy, cz), (px, py, pz))
+        elif ca < 0.0:
+            bx, by, bz, cx, cy, cz = -bx, -by, -bz, -cx, -cy, -cz
+    return axes, origins, (ax, ay, az), (bx, by, bz), (cx, cy, cz), (px, py, pz)
 
 
 def _tool(
