@@ -22,9 +22,21 @@ class _Opener(Protocol):
 DRIVERS: dict[str, tuple[str, str, str]] = {
     "sim": ("armkit.sim", "open_sim_driver", "simulated arm (no hardware), any model"),
     "owi535": ("armkit.drivers.timed", "open_driver", "OWI-535 over USB (pyusb; usb extra)"),
-    "ssc32": ("armkit.drivers.servo", "open_ssc32", "hobby servos via a Lynxmotion SSC-32 (serial extra)"),
-    "maestro": ("armkit.drivers.servo", "open_maestro", "hobby servos via a Pololu Maestro (serial extra)"),
-    "dynamixel": ("armkit.drivers.dynamixel", "open_driver", "Dynamixel Protocol 2.0 (dynamixel extra)"),
+    "ssc32": (
+        "armkit.drivers.servo",
+        "open_ssc32",
+        "hobby servos via a Lynxmotion SSC-32 (serial extra)",
+    ),
+    "maestro": (
+        "armkit.drivers.servo",
+        "open_maestro",
+        "hobby servos via a Pololu Maestro (serial extra)",
+    ),
+    "dynamixel": (
+        "armkit.drivers.dynamixel",
+        "open_driver",
+        "Dynamixel Protocol 2.0 (dynamixel extra)",
+    ),
 }
 
 

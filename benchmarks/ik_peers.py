@@ -1,0 +1,367 @@
+"""Side-by-side IK benchmark: armkit against Robotics Toolbox for Python and ikpy.
+
+    .venv/bin/python benchmarks/ik_peers.py [--n 1000] [--seed 0] [--arms openmanipulator_x al5d puma560]
+
+The same N reachable targets (FK of random joint vectors inside the limits,
+fixed seed) per arm, every solver starting from the arm's home pose. Tasks:
+position for the 4/5-joint arms (the peers have no pitch-only mask), full
+pose for the PUMA 560. Rows: armkit analytic (where the closed-form family
+fits; position targets, pitch free), armkit lm per call (``armkit.kinematics.ik``),
+armkit lm batch per target, RTB C++ ``ETS.ik_LM`` (the ETS path, which
+applies the tool once, tol 1e-10 on 1/2|e|^2), RTB Python ``ETS.ikine_LM``
+(same settings) and ikpy ``Chain.inverse_kinematics``. The peers' robots are
+built from armkit's own DH rows (offsets, flips, tool) and every answer is
+verified with armkit's FK: success = within 1 mm (and 0.1 deg for pose
+targets) with every joint inside its limits.
+
+The peers live in their own virtual environment, benchmarks/.peers-venv
+(created on first use: python3 -m venv + pip install roboticstoolbox-python
+ikpy); they are never dependencies of armkit. This file is both the driver
+(run with armkit's interpreter) and the worker (run by the peers' one).
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import json
+import math
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+PEERS_VENV = HERE / ".peers-venv"
+ARM_TASKS = {"openmanipulator_x": "position", "al5d": "position", "puma560": "pose"}
+WARMUP = 10
+
+
+# ---------------------------------------------------------------- the worker (peers' venv)
+
+
+def _fixed(T: np.ndarray) -> tuple[list[float], list[float]]:
+    """A 4x4 transform as (xyz, rpy) with R = Rz(yaw) Ry(pitch) Rx(roll)."""
+    R = T[:3, :3]
+    rpy = [
+        math.atan2(R[2, 1], R[2, 2]),
+        math.asin(max(-1.0, min(1.0, -R[2, 0]))),
+        math.atan2(R[1, 0], R[0, 0]),
+    ]
+    return T[:3, 3].tolist(), rpy
+
+
+def _rot(axis: str, angle: float) -> np.ndarray:
+    c, s = math.cos(angle), math.sin(angle)
+    T = np.eye(4)
+    i, j = {"x": (1, 2), "z": (0, 1)}[axis]
+    T[i, i], T[i, j], T[j, i], T[j, j] = c, -s, s, c
+    return T
+
+
+def _trans(x: float = 0.0, z: float = 0.0) -> np.ndarray:
+    T = np.eye(4)
+    T[0, 3], T[2, 3] = x, z
+    return T
+
+
+def _rtb_robot(spec: dict):  # type: ignore[no-untyped-def]
+    import roboticstoolbox as rtb
+    from spatialmath import SE3
+
+    kind = rtb.RevoluteMDH if spec["modified"] else rtb.RevoluteDH
+    links = [
+        kind(a=r["a"], alpha=r["alpha"], d=r["d"], offset=r["offset"], flip=r["sign"] < 0, qlim=lim)
+        for r, lim in zip(spec["rows"], spec["limits"], strict=True)
+    ]
+    robot = rtb.DHRobot(links, tool=SE3(np.array(spec["tool"]), check=False))
+    return robot.ets()  # the ETS includes the tool once
+
+
+def _ikpy_chain(spec: dict):  # type: ignore[no-untyped-def]
+    from ikpy.chain import Chain
+    from ikpy.link import OriginLink, URDFLink
+
+    links, F = [OriginLink()], np.eye(4)
+    for i, (r, lim) in enumerate(zip(spec["rows"], spec["limits"], strict=True)):
+        before = _rot("x", r["alpha"]) @ _trans(x=r["a"]) if spec["modified"] else np.eye(4)
+        xyz, rpy = _fixed(F @ before @ _rot("z", r["offset"]))
+        links.append(
+            URDFLink(
+                f"j{i}",
+                np.array(xyz),
+                np.array(rpy),
+                rotation=np.array([0, 0, r["sign"]]),
+                bounds=tuple(lim),
+            )
+        )
+        F = (
+            _trans(z=r["d"])
+            if spec["modified"]
+            else _trans(z=r["d"]) @ _trans(x=r["a"]) @ _rot("x", r["alpha"])
+        )
+    xyz, rpy = _fixed(F @ np.array(spec["tool"]))
+    links.append(URDFLink("tool", np.array(xyz), np.array(rpy), joint_type="fixed"))
+    mask = [False] + [True] * len(spec["rows"]) + [False]
+    return Chain(links, active_links_mask=mask)
+
+
+def _time_solver(solve, targets: list[np.ndarray], dof: int, repeats: int) -> dict:  # type: ignore[no-untyped-def]
+    for T in targets[:WARMUP]:
+        solve(T)
+    q, secs, its = [], [], []
+    for T in targets:
+        best = math.inf
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            ans, it = solve(T)
+            best = min(best, time.perf_counter() - t0)
+        secs.append(best)
+        q.append([float("nan")] * dof if ans is None else [float(v) for v in ans])
+        its.append(float("nan") if it is None else float(it))
+    return {"q": q, "seconds": secs, "iterations": its}
+
+
+def worker(spec_path: str, out_path: str) -> None:
+    """Run the peers on the targets in spec_path; write answers and times to out_path."""
+    spec = json.loads(Path(spec_path).read_text())
+    targets = [np.array(T) for T in spec["targets"]]
+    q0, dof, pose = np.array(spec["q0"]), len(spec["rows"]), spec["task"] == "pose"
+    mask = np.ones(6) if pose else np.array([1.0, 1, 1, 0, 0, 0])
+    ets, chain = _rtb_robot(spec), _ikpy_chain(spec)
+    checks = [np.array(c) for c in spec["checks"]]
+    fk_error = {
+        "rtb": max(
+            float(np.abs(ets.eval(np.array(q)) - T).max())
+            for q, T in zip(spec["check_q"], checks, strict=True)
+        ),
+        "ikpy": max(
+            float(np.abs(chain.forward_kinematics([0.0, *q, 0.0]) - T).max())
+            for q, T in zip(spec["check_q"], checks, strict=True)
+        ),
+    }
+
+    def rtb_cpp(T):  # type: ignore[no-untyped-def]
+        sol = ets.ik_LM(T, q0=q0, tol=1e-10, mask=mask, joint_limits=True)
+        return (sol.q if sol.success else None), sol.iterations
+
+    def rtb_py(T):  # type: ignore[no-untyped-def]
+        sol = ets.ikine_LM(T, q0=q0, tol=1e-10, mask=mask, joint_limits=True)
+        return (sol.q if sol.success else None), sol.iterations
+
+    def ikpy_ik(T):  # type: ignore[no-untyped-def]
+        kw = {"target_orientation": T[:3, :3], "orientation_mode": "all"} if pose else {}
+        full = chain.inverse_kinematics(T[:3, 3], initial_position=[0.0, *q0, 0.0], **kw)
+        return full[1 : 1 + dof], None
+
+    out = {"fk_error": fk_error}
+    for name, fn in (
+        ("rtb C++ ETS.ik_LM", rtb_cpp),
+        ("rtb Python ETS.ikine_LM", rtb_py),
+        ("ikpy", ikpy_ik),
+    ):
+        out[name] = _time_solver(fn, targets, dof, spec["repeats"])
+    Path(out_path).write_text(json.dumps(out))
+
+
+# ---------------------------------------------------------------- the driver (armkit's venv)
+
+
+def ensure_peers_venv() -> Path:
+    """The peers' interpreter; creates the venv and installs the peers on first use."""
+    python = PEERS_VENV / "bin" / "python"
+    if not python.exists():
+        print(f"creating {PEERS_VENV} (roboticstoolbox-python, ikpy) ...", file=sys.stderr)
+        subprocess.run([sys.executable, "-m", "venv", str(PEERS_VENV)], check=True)
+        pip = [str(python), "-m", "pip", "install", "-q", "roboticstoolbox-python", "ikpy"]
+        subprocess.run(pip, check=True)
+    return python
+
+
+def import_seconds(python: Path | str, module: str, repeats: int = 3) -> float:
+    """Best-of-``repeats`` wall time of ``import module`` in a fresh interpreter [s]."""
+    code = f"import time; t = time.perf_counter(); import {module}; print(time.perf_counter() - t)"
+    runs = [
+        float(
+            subprocess.run(
+                [str(python), "-c", code], capture_output=True, text=True, check=True
+            ).stdout
+        )
+        for _ in range(repeats)
+    ]
+    return min(runs)
+
+
+def _spec(model, targets, task: str, repeats: int) -> dict:  # type: ignore[no-untyped-def]
+    from armkit.kinematics import fk
+
+    check_q = targets.q[:5]
+    return {
+        "modified": model.convention == "modified",
+        "rows": [
+            {"a": r.a, "alpha": r.alpha, "d": r.d, "offset": r.theta_offset, "sign": r.sign}
+            for r in model.dh
+        ],
+        "limits": [[j.lower, j.upper] for j in model.joints],
+        "tool": model.T_flange_tool.tolist(),
+        "q0": model.home.tolist(),
+        "task": task,
+        "repeats": repeats,
+        "targets": targets.T.tolist(),
+        "check_q": check_q.tolist(),
+        "checks": fk(model, check_q).tolist(),
+    }
+
+
+def _armkit_runs(model, targets, repeats: int) -> dict:  # type: ignore[no-untyped-def]
+    """armkit's rows: {name: (q (N, dof), seconds (N,), iterations (N,))}."""
+    from armkit.kinematics._compare import _one_call, applicable_methods
+    from armkit.kinematics._numeric import solve_batch
+
+    runs = {}
+    for method in ("analytic", "lm"):
+        if method not in applicable_methods(model, targets.task):
+            continue
+        call = _one_call(model, targets, method)
+        runs[f"armkit {method}"] = _time_calls(call, len(targets.q), model.dof, repeats)
+    R = targets.T[:, :3, :3] if targets.task == "pose" else None
+    P = targets.T[:, :3, 3]
+    solve_batch(
+        model,
+        P[:WARMUP],
+        None,
+        None if R is None else R[:WARMUP],
+        model.home,
+        1e-5,
+        math.radians(0.01),
+    )
+    per = math.inf
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        out = solve_batch(model, P, None, R, model.home, 1e-5, math.radians(0.01))
+        per = min(per, (time.perf_counter() - t0) / len(P))
+    runs["armkit lm batch (per target)"] = (out.q, np.full(len(P), per), np.full(len(P), np.nan))
+    return runs
+
+
+def _time_calls(call, n: int, dof: int, repeats: int) -> tuple:  # type: ignore[no-untyped-def]
+    from armkit import UnreachableError
+
+    for i in range(WARMUP):
+        with contextlib.suppress(UnreachableError):
+            call(i)
+    q, secs, its = np.full((n, dof), np.nan), np.empty(n), np.full(n, np.nan)
+    for i in range(n):
+        secs[i] = math.inf
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            try:
+                res = call(i)
+                q[i], its[i] = res.q, res.iterations
+            except UnreachableError:
+                pass
+            secs[i] = min(secs[i], time.perf_counter() - t0)
+    return q, secs, its
+
+
+def _row(model, targets, name: str, q, secs, its, import_s: float) -> list[str]:  # type: ignore[no-untyped-def]
+    from armkit.kinematics import fk
+    from armkit.kinematics._compare import verified
+
+    q = np.asarray(q, dtype=float)
+    ok = verified(model, targets, q)
+    answered = np.all(np.isfinite(q), axis=1)
+    err = np.linalg.norm(
+        fk(model, np.where(answered[:, None], q, model.home))[:, :3, 3] - targets.T[:, :3, 3],
+        axis=1,
+    )
+    batch = "batch" in name
+    its = np.asarray(its, dtype=float)
+    return [
+        name,
+        f"{100 * ok.mean():.1f}",
+        f"{np.median(secs) * 1e6:.1f}",
+        "-" if batch else f"{np.percentile(secs, 95) * 1e6:.1f}",
+        f"{np.nanmedian(its):.0f}" if np.isfinite(its).any() else "-",
+        f"{np.median(err[answered]) * 1000:.2g}" if answered.any() else "-",
+        f"{import_s:.2f}",
+    ]
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--n", type=int, default=1000, help="targets per arm (default 1000)")
+    parser.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
+    parser.add_argument(
+        "--repeats",
+        type=int,
+        default=3,
+        help="time each call R times, keep the fastest (default 3)",
+    )
+    parser.add_argument("--arms", nargs="+", default=list(ARM_TASKS), choices=list(ARM_TASKS))
+    args = parser.parse_args()
+    sys.path.insert(0, str(HERE.parent / "src"))
+    from armkit.model import load_model
+
+    python = ensure_peers_venv()
+    imports = {
+        "armkit": import_seconds(sys.executable, "armkit.kinematics"),
+        "rtb": import_seconds(python, "roboticstoolbox"),
+        "ikpy": import_seconds(python, "ikpy.chain"),
+    }
+    print(
+        f"python {sys.version.split()[0]}, n = {args.n}, seed = {args.seed}, fastest of {args.repeats}, from the home pose"
+    )
+    for arm in args.arms:
+        print(_arm_table(python, load_model(arm), args.n, args.seed, args.repeats, imports))
+    return 0
+
+
+def _arm_table(python: Path, model, n: int, seed: int, repeats: int, imports: dict) -> str:  # type: ignore[no-untyped-def]
+    """The table of one arm: armkit's rows, then the peers', all verified by armkit's FK."""
+    from armkit.cli._table import table
+    from armkit.kinematics._compare import reachable_targets
+
+    targets = reachable_targets(model, n, seed, ARM_TASKS[model.name])
+    runs = _armkit_runs(model, targets, repeats)
+    rows = [_row(model, targets, k, *v, imports["armkit"]) for k, v in runs.items()]
+    peers, fk_error = _run_peers(python, model, targets, repeats)
+    for name, res in peers.items():
+        lib = "ikpy" if name.startswith("ikpy") else "rtb"
+        rows.append(
+            _row(model, targets, name, res["q"], res["seconds"], res["iterations"], imports[lib])
+        )
+    headers = [
+        "solver",
+        "success %",
+        "median us",
+        "p95 us",
+        "median iter",
+        "median err mm",
+        "import s",
+    ]
+    title = (
+        f"\n{model.name} ({model.dof} joints), task {targets.task}; peers' FK vs armkit's: "
+        f"rtb {fk_error['rtb']:.1e} m, ikpy {fk_error['ikpy']:.1e} m"
+    )
+    return title + "\n" + table(headers, rows)
+
+
+def _run_peers(python: Path, model, targets, repeats: int) -> tuple[dict, dict]:  # type: ignore[no-untyped-def]
+    with tempfile.TemporaryDirectory() as tmp:
+        spec, out = Path(tmp) / "spec.json", Path(tmp) / "out.json"
+        spec.write_text(json.dumps(_spec(model, targets, targets.task, repeats)))
+        subprocess.run([str(python), __file__, "--worker", str(spec), str(out)], check=True)
+        result = json.loads(out.read_text())
+    fk_error = result.pop("fk_error")
+    return result, fk_error
+
+
+if __name__ == "__main__":
+    if len(sys.argv) == 4 and sys.argv[1] == "--worker":
+        worker(sys.argv[2], sys.argv[3])
+    else:
+        sys.exit(main())

@@ -1,0 +1,35 @@
+"""The two arms shipped for the numeric solver: AL5D and PUMA 560."""
+
+from __future__ import annotations
+
+import numpy as np
+from numeric_cases import TOL_ANG, TOL_POS, assert_reaches, target_for
+
+from armkit.kinematics import fk, ik
+from armkit.kinematics._family import family_of
+from armkit.model import load_model
+
+
+def test_puma560_matches_the_toolbox_qz_and_qr_poses() -> None:
+    model = load_model("puma560")
+    assert model.dof == 6 and model.convention == "standard"
+    # Corke's Puma560: fkine(qz) = (0.4521, -0.15005, 1.1038); fkine(qr) = (0.0203, -0.15005, 1.5356)
+    np.testing.assert_allclose(fk(model, np.zeros(6))[:3, 3], [0.4521, -0.15005, 1.1038], atol=1e-4)
+    qr = np.array([0.0, np.pi / 2, -np.pi / 2, 0.0, 0.0, 0.0])
+    np.testing.assert_allclose(fk(model, qr)[:3, 3], [0.0203, -0.15005, 1.5356], atol=1e-4)
+
+
+def test_al5d_home_is_the_l_pose_with_a_level_hand() -> None:
+    model = load_model("al5d")
+    T = fk(model, model.home)
+    np.testing.assert_allclose(T[:3, 3], [0.187325 + 0.1, 0.0, 0.06731 + 0.14605], atol=1e-9)
+    np.testing.assert_allclose(T[:3, :3], np.eye(3), atol=1e-9)
+
+
+def test_closed_form_declines_the_puma_and_ik_uses_lm() -> None:
+    model = load_model("puma560")
+    assert family_of(model) is None
+    target = target_for(model, np.radians([30.0, 100.0, -150.0, 20.0, 40.0, 10.0]), "pose")
+    result = ik(model, target.position, orientation=target.orientation)
+    assert result.method == "lm"
+    assert_reaches(model, result.q, target, TOL_POS, TOL_ANG)
