@@ -8,12 +8,12 @@ import sys
 from pathlib import Path
 
 from armkit.devices.owi535 import open_device
-from armkit.drivers.timed import RealClock, TimedDriver, state_path
+from armkit.drivers.timed import TimedDriver, WallClock, state_path
 from armkit.model import load_model
 from armkit.sim.owi_sim import build_sim
 
 
-class ExplodingClock(RealClock):
+class ExplodingClock(WallClock):
     """The real clock, except that a sleep longer than 0.2 s fails half way."""
 
     def sleep(self, seconds: float) -> None:
@@ -25,7 +25,7 @@ class ExplodingClock(RealClock):
 
 def main(mode: str, log: str) -> None:
     model = load_model("owi535")
-    clock = ExplodingClock() if mode == "exception" else RealClock()
+    clock = ExplodingClock() if mode == "exception" else WallClock()
     sim = build_sim(model, 3, clock=clock, log_path=Path(log))
     driver = TimedDriver(model, open_device(sim.backend), clock, state_path("child"), "child")
     driver.set_light(True)

@@ -8,6 +8,7 @@ wrapped into the joint limits by whole turns and kept only if it fits.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from .._errors import UnreachableError
@@ -173,23 +174,63 @@ def _sorted(good: list[Q], seed: Q) -> list[Q]:
 
 
 def _free_pitch(model: ArmModel, fam: PlanarFamily, p: Q, seed: Q) -> list[Q]:
-    """Position only on a 3-joint planar chain: the pitch nearest the seed's that fits."""
+    """Position only on a 3-joint planar chain: the pitch nearest the seed's that fits.
+
+    Pitches are tried outwards from the seed's in 3 deg steps both ways, then,
+    for a point within the links' reach, in 0.1 deg steps; the first that fits
+    is refined by bisection towards the seed's pitch, so the answer lies on
+    the edge of what the limits allow.
+    """
     preferred = seed_pitch(fam, seed)
-    attempt = _solve_pitch(model, fam, p, preferred, seed)
-    if attempt.good:
-        return _sorted(attempt.good, seed)
-    best: tuple[float, list[Q]] | None = None
-    for step in range(1, 721):
-        for pitch in (preferred + step * math.pi / 720, preferred - step * math.pi / 720):
-            trial = _solve_pitch(model, fam, p, pitch, seed)
-            if trial.good:
-                best = (pitch, trial.good)
-                break
-            attempt.reasons += trial.reasons
-            attempt.violations += trial.violations
-        if best is not None:
-            return _sorted(best[1], seed)
-    raise _unreachable(model, p, None, attempt)
+    solve = _pitch_solver(model, fam, p, seed)
+    sols = solve(preferred)
+    if sols:
+        return sols
+    for step_deg in (3.0, 0.1) if _within_reach(fam, p) else (3.0,):
+        step = math.radians(step_deg)
+        for k in range(1, int(180 / step_deg) + 1):
+            for sign in (1.0, -1.0):
+                if solve(preferred + sign * k * step):
+                    return _bisect(
+                        solve, preferred + sign * (k - 1) * step, preferred + sign * k * step
+                    )
+    raise _unreachable(model, p, None, _solve_pitch(model, fam, p, preferred, seed))
+
+
+def _within_reach(fam: PlanarFamily, p: Q) -> bool:
+    """True if the point is no further from the first planar joint than all links stretched out."""
+    reach = sum(math.hypot(*v) for v in fam.links)
+    r = math.hypot(p[0], p[1]) if fam.base is not None else p[0] * -fam.u[1] + p[1] * fam.u[0]
+    return (
+        math.hypot(abs(r) - fam.c1[0], p[2] - fam.c1[1]) <= reach + 1e-9
+        or math.hypot(r + fam.c1[0], p[2] - fam.c1[1]) <= reach + 1e-9
+    )
+
+
+def _pitch_solver(model: ArmModel, fam: PlanarFamily, p: Q, seed: Q) -> Callable[[float], list[Q]]:
+    """pitch [rad] -> every solution at that pitch, best first (the fast path where it exists)."""
+    from ._fast import fast_solver
+
+    fast = fast_solver(model)
+
+    def solve(pitch: float) -> list[Q]:
+        if fast is not None:
+            found = fast(p[0], p[1], p[2], pitch, seed)
+            return [q for _, q in sorted(found[1], key=lambda pair: pair[0])] if found else []
+        return _sorted(_solve_pitch(model, fam, p, pitch, seed).good, seed)
+
+    return solve
+
+
+def _bisect(solve: Callable[[float], list[Q]], miss: float, hit: float) -> list[Q]:
+    """Narrow [miss, hit] to 1e-4 rad and return the solutions at the fitting end."""
+    while abs(hit - miss) > 1e-4:
+        mid = 0.5 * (miss + hit)
+        if solve(mid):
+            hit = mid
+        else:
+            miss = mid
+    return solve(hit)
 
 
 def seed_pitch(fam: PlanarFamily, seed: Q) -> float:

@@ -19,10 +19,10 @@ from typing import Protocol
 import numpy as np
 from numpy.typing import NDArray
 
+from .._clock import Clock
 from .._errors import DeviceError
 from ..drivers._driver import Driver
 from ..model import ArmModel
-from ._clock import Clock
 from ._paths import corners
 from ._plan import JointPath
 from ._timing import time_path

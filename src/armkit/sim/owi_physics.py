@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from ..drivers.timed._clock import Clock
+from .._clock import Clock
 from ..model import ArmModel
 
 F64 = NDArray[np.float64]

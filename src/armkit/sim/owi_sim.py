@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from ..drivers.timed._clock import Clock
+from .._clock import Clock
 from ..model import ArmModel
 from .owi_clock import SimClock
 from .owi_physics import OwiPhysics, random_unit

@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..._clock import Clock as Clock
+from ..._clock import WallClock as WallClock
 from ...model import ArmModel
 from ._calibrate import run_calibration as run_calibration
-from ._clock import Clock as Clock
-from ._clock import RealClock as RealClock
 from ._config import constant_rate as constant_rate
 from ._config import default_timing as default_timing
 from ._driver import TimedDriver as TimedDriver
@@ -22,7 +22,7 @@ from ._timing import JointTiming as JointTiming
 from ._timing import TimingModel as TimingModel
 
 __all__ = [
-    "ArmState", "Clock", "JointTiming", "MoveReport", "RealClock", "ShortMoveError",
+    "ArmState", "Clock", "JointTiming", "MoveReport", "ShortMoveError",
     "TimedDriver", "TimingModel", "constant_rate", "default_timing", "load_state",
     "open_driver", "open_sim_driver", "rehome", "run_calibration", "state_path",
 ]  # fmt: skip
@@ -34,7 +34,7 @@ def open_driver(model: ArmModel, port: str | None = None) -> TimedDriver:
     from ...devices.owi535 import open_device
 
     unit = port or "default"
-    return TimedDriver(model, open_device(), RealClock(), state_path(unit), unit)
+    return TimedDriver(model, open_device(), WallClock(), state_path(unit), unit)
 
 
 def open_sim_driver(model: ArmModel, port: str | None = None) -> TimedDriver:

@@ -17,9 +17,9 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
+from ..._clock import Clock
 from ..._errors import ArmkitError
 from ...model import ArmModel
-from ._clock import Clock
 from ._config import OwiConfig, default_timing, owi_config
 from ._estimate import MOVING, after_run, pending_of, recovered
 from ._motors import Device, Motors, Run

@@ -10,7 +10,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Protocol
 
-from ._clock import Clock
+from ..._clock import Clock
 from ._commands import encode
 from ._safety import Watchdog
 

@@ -1,5 +1,6 @@
-"""Time as the motion layer sees it: real time for hardware, virtual time for a
-simulator (whose ``sleep`` advances the simulation, so it runs faster than real time)."""
+"""The one notion of time every layer shares: real time for hardware, virtual
+time for a simulator (whose ``sleep`` advances the simulation, so tests,
+benchmarks and the demo run faster than real time and never wait)."""
 
 from __future__ import annotations
 
@@ -21,7 +22,7 @@ class Clock(Protocol):
 
 
 class WallClock:
-    """Real time: ``time.monotonic`` and ``time.sleep``."""
+    """Real time: ``time.monotonic`` and ``time.sleep``; what drivers of real hardware use."""
 
     def now(self) -> float:
         """Seconds since an arbitrary origin."""
