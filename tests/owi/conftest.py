@@ -40,6 +40,4 @@ def driver(owi: ArmModel, sim: OwiSim) -> Iterator[TimedDriver]:
     d.close()
 
 
-def sent(sim: OwiSim) -> list[str]:
-    """Every command sent so far, as hex strings ('400000')."""
-    return [t.data.hex() for t in sim.backend.transfers]
+from owi_wire import sent as sent  # noqa: E402  (kept importable from here too)

@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 import pytest
-from conftest import sent
+from owi_wire import sent
 
 from armkit.drivers.timed import TimedDriver
 from armkit.drivers.timed._commands import decode, encode

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import sent
+from owi_wire import sent
 
 from armkit._errors import UnreachableError
 from armkit.cli import main

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from conftest import sent
+from owi_wire import sent
 
 from armkit._errors import JointLimitError, UnreachableError
 from armkit.devices.owi535 import open_device
