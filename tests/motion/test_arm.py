@@ -135,3 +135,13 @@ def test_approach_from_above_and_retreat() -> None:
         assert sim.clock.now() > t[-1]
         with pytest.raises(PathError):
             arm.approach(600, 0, 30, -90)
+
+
+def test_single_joint_turn_after_a_move_settles() -> None:
+    """Regression: joints that barely move in a shared profile (steps below one ulp)
+    used to never reach their goal, so the move timed out."""
+    with Arm("openmanipulator_x", driver="sim") as arm:
+        arm.move_to(200, 0, 50, pitch=-90)
+        arm.grip(30)
+        arm.turn_by("waist", 20)
+        assert abs(arm.angles()["waist"] - 20.0) < 0.1

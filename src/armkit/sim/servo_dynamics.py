@@ -114,7 +114,9 @@ class ServoBank:
         dv = np.clip(wanted - self.velocity, -self.alim * dt, self.alim * dt)
         self.velocity = self.velocity + dv
         nxt = self.setpoint + self.velocity * dt
-        arrived = (self.goal - nxt) * err <= 0.0
+        # past the goal, or within 1e-12 rad of it (a step smaller than one ulp of the
+        # angle would otherwise never land: a joint that barely moves in a shared profile)
+        arrived = ((self.goal - nxt) * err <= 0.0) | (np.abs(self.goal - nxt) < 1e-12)
         self.setpoint = np.where(arrived, self.goal, nxt)
         self.velocity = np.where(arrived, 0.0, self.velocity)
 
