@@ -184,6 +184,7 @@ def ik_batch(
     pitches: ArrayLike | None = None,
     q_seed: ArrayLike | None = None,
     *,
+    orientations: ArrayLike | None = None,
     method: str = "auto",
     tol_mm: float = 0.01,
     tol_deg: float = 0.01,
@@ -195,6 +196,8 @@ def ik_batch(
         pitches: pitch [rad], a number or shape (N,), or None (the model's
             default pitch, else free: nearest the seed's).
         q_seed: [rad], shape (dof,) or (N, dof); default home.
+        orientations: full tool orientations R_world_tool, shape (N, 3, 3)
+            (numeric methods; instead of pitches).
         method: ``"auto"``, ``"analytic"`` or ``"lm"``.
 
     Returns:
@@ -204,11 +207,14 @@ def ik_batch(
     seed = _batch_seed(model, q_seed, len(P))
     pitch = _batch_pitch(model, pitches, len(P))
     fam = family_of(model)
-    use = _choose(model, fam, method, None)
+    use = _choose(model, fam, method, orientations)
     if use != "analytic":
         from ._numeric import solve_batch
 
-        return solve_batch(model, P, pitch, None, seed, tol_mm / 1000.0, math.radians(tol_deg))
+        if orientations is not None and pitch is not None:
+            raise ValueError("give pitches or orientations, not both")
+        tol_pos, tol_ang = tol_mm / 1000.0, math.radians(tol_deg)
+        return solve_batch(model, P, pitch, orientations, seed, tol_pos, tol_ang)
     assert fam is not None
     if pitch is None and len(fam.planar) == 3:
         return _free_pitch_batch(model, fam, P, seed)
