@@ -127,3 +127,14 @@ def test_batch_and_single_agree_on_failures() -> None:
     assert res.ok.tolist() == [False, True, False]
     assert res.reason[0] == "too_far"
     assert np.isnan(res.q[0]).all()
+
+
+@pytest.mark.parametrize("name", ["openmanipulator_x", "lynx6"])
+def test_position_only_batch_agrees_with_single(name: str) -> None:
+    """The vectorised pitch search picks the same pitch, so the same joints, as ik()."""
+    m = load_model(name)
+    _, P, _ = reachable(name, 300, 6)
+    batch = ik_batch(m, P)
+    assert batch.ok.all()
+    for i in range(len(P)):
+        assert np.abs(ik(m, P[i]).q - batch.q[i]).max() < 1e-6

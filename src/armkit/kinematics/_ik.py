@@ -8,13 +8,13 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._errors import UnreachableError
 from ..model import ArmModel
 from . import _analytic
 from ._analytic_batch import solve_batch as solve_batch_analytic
 from ._family import PlanarFamily, family_of, why_not_family
 from ._fast import fast_solver
 from ._fk import CHUNK, fk
+from ._free_pitch_batch import free_pitch_batch
 from ._pose import pitch_of
 from ._result import IKBatchResult, IKResult
 from ._target import Target
@@ -243,16 +243,12 @@ def _analytic_chunks(
 
 
 def _free_pitch_batch(model: ArmModel, fam: PlanarFamily, P: F64, seed: F64) -> IKBatchResult:
-    """Position-only targets: try the seed's pitch for all, then search per failed target."""
-    preferred = np.asarray(pitch_of(fk(model, seed)), dtype=np.float64)
-    q, ok, reason = _analytic_chunks(model, fam, P, preferred, seed)
-    for i in np.flatnonzero(~ok):
-        try:
-            sols = _analytic.solve(model, fam, tuple(P[i].tolist()), None, tuple(seed[i].tolist()))
-        except UnreachableError as exc:
-            reason[i] = exc.reason
-            continue
-        q[i], ok[i], reason[i] = sols[0], True, ""
+    """Position-only targets: the pitch nearest each seed's that fits (see _free_pitch_batch)."""
+
+    def solve(p: F64, pitch: F64, s: F64) -> tuple[F64, NDArray[np.bool_], NDArray[np.str_]]:
+        return _analytic_chunks(model, fam, p, pitch, s)
+
+    q, ok, reason = free_pitch_batch(model, fam, P, seed, solve)
     return IKBatchResult(q=q, ok=ok, reason=reason, method="analytic")
 
 
