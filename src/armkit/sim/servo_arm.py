@@ -15,13 +15,13 @@ replace), so that one CLI process can ``move`` and the next one ask ``where``.
 from __future__ import annotations
 
 import math
-import os
 from collections.abc import Callable
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._errors import DeviceError, JointLimitError
+from .._files import config_dir
 from ..model import ArmModel
 from ..motion._profiles import trapezoid_in_line
 from .servo_dynamics import ServoBank, ServoParams
@@ -208,8 +208,4 @@ def open_servo_sim(
 
 def default_state_file(model: ArmModel) -> str:
     """Where the CLI keeps the simulated ``model``'s state between invocations."""
-    base = os.environ.get("ARMKIT_CONFIG_DIR")
-    if not base:
-        xdg = os.environ.get("XDG_CONFIG_HOME") or os.path.join(os.path.expanduser("~"), ".config")
-        base = os.path.join(xdg, "armkit")
-    return os.path.join(base, f"sim_{model.name}.json")
+    return str(config_dir() / f"sim_{model.name}.json")

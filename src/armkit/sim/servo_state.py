@@ -4,14 +4,13 @@ from __future__ import annotations
 
 import json
 import math
-import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import DeviceError
+from .._files import write_atomic
 from ..model import ArmModel
 
 F64 = NDArray[np.float64]
@@ -37,14 +36,5 @@ def load_state(path: str | Path, model: ArmModel) -> tuple[F64, float] | None:
 
 def save_state(path: str | Path, arm: str, q: F64, grip: float) -> None:
     """Write ``q`` [rad] and ``grip`` [m] for the arm called ``arm`` (atomic replace)."""
-    file = Path(path)
-    file.parent.mkdir(parents=True, exist_ok=True)
     data = {"arm": arm, "q_deg": [round(math.degrees(a), 6) for a in q], "grip_mm": grip * 1000}
-    fd, tmp = tempfile.mkstemp(dir=file.parent, prefix=file.name, suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as out:
-            json.dump(data, out)
-        os.replace(tmp, file)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    write_atomic(Path(path), json.dumps(data), durable=False)

@@ -15,9 +15,10 @@ from pathlib import Path
 import numpy as np
 
 from ..._errors import DeviceError
+from ..._files import config_dir, write_atomic
 from ...model import ArmModel
 from ._arm import ServoArmDriver
-from ._config import config_dir, table_to_toml, write_atomic
+from ._config import table_to_toml
 from ._table import PULSE_MAX_US, PULSE_MIN_US, ServoCalibration
 
 ASK_TRIES = 3

@@ -17,14 +17,13 @@ A unit's measured tables (written by ``run_calibration``) live in
 from __future__ import annotations
 
 import math
-import os
-import tempfile
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from ..._errors import ModelError
+from ..._files import config_dir
 from ...model import ArmModel
 from ._table import ServoCalibration, ideal_grip, ideal_joint
 
@@ -45,14 +44,6 @@ class ServoSetup:
     grip: ServoCalibration | None
     baudrate: int
     unit_file: Path
-
-
-def config_dir() -> Path:
-    """The user's armkit configuration directory (not created)."""
-    if os.environ.get("ARMKIT_CONFIG_DIR"):
-        return Path(os.environ["ARMKIT_CONFIG_DIR"]).expanduser()
-    xdg = os.environ.get("XDG_CONFIG_HOME")
-    return (Path(xdg) if xdg else Path.home() / ".config") / "armkit"
 
 
 def driver_section(model: ArmModel, driver: str) -> dict[str, Any]:
@@ -165,20 +156,3 @@ def table_to_toml(cal: ServoCalibration) -> str:
         f"[servos.{cal.name}]\nchannel = {cal.channel}\n"
         f"{_VALUE_KEY[cal.unit]} = [{values}]\npulses_us = [{pulses}]\n"
     )
-
-
-def write_atomic(path: Path, text: str) -> None:
-    """Write ``text`` to ``path`` so that readers see the old file or the new one, never
-    half of one: a temporary file in the same directory, fsync, then ``os.replace``."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as handle:
-            os.fchmod(handle.fileno(), 0o644)  # a config file, not a secret
-            handle.write(text)
-            handle.flush()
-            os.fsync(handle.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise

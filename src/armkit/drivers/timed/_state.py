@@ -12,13 +12,12 @@ from __future__ import annotations
 
 import json
 import math
-import os
-import tempfile
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
 from ..._errors import ArmkitError
+from ..._files import config_dir, write_atomic
 from ._timing import JointTiming, TimingModel
 
 VERSION = 1
@@ -60,14 +59,6 @@ class ArmState:
         return replace(self, **changes)
 
 
-def config_dir() -> Path:
-    """armkit's per-user configuration directory (not created)."""
-    if os.environ.get("ARMKIT_CONFIG_DIR"):
-        return Path(os.environ["ARMKIT_CONFIG_DIR"])
-    xdg = os.environ.get("XDG_CONFIG_HOME")
-    return (Path(xdg) if xdg else Path.home() / ".config") / "armkit"
-
-
 def state_path(unit: str) -> Path:
     """The state file of OWI unit ``unit``."""
     if not unit or any(c in unit for c in "/\\") or unit.startswith("."):
@@ -78,21 +69,7 @@ def state_path(unit: str) -> Path:
 def save(state: ArmState, path: Path, durable: bool = True) -> None:
     """Write ``state`` to ``path`` atomically (temp file, fsync, rename). ``durable=False``
     skips the fsyncs (still atomic, not power-loss safe): for simulations."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    text = json.dumps(to_dict(state), indent=2) + "\n"
-    fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w") as fh:
-            fh.write(text)
-            fh.flush()
-            if durable:
-                os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    if durable:
-        _fsync_dir(path.parent)
+    write_atomic(path, json.dumps(to_dict(state), indent=2) + "\n", durable)
 
 
 def load(path: Path) -> ArmState:
@@ -108,19 +85,6 @@ def load(path: Path) -> ArmState:
             f"OWI state file {path} is unreadable ({exc}); "
             "delete it and run 'calibrate' or 'rehome'"
         ) from None
-
-
-def _fsync_dir(directory: Path) -> None:
-    try:
-        fd = os.open(directory, os.O_RDONLY)
-    except OSError:
-        return
-    try:
-        os.fsync(fd)
-    except OSError:
-        pass
-    finally:
-        os.close(fd)
 
 
 def to_dict(state: ArmState) -> dict[str, Any]:
