@@ -81,8 +81,11 @@ def ik(
     if use == "analytic":
         assert fam is not None
         return _closed_form(model, fam, p, pitch, seed)
-    target = Target(np.array(p), pitch, _rotation(orientation))
     from ._numeric import solve
+    from ._numeric._inputs import rotation
+
+    R = None if orientation is None else rotation(orientation, "orientation")
+    target = Target(np.array(p), pitch, R)
 
     return solve(use, model, target, np.array(seed), tol_mm / 1000.0, math.radians(tol_deg))
 
@@ -109,7 +112,8 @@ def _closed_form(
     seed: tuple[float, ...],
 ) -> IKResult:
     sols = _analytic.solve(model, fam, p, pitch, seed)
-    return IKResult.closed_form(sols[0], list(enumerate(sols)), (model, p, pitch))  # type: ignore[arg-type]
+    ranked = [(float(k), q) for k, q in enumerate(sols)]  # already best first
+    return IKResult.closed_form(sols[0], ranked, (model, p, pitch))
 
 
 def measure_error(
@@ -164,18 +168,6 @@ def _seed(model: ArmModel, q_seed: ArrayLike | None) -> tuple[float, ...]:
             f"q_seed must be {model.dof} finite joint angles [rad], got shape {qa.shape}"
         )
     return tuple(qa.tolist())
-
-
-def _rotation(orientation: ArrayLike | None) -> F64 | None:
-    """``orientation`` checked to be a rotation matrix, shape (3, 3)."""
-    if orientation is None:
-        return None
-    R = np.asarray(orientation, dtype=np.float64)
-    if R.shape != (3, 3) or not np.all(np.isfinite(R)):
-        raise ValueError(f"orientation must be a finite 3x3 rotation matrix, got shape {R.shape}")
-    if not np.allclose(R @ R.T, np.eye(3), atol=1e-6) or np.linalg.det(R) < 0:
-        raise ValueError("orientation must be a rotation matrix (orthonormal, det +1)")
-    return R
 
 
 def ik_batch(
