@@ -17,7 +17,6 @@ from ._fk import CHUNK, fk
 from ._free_pitch_batch import free_pitch_batch
 from ._pose import pitch_of
 from ._result import IKBatchResult, IKResult
-from ._target import Target
 from ._validate import joint_array, point_array
 
 F64 = NDArray[np.float64]
@@ -68,7 +67,7 @@ def ik(
     seed = cache.get("home") or _seed(model, None) if q_seed is None else _seed(model, q_seed)
     if pitch is not None:
         pitch = pitch if type(pitch) is float and math.isfinite(pitch) else _finite(pitch, "pitch")
-    elif model.default_pitch is not None:
+    elif model.default_pitch is not None and orientation is None:
         pitch = model.default_pitch
     if orientation is None and (method == "auto" or method == "analytic"):
         fast = cache["fast"] if "fast" in cache else fast_solver(model)
@@ -81,13 +80,12 @@ def ik(
     if use == "analytic":
         assert fam is not None
         return _closed_form(model, fam, p, pitch, seed)
-    from ._numeric import solve
-    from ._numeric._inputs import rotation
+    from ._numeric import solve_task
+    from ._numeric._inputs import numeric_task, tolerances
 
-    R = None if orientation is None else rotation(orientation, "orientation")
-    target = Target(np.array(p), pitch, R)
-
-    return solve(use, model, target, np.array(seed), tol_mm / 1000.0, math.radians(tol_deg))
+    tol_pos, tol_ang = tolerances(tol_mm / 1000.0, math.radians(tol_deg))
+    task = numeric_task(model, p, pitch, orientation)
+    return solve_task(use, model, task, list(seed), tol_pos, tol_ang)
 
 
 def _choose(model: ArmModel, fam: PlanarFamily | None, method: str, orientation: Any) -> str:
@@ -163,11 +161,12 @@ def _seed(model: ArmModel, q_seed: ArrayLike | None) -> tuple[float, ...]:
             model._cache["home"] = home
         return home
     qa = np.asarray(q_seed, dtype=np.float64)
-    if qa.shape != (model.dof,) or not np.all(np.isfinite(qa)):
+    q = qa.tolist() if qa.shape == (model.dof,) else None
+    if q is None or not all(map(math.isfinite, q)):
         raise ValueError(
             f"q_seed must be {model.dof} finite joint angles [rad], got shape {qa.shape}"
         )
-    return tuple(qa.tolist())
+    return tuple(q)
 
 
 def ik_batch(

@@ -59,6 +59,20 @@ def solve(
     tol_pos, tol_ang = tolerances(tol_pos_m, tol_ang_rad)
     task = task_of(model, checked_target(target))
     q0 = seeds(model, q_seed, None).tolist()
+    return solve_task(method, model, task, q0, tol_pos, tol_ang, rng_seed)
+
+
+def solve_task(
+    method: str,
+    model: ArmModel,
+    task: Task,
+    q0: list[float],
+    tol_pos: float,
+    tol_ang: float,
+    rng_seed: int = 0,
+) -> IKResult:
+    """``solve`` for inputs already checked (as ``armkit.kinematics.ik`` does): a known
+    method, a ``Task`` of finite floats, q0 [rad] as dof floats, tolerances > 0 [m], [rad]."""
     attempt: Attempt = METHODS[method](model, task, q0, tol_pos, tol_ang, rng_seed)
     return finish(model, method, task, attempt)
 
@@ -110,4 +124,4 @@ def batch_task(
     return BatchTask(P, pitch, R, angle_weight(model))
 
 
-__all__ = ["METHODS", "Task", "batch_task", "solve", "solve_batch"]
+__all__ = ["METHODS", "Task", "batch_task", "solve", "solve_batch", "solve_task"]

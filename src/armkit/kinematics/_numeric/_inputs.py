@@ -9,6 +9,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ...model import ArmModel
 from .._target import Target
+from ._residual import Task, angle_weight
 
 F64 = NDArray[np.float64]
 
@@ -27,6 +28,22 @@ def checked_target(target: Target) -> Target:
     if pitch is not None and R is not None:
         raise ValueError("give pitch or orientation, not both")
     return Target(p, None if pitch is None else float(pitch), R)
+
+
+def numeric_task(
+    model: ArmModel,
+    p: tuple[float, float, float],
+    pitch: float | None,
+    orientation: ArrayLike | None,
+) -> Task:
+    """The ``Task`` of a finite point p [m] and pitch [rad] (both already checked) or an
+    orientation, checked to be a rotation; ValueError if both pitch and orientation."""
+    if orientation is None:
+        return Task(p, pitch, None, angle_weight(model))
+    if pitch is not None:
+        raise ValueError("give pitch or orientation, not both")
+    R = rotation(orientation, "orientation")
+    return Task(p, None, tuple(R.ravel().tolist()), angle_weight(model))
 
 
 def finite_array(value: ArrayLike, name: str, shape: tuple[int, ...]) -> F64:

@@ -22,6 +22,7 @@ from ._batch_chain import jacobian_and_pose_lean
 from ._lm import CANDIDATES, LMSettings
 from ._residual import reach_bound
 from ._residual_batch import BatchResidual, BatchTask, residual_batch, task_cost
+from ._turn_batch import turn_first_joint
 
 F64 = NDArray[np.float64]
 IDX = NDArray[np.intp]
@@ -81,7 +82,7 @@ def solve_lm_batch(
     out = BatchOutcome(q0.copy(), np.zeros(n, bool), np.zeros(n, np.int64), np.zeros(n, np.int64))
     far = np.linalg.norm(task.P, axis=1) > reach_bound(model)
     budget = np.where(far, 0, st.max_restarts)
-    q = np.clip(q0, model.lower, model.upper)
+    q = turn_first_joint(model, task, np.clip(q0, model.lower, model.upper))
     runs = _new_runs(np.arange(n), q, _evaluate(model, task, q), st)
     while runs.owner.size:
         conv = (runs.pos <= tol_pos) & (runs.ang <= tol_ang)

@@ -13,7 +13,7 @@ from .._result import IKResult
 from ._residual import Residual, Task, reach_bound
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True)
 class Attempt:
     """What one numeric solver ended with.
 
@@ -48,18 +48,18 @@ def finish(model: ArmModel, method: str, task: Task, attempt: Attempt) -> IKResu
         NoSolutionError: reason ``"no_convergence"``, the solver stopped short.
         Both carry the closest joint vector found in ``closest``.
     """
-    q = np.array(attempt.q)
     res = attempt.residual
-    if attempt.converged:
+    if attempt.converged:  # q's arrays are built when read (see IKResult)
         return IKResult(
-            q=q,
-            solutions=q[None, :],
+            q=attempt.q,
+            solutions=[attempt.q],
             method=method,
             iterations=attempt.iterations,
             restarts=attempt.restarts,
             position_error=res.position_error,
             angle_error=res.angle_error,
         )
+    q = np.array(attempt.q)
     miss = f"{res.position_error * 1000:.3f} mm, {math.degrees(res.angle_error):.3f} deg"
     if beyond_reach(model, task):
         raise UnreachableError(

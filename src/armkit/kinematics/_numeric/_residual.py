@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from operator import mul
 
 import numpy as np
 
@@ -40,9 +39,11 @@ class Task:
     weight: float
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True)
 class Residual:
     """e, the masked weighted Jacobian (or None), and the unweighted errors.
+    (Not frozen: a frozen dataclass costs a microsecond more to build, and the
+    solvers build one per iteration.)
 
     Attributes:
         e: residual, 3/4/6 floats.  cols: J by columns, per joint a tuple as long as e.
@@ -83,26 +84,30 @@ def task_of(model: ArmModel, target: Target) -> Task:
 def residual(task: Task, st: ChainState, jac: bool = True) -> Residual:
     """Residual of the chain state ``st`` for ``task``; the Jacobian rows if ``jac``."""
     p = st.p
-    e = [task.p[0] - p[0], task.p[1] - p[1], task.p[2] - p[2]]
-    cols: list[tuple[float, ...]] | None = None
-    pos = math.sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2])
-    ang = 0.0
-    w = task.weight
+    e0, e1, e2 = task.p[0] - p[0], task.p[1] - p[1], task.p[2] - p[2]
+    pos2 = e0 * e0 + e1 * e1 + e2 * e2
+    cols = task_jacobian(task, st) if jac else None
     if task.pitch is not None:
         d = wrap(task.pitch - pitch_scalar(st.R[0], p))
-        e.append(w * d)
-        ang = abs(d)
-        if jac:
-            cols = [(*v, w * g) for v, g in zip(st.jv, pitch_gradient(st), strict=True)]
-    elif task.R is not None:
-        rv = rotation_log(task.R, st.R)
-        e.extend(w * v for v in rv)
-        ang = math.sqrt(rv[0] * rv[0] + rv[1] * rv[1] + rv[2] * rv[2])
-        if jac:
-            cols = [(*v, w * u[0], w * u[1], w * u[2]) for v, u in zip(st.jv, st.jw, strict=True)]
-    elif jac:
-        cols = list(st.jv)
-    return Residual(e, cols, pos, ang, sum(map(mul, e, e)))
+        wd = task.weight * d
+        return Residual([e0, e1, e2, wd], cols, math.sqrt(pos2), abs(d), pos2 + wd * wd)
+    if task.R is not None:
+        w = task.weight
+        r0, r1, r2 = rotation_log(task.R, st.R)
+        e = [e0, e1, e2, w * r0, w * r1, w * r2]
+        ang2 = r0 * r0 + r1 * r1 + r2 * r2
+        return Residual(e, cols, math.sqrt(pos2), math.sqrt(ang2), pos2 + w * w * ang2)
+    return Residual([e0, e1, e2], cols, math.sqrt(pos2), 0.0, pos2)
+
+
+def task_jacobian(task: Task, st: ChainState) -> list[tuple[float, ...]]:
+    """The task's weighted Jacobian by columns: per joint, as many floats as e has rows."""
+    w = task.weight
+    if task.pitch is not None:
+        return [(*v, w * g) for v, g in zip(st.jv, pitch_gradient(st), strict=True)]
+    if task.R is not None:
+        return [(*v, w * u[0], w * u[1], w * u[2]) for v, u in zip(st.jv, st.jw, strict=True)]
+    return st.jv  # type: ignore[return-value]
 
 
 def wrap(angle: float) -> float:

@@ -28,3 +28,12 @@ class JointSampler:
 def clamp_to_limits(model: ArmModel, q: list[float]) -> list[float]:
     """q [rad] with every joint clamped into its limits."""
     return [min(max(float(v), j.lower), j.upper) for v, j in zip(q, model.joints, strict=True)]
+
+
+def clamp(q: list[float], lower: list[float], upper: list[float]) -> list[float]:
+    """q [rad] with every joint clamped into [lower, upper], as Python floats."""
+    out = []
+    for v, a, b in zip(q, lower, upper, strict=True):
+        t = float(v)
+        out.append(a if t < a else (b if t > b else t))
+    return out

@@ -17,6 +17,9 @@ Vec3 = tuple[float, float, float]
 Row = tuple[float, float, float, float, float, float]
 
 
+ToolColumn = tuple[int, float] | None  # (flange column k, sign) when a tool axis is +-one of them
+
+
 @dataclass(frozen=True, slots=True)
 class ScalarChain:
     """The DH rows and the tool as Python floats.
@@ -26,29 +29,47 @@ class ScalarChain:
         rows: per joint (a [m], d [m], cos alpha, sin alpha, theta offset [rad], sign).
         tool_R: rotation of T_flange_tool, row-major, 9 floats.
         tool_p: translation of T_flange_tool [m].
+        tool_axes: per tool axis, (k, sign) if it is sign times flange axis k
+            (tools are usually mounted square: no arithmetic needed), else None.
+        tool_offsets: the nonzero entries of tool_p as (flange axis k, length [m]).
     """
 
     modified: bool
     rows: tuple[Row, ...]
     tool_R: tuple[float, ...]
     tool_p: Vec3
+    tool_axes: tuple[ToolColumn, ToolColumn, ToolColumn]
+    tool_offsets: tuple[tuple[int, float], ...]
 
 
-@dataclass(frozen=True, slots=True)
 class ChainState:
-    """Tool pose and Jacobian at one q.
+    """Tool pose and Jacobian at one q; the linear part is computed on first use.
 
     Attributes:
         p: tool point [m].
         R: tool rotation columns (x = approach, y, z), each a unit Vec3.
-        jv: per joint, the tool point's linear velocity per unit angle [m/rad].
         jw: per joint, the angular velocity per unit angle (signed joint axis).
+        origins: per joint, a point on its axis [m].
+        jv: per joint, the tool point's linear velocity per unit angle [m/rad].
     """
 
-    p: Vec3
-    R: tuple[Vec3, Vec3, Vec3]
-    jv: list[Vec3]
-    jw: list[Vec3]
+    __slots__ = ("R", "_jv", "jw", "origins", "p")
+
+    def __init__(self, p: Vec3, R: tuple[Vec3, Vec3, Vec3], jw: list[Vec3], origins: list[Vec3]):
+        self.p, self.R, self.jw, self.origins = p, R, jw, origins
+        self._jv: list[Vec3] | None = None
+
+    @property
+    def jv(self) -> list[Vec3]:
+        """Per joint, axis x (tool point - point on the axis) [m/rad]."""
+        if self._jv is None:
+            px, py, pz = self.p
+            jv = []
+            for (zx, zy, zz), (ox, oy, oz) in zip(self.jw, self.origins, strict=True):
+                dx, dy, dz = px - ox, py - oy, pz - oz
+                jv.append((zy * dz - zz * dy, zz * dx - zx * dz, zx * dy - zy * dx))
+            self._jv = jv
+        return self._jv
 
 
 def scalar_chain(model: ArmModel) -> ScalarChain:
@@ -57,25 +78,31 @@ def scalar_chain(model: ArmModel) -> ScalarChain:
     if sc is None:
         chain = chain_of(model)
         t = chain.T_tool
-        sc = ScalarChain(
-            modified=chain.modified,
-            rows=chain.rows,
-            tool_R=tuple(float(t[i, j]) for i in range(3) for j in range(3)),
-            tool_p=(float(t[0, 3]), float(t[1, 3]), float(t[2, 3])),
-        )
+        R = tuple(float(t[i, j]) for i in range(3) for j in range(3))
+        p = (float(t[0, 3]), float(t[1, 3]), float(t[2, 3]))
+        axes = (_tool_axis(R, 0), _tool_axis(R, 1), _tool_axis(R, 2))
+        offsets = tuple((k, v) for k, v in enumerate(p) if abs(v) > _EXACT)
+        sc = ScalarChain(chain.modified, chain.rows, R, p, axes, offsets)
         model._cache["scalar_chain"] = sc
     return sc  # type: ignore[no-any-return]
+
+
+_EXACT = 1e-15  # tool entries this small are rounding noise of a square mount
+
+
+def _tool_axis(R: tuple[float, ...], j: int) -> ToolColumn:
+    """(k, sign) when column j of R is sign times unit vector k (within _EXACT), else None."""
+    col = [R[j], R[3 + j], R[6 + j]]
+    big = [k for k, v in enumerate(col) if abs(v) > _EXACT]
+    if len(big) == 1 and abs(abs(col[big[0]]) - 1.0) <= _EXACT:
+        return big[0], math.copysign(1.0, col[big[0]])
+    return None
 
 
 def chain_state(sc: ScalarChain, q: list[float]) -> ChainState:
     """Tool pose and Jacobian for joint angles q [rad], length dof."""
     axes, origins, R, p = _frames(sc, q)
-    px, py, pz = p
-    jv: list[Vec3] = []
-    for (zx, zy, zz), (ox, oy, oz) in zip(axes, origins, strict=True):
-        dx, dy, dz = px - ox, py - oy, pz - oz
-        jv.append((zy * dz - zz * dy, zz * dx - zx * dz, zx * dy - zy * dx))
-    return ChainState(p, R, jv, axes)
+    return ChainState(p, R, axes, origins)
 
 
 def _frames(
@@ -158,8 +185,26 @@ def _tool(
     sc: ScalarChain, a: Vec3, b: Vec3, c: Vec3, p: Vec3
 ) -> tuple[tuple[Vec3, Vec3, Vec3], Vec3]:
     """Right-multiply the flange frame (columns a, b, c, origin p) by T_flange_tool."""
-    t00, t01, t02, t10, t11, t12, t20, t21, t22 = sc.tool_R
-    cols = (
+    flange = (a, b, c)
+    tip = p
+    for k, length in sc.tool_offsets:
+        f = flange[k]
+        tip = (tip[0] + length * f[0], tip[1] + length * f[1], tip[2] + length * f[2])
+    ax, ay, az = sc.tool_axes
+    if ax is not None and ay is not None and az is not None:
+        return (_signed(flange, ax), _signed(flange, ay), _signed(flange, az)), tip
+    return _rotate_columns(sc.tool_R, a, b, c), tip
+
+
+def _signed(flange: tuple[Vec3, Vec3, Vec3], axis: tuple[int, float]) -> Vec3:
+    f = flange[axis[0]]
+    return f if axis[1] > 0.0 else (-f[0], -f[1], -f[2])
+
+
+def _rotate_columns(t: tuple[float, ...], a: Vec3, b: Vec3, c: Vec3) -> tuple[Vec3, Vec3, Vec3]:
+    """Columns of [a b c] @ t for a row-major 3 x 3 t."""
+    t00, t01, t02, t10, t11, t12, t20, t21, t22 = t
+    return (
         (a[0] * t00 + b[0] * t10 + c[0] * t20, a[1] * t00 + b[1] * t10 + c[1] * t20,
          a[2] * t00 + b[2] * t10 + c[2] * t20),
         (a[0] * t01 + b[0] * t11 + c[0] * t21, a[1] * t01 + b[1] * t11 + c[1] * t21,
@@ -167,10 +212,3 @@ def _tool(
         (a[0] * t02 + b[0] * t12 + c[0] * t22, a[1] * t02 + b[1] * t12 + c[1] * t22,
          a[2] * t02 + b[2] * t12 + c[2] * t22),
     )  # fmt: skip
-    tx, ty, tz = sc.tool_p
-    tip = (
-        p[0] + a[0] * tx + b[0] * ty + c[0] * tz,
-        p[1] + a[1] * tx + b[1] * ty + c[1] * tz,
-        p[2] + a[2] * tx + b[2] * ty + c[2] * tz,
-    )
-    return cols, tip
