@@ -120,31 +120,29 @@ Frames = tuple[list[Vec3], list[Vec3], Vec3, Vec3, Vec3, Vec3]
 
 
 def _modified_frames(rows: tuple[Row, ...], q: list[float]) -> Frames:
-    """Right-multiply by Rx(alpha) Tx(a) Rz(theta) Tz(d) per row; zero terms skipped."""
+    """Right-multiply by Rx(alpha) Tx(a) Rz(theta) Tz(d) per row; zero terms skipped.
+    (Written with scalar temporaries t0..t2: unpacking 6-tuples costs a third more.)"""
     ax, ay, az, bx, by, bz, cx, cy, cz = 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0
     px = py = pz = 0.0
     axes: list[Vec3] = []
     origins: list[Vec3] = []
+    cos, sin = math.cos, math.sin
     for (a, d, ca, sa, off, sign), qi in zip(rows, q, strict=True):
         if a:
-            px, py, pz = px + a * ax, py + a * ay, pz + a * az
-        if ca == 0.0:
-            bx, by, bz, cx, cy, cz = sa * cx, sa * cy, sa * cz, -sa * bx, -sa * by, -sa * bz
-        elif sa:
-            bx, by, bz, cx, cy, cz = (
-                ca * bx + sa * cx, ca * by + sa * cy, ca * bz + sa * cz,
-                ca * cx - sa * bx, ca * cy - sa * by, ca * cz - sa * bz,
-            )  # fmt: skip
-        elif ca < 0.0:
-            bx, by, bz, cx, cy, cz = -bx, -by, -bz, -cx, -cy, -cz
+            px += a * ax
+            py += a * ay
+            pz += a * az
+        if ca != 1.0:
+            bx, by, bz, cx, cy, cz = _rotate_x(ca, sa, bx, by, bz, cx, cy, cz)
         th = sign * qi + off
-        c, s = math.cos(th), math.sin(th)
-        ax, ay, az, bx, by, bz = (
-            c * ax + s * bx, c * ay + s * by, c * az + s * bz,
-            c * bx - s * ax, c * by - s * ay, c * bz - s * az,
-        )  # fmt: skip
+        c, s = cos(th), sin(th)
+        t0, t1, t2 = c * ax + s * bx, c * ay + s * by, c * az + s * bz
+        bx, by, bz = c * bx - s * ax, c * by - s * ay, c * bz - s * az
+        ax, ay, az = t0, t1, t2
         if d:
-            px, py, pz = px + d * cx, py + d * cy, pz + d * cz
+            px += d * cx
+            py += d * cy
+            pz += d * cz
         axes.append((cx, cy, cz) if sign > 0.0 else (-cx, -cy, -cz))
         origins.append((px, py, pz))
     return axes, origins, (ax, ay, az), (bx, by, bz), (cx, cy, cz), (px, py, pz)
@@ -156,29 +154,38 @@ def _standard_frames(rows: tuple[Row, ...], q: list[float]) -> Frames:
     px = py = pz = 0.0
     axes: list[Vec3] = []
     origins: list[Vec3] = []
+    cos, sin = math.cos, math.sin
     for (a, d, ca, sa, off, sign), qi in zip(rows, q, strict=True):
         axes.append((cx, cy, cz) if sign > 0.0 else (-cx, -cy, -cz))
         origins.append((px, py, pz))
         th = sign * qi + off
-        c, s = math.cos(th), math.sin(th)
-        ax, ay, az, bx, by, bz = (
-            c * ax + s * bx, c * ay + s * by, c * az + s * bz,
-            c * bx - s * ax, c * by - s * ay, c * bz - s * az,
-        )  # fmt: skip
+        c, s = cos(th), sin(th)
+        t0, t1, t2 = c * ax + s * bx, c * ay + s * by, c * az + s * bz
+        bx, by, bz = c * bx - s * ax, c * by - s * ay, c * bz - s * az
+        ax, ay, az = t0, t1, t2
         if d:
-            px, py, pz = px + d * cx, py + d * cy, pz + d * cz
+            px += d * cx
+            py += d * cy
+            pz += d * cz
         if a:
-            px, py, pz = px + a * ax, py + a * ay, pz + a * az
-        if ca == 0.0:
-            bx, by, bz, cx, cy, cz = sa * cx, sa * cy, sa * cz, -sa * bx, -sa * by, -sa * bz
-        elif sa:
-            bx, by, bz, cx, cy, cz = (
-                ca * bx + sa * cx, ca * by + sa * cy, ca * bz + sa * cz,
-                ca * cx - sa * bx, ca * cy - sa * by, ca * cz - sa * bz,
-            )  # fmt: skip
-        elif ca < 0.0:
-            bx, by, bz, cx, cy, cz = -bx, -by, -bz, -cx, -cy, -cz
+            px += a * ax
+            py += a * ay
+            pz += a * az
+        if ca != 1.0:
+            bx, by, bz, cx, cy, cz = _rotate_x(ca, sa, bx, by, bz, cx, cy, cz)
     return axes, origins, (ax, ay, az), (bx, by, bz), (cx, cy, cz), (px, py, pz)
+
+
+def _rotate_x(
+    ca: float, sa: float, bx: float, by: float, bz: float, cx: float, cy: float, cz: float
+) -> tuple[float, float, float, float, float, float]:
+    """The y and z columns (b, c) after a rotation by alpha about x (cos ca, sin sa)."""
+    if ca == 0.0:  # +-90 degrees, the common twist
+        return sa * cx, sa * cy, sa * cz, -sa * bx, -sa * by, -sa * bz
+    return (
+        ca * bx + sa * cx, ca * by + sa * cy, ca * bz + sa * cz,
+        ca * cx - sa * bx, ca * cy - sa * by, ca * cz - sa * bz,
+    )  # fmt: skip
 
 
 def _tool(
