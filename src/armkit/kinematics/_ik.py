@@ -15,6 +15,8 @@ from ._family import PlanarFamily, family_of, why_not_family
 from ._fast import fast_solver
 from ._fk import CHUNK, fk
 from ._free_pitch_batch import free_pitch_batch
+from ._numeric import solve_batch, solve_task
+from ._numeric._inputs import numeric_task, tolerances
 from ._pose import pitch_of
 from ._result import IKBatchResult, IKResult
 from ._validate import joint_array, point_array
@@ -80,9 +82,6 @@ def ik(
     if use == "analytic":
         assert fam is not None
         return _closed_form(model, fam, p, pitch, seed)
-    from ._numeric import solve_task
-    from ._numeric._inputs import numeric_task, tolerances
-
     tol_pos, tol_ang = tolerances(tol_mm / 1000.0, math.radians(tol_deg))
     task = numeric_task(model, p, pitch, orientation)
     return solve_task(use, model, task, list(seed), tol_pos, tol_ang)
@@ -200,8 +199,6 @@ def ik_batch(
     fam = family_of(model)
     use = _choose(model, fam, method, orientations)
     if use != "analytic":
-        from ._numeric import solve_batch
-
         if orientations is not None and pitch is not None:
             raise ValueError("give pitches or orientations, not both")
         tol_pos, tol_ang = tol_mm / 1000.0, math.radians(tol_deg)
