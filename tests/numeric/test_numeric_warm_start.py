@@ -15,7 +15,7 @@ from armkit.kinematics._numeric import _lm
 from armkit.kinematics._numeric._residual import angle_weight, residual, task_of
 from armkit.kinematics._numeric._residual_batch import BatchTask, task_cost
 from armkit.kinematics._numeric._sampling import clamp
-from armkit.kinematics._numeric._scalar_chain import chain_state, scalar_chain
+from armkit.kinematics._numeric._scalar_chain import chain_state, chain_state_loop, scalar_chain
 from armkit.kinematics._numeric._turn import best_turn
 from armkit.kinematics._numeric._turn_batch import turn_first_joint
 from armkit.model import load_model
@@ -113,6 +113,7 @@ def test_scalar_chain_with_a_tool_that_is_not_square() -> None:
         np.testing.assert_allclose(st.p, Tq[:3, 3], atol=1e-12)
         np.testing.assert_allclose(np.array(st.R).T, Tq[:3, :3], atol=1e-12)
         np.testing.assert_allclose(np.array(st.jv).T, jacobian(odd, q)[:3], atol=1e-12)
+        assert st.R == chain_state_loop(sc, q.tolist()).R  # the unrolled code, bit for bit
 
 
 def test_clamp_keeps_joints_inside_and_returns_python_floats() -> None:

@@ -123,7 +123,7 @@ def lm_run(prob: _Problem, q: list[float]) -> tuple[list[float], Residual, int]:
         if cols is None:
             cols = task_jacobian(task, st)
         trial = _step(prob, q, cols, res.e, mu * res.cost + 1e-12)
-        trial_st = chain_state(sc, trial)
+        trial_st = sc.state(trial)
         new = residual(task, trial_st, jac=False)
         if new.cost < res.cost:
             q, st, res, cols = trial, trial_st, new, None

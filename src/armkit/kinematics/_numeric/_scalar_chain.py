@@ -8,10 +8,12 @@ Same conventions as ``armkit.kinematics.fk`` / ``jacobian`` (checked by tests).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from ...model import ArmModel
 from .._chain import chain_of
+from ._unrolled import compile_chain
 
 Vec3 = tuple[float, float, float]
 Row = tuple[float, float, float, float, float, float]
@@ -32,6 +34,7 @@ class ScalarChain:
         tool_axes: per tool axis, (k, sign) if it is sign times flange axis k
             (tools are usually mounted square: no arithmetic needed), else None.
         tool_offsets: the nonzero entries of tool_p as (flange axis k, length [m]).
+        state: ``chain_state`` for this chain, unrolled (see ``_unrolled``).
     """
 
     modified: bool
@@ -40,6 +43,7 @@ class ScalarChain:
     tool_p: Vec3
     tool_axes: tuple[ToolColumn, ToolColumn, ToolColumn]
     tool_offsets: tuple[tuple[int, float], ...]
+    state: Callable[[list[float]], ChainState]
 
 
 class ChainState:
@@ -82,7 +86,8 @@ def scalar_chain(model: ArmModel) -> ScalarChain:
         p = (float(t[0, 3]), float(t[1, 3]), float(t[2, 3]))
         axes = (_tool_axis(R, 0), _tool_axis(R, 1), _tool_axis(R, 2))
         offsets = tuple((k, v) for k, v in enumerate(p) if abs(v) > _EXACT)
-        sc = ScalarChain(chain.modified, chain.rows, R, p, axes, offsets)
+        state = compile_chain(chain.modified, chain.rows, R, axes, offsets, ChainState)
+        sc = ScalarChain(chain.modified, chain.rows, R, p, axes, offsets, state)
         model._cache["scalar_chain"] = sc
     return sc  # type: ignore[no-any-return]
 
@@ -100,7 +105,13 @@ def _tool_axis(R: tuple[float, ...], j: int) -> ToolColumn:
 
 
 def chain_state(sc: ScalarChain, q: list[float]) -> ChainState:
-    """Tool pose and Jacobian for joint angles q [rad], length dof."""
+    """Tool pose and Jacobian for joint angles q [rad], length dof (unrolled code,
+    equal to ``chain_state_loop``'s to the last bit)."""
+    return sc.state(q)
+
+
+def chain_state_loop(sc: ScalarChain, q: list[float]) -> ChainState:
+    """``chain_state`` by a loop over the DH rows: the readable reference."""
     axes, origins, R, p = _frames(sc, q)
     return ChainState(p, R, axes, origins)
 
