@@ -5,10 +5,12 @@ weighted Jacobian; joints sitting at a limit and pushed outwards are frozen
 and the step recomputed without them (an active-set projection), then the
 new q is clamped into the box. lam = mu |e|^2 (Sugihara's choice) with mu
 adapted Marquardt-style: accepted steps shrink it, rejected ones grow it.
-A run that stops improving is restarted from a seeded random q inside the
-limits (alternately the best of a few samples and a plain one). Plain-float
-arithmetic (see ``_scalar_chain``): about a hundred microseconds per call on
-a 4-joint arm.
+Every run starts by turning the first joint alone to its exact best angle
+(``_turn_first_joint``). A run that stops improving is restarted from a
+seeded random q inside the limits (alternately the best of a few samples and
+a plain one). Plain-float arithmetic on unrolled per-model code (see
+``_scalar_chain`` and ``_unrolled``): 60-75 microseconds per call on the
+4-5 joint arms from their home pose, a Jacobian only where a step is taken.
 """
 
 from __future__ import annotations

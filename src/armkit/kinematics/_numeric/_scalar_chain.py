@@ -3,6 +3,8 @@
 For 2-6 joints, plain float arithmetic beats numpy's per-call overhead by an
 order of magnitude, which is what a single-target iterative solver needs.
 Same conventions as ``armkit.kinematics.fk`` / ``jacobian`` (checked by tests).
+``chain_state`` runs code unrolled for the model (``_unrolled``);
+``chain_state_loop`` is the same computation as a loop over the DH rows.
 """
 
 from __future__ import annotations
