@@ -58,6 +58,9 @@ def test_ik_json_round_trips_through_fk(capsys: pytest.CaptureFixture[str]) -> N
         (["ik", "200", "0"], "the following arguments are required"),
         (["ik", "200", "0", "nan"], "finite"),
         (["--arm", "planar2", "ik", "500", "100", "500"], "outside the arm's plane"),
+        (["ik", "200", "0", "50", "--method", "newton"], "invalid choice: 'newton'"),
+        (["--arm", "puma560", "ik", "400", "100", "300", "--method", "analytic"], "use a numeric"),
+        (["--arm", "al5d", "ik", "900", "0", "0", "--method", "lm"], "out of al5d's reach"),
     ],
 )
 def test_bad_input_is_one_line(
@@ -66,6 +69,21 @@ def test_bad_input_is_one_line(
     code, out, err = run(capsys, *argv)
     assert code != 0 and out == ""
     assert needle in err and len(err.strip().splitlines()) == 1 and "Traceback" not in err
+
+
+@pytest.mark.parametrize("method", ["lm", "ccd", "jacobian"])
+def test_ik_numeric_method_reaches_the_point(
+    capsys: pytest.CaptureFixture[str], method: str
+) -> None:
+    code, out, _ = run(
+        capsys, "--arm", "al5d", "ik", "200", "0", "100", "--method", method, "--json"
+    )
+    data = json.loads(out)
+    assert code == 0 and data["method"] == method and data["iterations"] >= 1
+    angles = [str(v) for v in data["solutions"][0]["joints_deg"].values()]
+    _, fk_out, _ = run(capsys, "--arm", "al5d", "fk", *angles, "--json")
+    pos = json.loads(fk_out)["position_mm"]
+    assert all(abs(a - b) < 0.01 for a, b in zip(pos, [200, 0, 100], strict=True))
 
 
 def test_plot_writes_png(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:

@@ -39,6 +39,13 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     p.add_argument(
         "--all", action="store_true", help="print every solution (elbow up/down, over the shoulder)"
     )
+    p.add_argument(
+        "--method",
+        choices=IK_METHODS,
+        default="auto",
+        help="solver: auto (closed form where the arm allows, else lm), analytic, lm, "
+        "ccd, jacobian or random (default auto)",
+    )
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(func=run_ik)
     p = sub.add_parser(
@@ -51,6 +58,9 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         "-o", "--output", default="pose.png", metavar="FILE", help="image file (default pose.png)"
     )
     p.set_defaults(func=run_plot)
+
+
+IK_METHODS = ("auto", "analytic", "lm", "ccd", "jacobian", "random")
 
 
 def joint_angles(m: ArmModel, degrees: list[float]) -> np.ndarray:
@@ -98,18 +108,24 @@ def run_ik(args: argparse.Namespace) -> int:
     if not all(math.isfinite(v) for v in target):
         raise ValueError(f"target must be finite numbers in mm, got {target}")
     pitch = None if args.pitch is None else math.radians(args.pitch)
-    result = ik(m, np.array(target) / 1000.0, pitch)
+    result = ik(m, np.array(target) / 1000.0, pitch, method=args.method)
     sols = result.solutions if args.all else result.solutions[:1]
     degs = [np.degrees(s).round(3).tolist() for s in sols]
     if args.json:
         out: dict[str, Any] = {"arm": m.name, "target_mm": target, "pitch_deg": args.pitch}
         out["solutions"] = [{"joints_deg": dict(zip(m.joint_names, d, strict=True))} for d in degs]
+        out["method"], out["iterations"] = result.method, result.iterations
         print(json.dumps(out))
         return 0
     rows = [[k + 1, *d] for k, d in enumerate(degs)]
     print(table(["#", *(f"{n} deg" for n in m.joint_names)], rows))
     if not args.all and len(result.solutions) > 1:
         print(f"({len(result.solutions)} solutions; --all shows every one)")
+    if result.method != "analytic":
+        print(
+            f"({result.method}: {result.iterations} iterations, {result.restarts} restarts, "
+            f"off by {result.position_error * 1000:.4f} mm)"
+        )
     return 0
 
 

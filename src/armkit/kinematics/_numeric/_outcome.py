@@ -68,10 +68,11 @@ def finish(model: ArmModel, method: str, task: Task, attempt: Attempt) -> IKResu
             reason="too_far",
             closest=q,
         )
+    hint = "another q_seed" if method == "lm" else "method='lm'"
     raise NoSolutionError(
         f"{method} did not converge for {model.name} after {attempt.iterations} iterations and "
         f"{attempt.restarts} restarts (closest pose misses by {miss}); the target may be outside "
-        "the joint limits, or try method='lm' or another q_seed",
+        f"the joint limits, or try {hint}",
         reason="no_convergence",
         closest=q,
     )
