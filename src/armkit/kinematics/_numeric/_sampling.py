@@ -27,7 +27,7 @@ class JointSampler:
 
 def clamp_to_limits(model: ArmModel, q: list[float]) -> list[float]:
     """q [rad] with every joint clamped into its limits."""
-    return [min(max(float(v), j.lower), j.upper) for v, j in zip(q, model.joints, strict=True)]
+    return clamp(q, [j.lower for j in model.joints], [j.upper for j in model.joints])
 
 
 def clamp(q: list[float], lower: list[float], upper: list[float]) -> list[float]:

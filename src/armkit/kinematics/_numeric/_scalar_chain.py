@@ -133,72 +133,68 @@ Frames = tuple[list[Vec3], list[Vec3], Vec3, Vec3, Vec3, Vec3]
 
 
 def _modified_frames(rows: tuple[Row, ...], q: list[float]) -> Frames:
-    """Right-multiply by Rx(alpha) Tx(a) Rz(theta) Tz(d) per row; zero terms skipped.
-    (Written with scalar temporaries t0..t2: unpacking 6-tuples costs a third more.)"""
-    ax, ay, az, bx, by, bz, cx, cy, cz = 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0
-    px = py = pz = 0.0
+    """Right-multiply by Rx(alpha) Tx(a) Rz(theta) Tz(d) per row; zero terms skipped."""
+    a, b, c, p = _IDENTITY
     axes: list[Vec3] = []
     origins: list[Vec3] = []
-    cos, sin = math.cos, math.sin
-    for (a, d, ca, sa, off, sign), qi in zip(rows, q, strict=True):
-        if a:
-            px += a * ax
-            py += a * ay
-            pz += a * az
-        if ca != 1.0:
-            bx, by, bz, cx, cy, cz = _rotate_x(ca, sa, bx, by, bz, cx, cy, cz)
-        th = sign * qi + off
-        c, s = cos(th), sin(th)
-        t0, t1, t2 = c * ax + s * bx, c * ay + s * by, c * az + s * bz
-        bx, by, bz = c * bx - s * ax, c * by - s * ay, c * bz - s * az
-        ax, ay, az = t0, t1, t2
-        if d:
-            px += d * cx
-            py += d * cy
-            pz += d * cz
-        axes.append((cx, cy, cz) if sign > 0.0 else (-cx, -cy, -cz))
-        origins.append((px, py, pz))
-    return axes, origins, (ax, ay, az), (bx, by, bz), (cx, cy, cz), (px, py, pz)
+    for (length, d, ca, sa, off, sign), qi in zip(rows, q, strict=True):
+        p = _moved(p, length, a)
+        b, c = _rotate_x(ca, sa, b, c)
+        a, b = _rotate_z(sign * qi + off, a, b)
+        p = _moved(p, d, c)
+        axes.append(c if sign > 0.0 else (-c[0], -c[1], -c[2]))
+        origins.append(p)
+    return axes, origins, a, b, c, p
 
 
 def _standard_frames(rows: tuple[Row, ...], q: list[float]) -> Frames:
     """Right-multiply by Rz(theta) Tz(d) Tx(a) Rx(alpha) per row; zero terms skipped."""
-    ax, ay, az, bx, by, bz, cx, cy, cz = 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0
-    px = py = pz = 0.0
+    a, b, c, p = _IDENTITY
     axes: list[Vec3] = []
     origins: list[Vec3] = []
-    cos, sin = math.cos, math.sin
-    for (a, d, ca, sa, off, sign), qi in zip(rows, q, strict=True):
-        axes.append((cx, cy, cz) if sign > 0.0 else (-cx, -cy, -cz))
-        origins.append((px, py, pz))
-        th = sign * qi + off
-        c, s = cos(th), sin(th)
-        t0, t1, t2 = c * ax + s * bx, c * ay + s * by, c * az + s * bz
-        bx, by, bz = c * bx - s * ax, c * by - s * ay, c * bz - s * az
-        ax, ay, az = t0, t1, t2
-        if d:
-            px += d * cx
-            py += d * cy
-            pz += d * cz
-        if a:
-            px += a * ax
-            py += a * ay
-            pz += a * az
-        if ca != 1.0:
-            bx, by, bz, cx, cy, cz = _rotate_x(ca, sa, bx, by, bz, cx, cy, cz)
-    return axes, origins, (ax, ay, az), (bx, by, bz), (cx, cy, cz), (px, py, pz)
+    for (length, d, ca, sa, off, sign), qi in zip(rows, q, strict=True):
+        axes.append(c if sign > 0.0 else (-c[0], -c[1], -c[2]))
+        origins.append(p)
+        a, b = _rotate_z(sign * qi + off, a, b)
+        p = _moved(_moved(p, d, c), length, a)
+        b, c = _rotate_x(ca, sa, b, c)
+    return axes, origins, a, b, c, p
 
 
-def _rotate_x(
-    ca: float, sa: float, bx: float, by: float, bz: float, cx: float, cy: float, cz: float
-) -> tuple[float, float, float, float, float, float]:
-    """The y and z columns (b, c) after a rotation by alpha about x (cos ca, sin sa)."""
-    if ca == 0.0:  # +-90 degrees, the common twist
-        return sa * cx, sa * cy, sa * cz, -sa * bx, -sa * by, -sa * bz
+_IDENTITY: tuple[Vec3, Vec3, Vec3, Vec3] = (
+    (1.0, 0.0, 0.0),
+    (0.0, 1.0, 0.0),
+    (0.0, 0.0, 1.0),
+    (0.0, 0.0, 0.0),
+)
+
+
+def _moved(p: Vec3, length: float, axis: Vec3) -> Vec3:
+    """p + length * axis [m] (p itself for a zero length)."""
+    if not length:
+        return p
+    return (p[0] + length * axis[0], p[1] + length * axis[1], p[2] + length * axis[2])
+
+
+def _rotate_z(theta: float, a: Vec3, b: Vec3) -> tuple[Vec3, Vec3]:
+    """The x and y columns (a, b) after a rotation by theta [rad] about z."""
+    c, s = math.cos(theta), math.sin(theta)
     return (
-        ca * bx + sa * cx, ca * by + sa * cy, ca * bz + sa * cz,
-        ca * cx - sa * bx, ca * cy - sa * by, ca * cz - sa * bz,
-    )  # fmt: skip
+        (c * a[0] + s * b[0], c * a[1] + s * b[1], c * a[2] + s * b[2]),
+        (c * b[0] - s * a[0], c * b[1] - s * a[1], c * b[2] - s * a[2]),
+    )
+
+
+def _rotate_x(ca: float, sa: float, b: Vec3, c: Vec3) -> tuple[Vec3, Vec3]:
+    """The y and z columns (b, c) after a rotation by alpha about x (cos ca, sin sa)."""
+    if ca == 1.0:
+        return b, c
+    if ca == 0.0:  # +-90 degrees, the common twist
+        return (sa * c[0], sa * c[1], sa * c[2]), (-sa * b[0], -sa * b[1], -sa * b[2])
+    return (
+        (ca * b[0] + sa * c[0], ca * b[1] + sa * c[1], ca * b[2] + sa * c[2]),
+        (ca * c[0] - sa * b[0], ca * c[1] - sa * b[1], ca * c[2] - sa * b[2]),
+    )
 
 
 def _tool(

@@ -89,7 +89,7 @@ def _translate(length: float, col: str) -> list[str]:
 
 
 def _rotate_x(ca: float, sa: float) -> list[str]:
-    """Columns b, c after Rx(alpha), as ``_rotate_x`` (nothing for alpha = 0)."""
+    """Columns b, c after Rx(alpha), as ``_scalar_chain._rotate_x`` (nothing for alpha = 0)."""
     if ca == 1.0:
         return []
     c, s = repr(ca), repr(sa)
