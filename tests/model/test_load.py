@@ -97,3 +97,25 @@ def test_not_toml_and_unknown_name(tmp_path: Path) -> None:
         load_model("owi536")
     with pytest.raises(ModelError, match="no such model file"):
         load_model(tmp_path / "missing.toml")
+
+
+def test_link_radii_and_table(tmp_path: Path) -> None:
+    from armkit import load_model
+
+    omx = load_model("openmanipulator_x")
+    assert len(omx.link_radii) == omx.dof + 1 and omx.table_z == 0.0
+    text = (
+        Path(str(omx.source))
+        .read_text()
+        .replace("[links]\nradius_mm = [25.0, 15.0, 15.0, 15.0, 15.0]", "[links]\nradius_mm = 12\n")
+    )
+    f = tmp_path / "m.toml"
+    f.write_text("table_z_mm = -5\n" + text)
+    m = load_model(f)
+    assert m.link_radii == (0.012,) * 5 and m.table_z == pytest.approx(-0.005)
+    f.write_text(text.replace("radius_mm = 12", "radius_mm = [1, 2]"))
+    with pytest.raises(ModelError, match=r"links.radius_mm.*5 numbers"):
+        load_model(f)
+    f.write_text(text.replace("radius_mm = 12", "radius_mm = -1"))
+    with pytest.raises(ModelError, match=r"links.radius_mm\[0\]"):
+        load_model(f)

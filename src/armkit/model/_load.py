@@ -25,6 +25,8 @@ _TOP = {
     "gripper": dict,
     "drivers": dict,
     "notes": str,
+    "table_z_mm": _NUM,
+    "links": dict,
 }
 _REQUIRED_TOP = ("name", "dh_convention", "joints")
 _JOINT = {
@@ -41,6 +43,9 @@ _REQUIRED_DH = ("a_mm", "alpha_deg", "d_mm")
 _TOOL = {"xyz_mm": list, "rpy_deg": list, "length_mm": _NUM}
 _GRIPPER = {"kind": str, "width_mm": list, "length_poly_mm": list, "closed_length_mm": _NUM}
 _GRIPPER_KINDS = ("parallel", "scissor", "timed")
+_LINKS = {"radius_mm": object}  # a number or a list, checked in _link_radii
+DEFAULT_LINK_RADIUS_MM = 15.0
+MAX_LINK_RADIUS_MM = 200.0
 
 
 def shipped_models() -> list[str]:
@@ -148,6 +153,8 @@ def _build(data: dict[str, Any], path: Path) -> ArmModel:
         default_pitch=None if pitch is None else math.radians(pitch),
         drivers=dict(data.get("drivers", {})),
         source=path,
+        table_z=float(data.get("table_z_mm", 0.0)) / 1000.0,
+        link_radii=_link_radii(check, data.get("links", {}), len(joints) + 1),
     )
 
 
@@ -207,6 +214,24 @@ def _rpy_matrix(roll: float, pitch: float, yaw: float) -> NDArray[np.float64]:
             [-sp, cp * sr, cp * cr],
         ]
     )
+
+
+def _link_radii(check: _Checker, data: Any, count: int) -> tuple[float, ...]:
+    """``[links] radius_mm``: one number for every link, or ``count`` numbers (dof + 1:
+    the base column, one per joint's link, the tool) [mm]; default 15 mm each."""
+    check.table(data, "links", _LINKS, ())
+    value = data.get("radius_mm", DEFAULT_LINK_RADIUS_MM)
+    if isinstance(value, list):
+        radii = check.numbers(value, "links.radius_mm", count)
+    else:
+        check.type(value, "links.radius_mm", _NUM)
+        radii = [float(value)] * count
+    for k, r in enumerate(radii):
+        if not 0.0 <= r <= MAX_LINK_RADIUS_MM:
+            raise check.fail(
+                f"links.radius_mm[{k}]", f"must be 0..{MAX_LINK_RADIUS_MM:.0f} mm, got {r}"
+            )
+    return tuple(r / 1000.0 for r in radii)
 
 
 def _gripper(check: _Checker, data: Any) -> Gripper:

@@ -97,6 +97,10 @@ class ArmModel:
         default_pitch: pitch used when an IK call gives none [rad], or None (free).
         drivers: per-driver default calibration tables, as written in the file.
         source: the file it was loaded from.
+        table_z: height of the table plane in the world frame [m]; no link may go below it.
+        link_radii: radius of each link's capsule [m], shape (dof + 1,): capsule i joins
+            the origins of frames i and i + 1 of ``fk_frames`` (the last one the flange
+            to the tool point). Capsule 0 is the base column and stands on the table.
     """
 
     name: str
@@ -110,6 +114,8 @@ class ArmModel:
     default_pitch: float | None = None
     drivers: dict[str, Any] = field(default_factory=dict)
     source: Path | None = None
+    table_z: float = 0.0
+    link_radii: tuple[float, ...] = ()
     _cache: dict[str, Any] = field(default_factory=dict, repr=False)
 
     @property
