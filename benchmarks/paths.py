@@ -1,10 +1,11 @@
 """Drawing accuracy and time on the simulated servo arms.
 
 A 50 mm-radius circle and a 100 mm square, drawn by the simulated
-OpenManipulator-X and Lynx6 with naive stepping, early-waypoint streaming
-(seed 001) and time-parametrised streaming. For each: RMS and maximum distance
-of the true gripper path (1 kHz of simulated joint angles through FK) from the
-ideal path [mm], and the simulated drawing time [s].
+OpenManipulator-X and Lynx6 (each arm's own driver on its simulated device:
+XM430 servos on a Dynamixel bus, an SSC-32) with naive stepping, early-waypoint
+streaming (seed 001) and time-parametrised streaming. For each: RMS and maximum
+distance of the true gripper path (1 kHz of the world's true joint angles
+through FK) from the ideal path [mm], and the simulated drawing time [s].
 
 Run: .venv/bin/python benchmarks/paths.py
 """
@@ -18,6 +19,7 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import NDArray
 
+from armkit.connect import open_driver, world_of
 from armkit.kinematics import fk
 from armkit.model import ArmModel, load_model
 from armkit.motion import (
@@ -30,7 +32,6 @@ from armkit.motion import (
     plan_path,
     rectangle,
 )
-from armkit.sim.servo_arm import open_servo_sim
 
 F64 = NDArray[np.float64]
 SPACING = 0.002  # [m] between waypoints
@@ -52,14 +53,17 @@ MODES: dict[str, Streamer] = {
 
 def draw(model: ArmModel, points: F64, pitch: float, streamer: Streamer) -> tuple[F64, float]:
     """Draw ``points`` on a fresh simulated arm; true tool points [m] while drawing, time [s]."""
-    arm = open_servo_sim(model)
+    arm = open_driver(model, "sim")
+    world = world_of(arm)
+    assert world is not None
     path = plan_path(model, points, pitch, arm.read())
     arm.move(path.q[0], wait=True)
-    arm.clock.sleep(0.2)  # pen down: let the servos settle on the first point
-    t0 = arm.clock.now()
-    streamer.run(arm, model, path, arm.clock)
-    t1 = arm.clock.now()
-    rec = arm.recording().between(t0, t1)
+    world.clock.sleep(0.2)  # pen down: let the servos settle on the first point
+    t0 = world.now()
+    streamer.run(arm, model, path, world.clock)
+    t1 = world.now()
+    rec = world.recording().between(t0, t1)
+    arm.close()
     return fk(model, rec.q)[:, :3, 3], t1 - t0
 
 

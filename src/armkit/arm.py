@@ -17,11 +17,12 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._errors import DeviceError, JointLimitError
+from ._errors import DeviceError
+from .connect import World, open_driver, world_of
 from .drivers._driver import Driver
-from .drivers._registry import open_driver
 from .kinematics import fk, ik, pitch_of
 from .model import ArmModel, load_model
+from .model._limits import check_grip, check_joints, move_time
 from .motion import (
     JointPath,
     NaiveStepping,
@@ -32,7 +33,6 @@ from .motion import (
     follow,
     plan_path,
     retreat,
-    trapezoid,
 )
 
 F64 = NDArray[np.float64]
@@ -62,7 +62,8 @@ class Arm:
     Args:
         model: a shipped arm name, a model file path, or an ``ArmModel``.
         driver: a driver name (``"sim"``, ``"ssc32"``, ...) or an open ``Driver``.
-        port: the driver's port (see ``armkit.drivers.open_driver``).
+        port: the driver's port (see ``armkit.connect.open_driver``).
+        world: the simulation world to put a simulated arm in (None: a new one).
     """
 
     def __init__(
@@ -70,11 +71,22 @@ class Arm:
         model: str | Path | ArmModel = "openmanipulator_x",
         driver: str | Driver = "sim",
         port: str | None = None,
+        *,
+        world: World | None = None,
     ) -> None:
         self.model = model if isinstance(model, ArmModel) else load_model(model)
-        self.driver = open_driver(self.model, driver, port) if isinstance(driver, str) else driver
+        if isinstance(driver, str):
+            self.driver = open_driver(self.model, driver, port, world=world)
+        else:
+            self.driver = driver
         self.clock = clock_of(self.driver)
         self._kin = self.model
+
+    @property
+    def world(self) -> World | None:
+        """The simulation world this arm moves in (its true state, recording, observers);
+        None on real hardware."""
+        return world_of(self.driver)
 
     def move_to(
         self,
@@ -127,8 +139,9 @@ class Arm:
     def grip(self, width_mm: float) -> None:
         """Open the gripper to ``width_mm`` [mm] (the grip point moves with it on
         scissor grippers)."""
-        kin = self.model.with_grip_width(width_mm / 1000.0)
-        self.driver.grip(width_mm / 1000.0)
+        width = check_grip(self.model, width_mm / 1000.0)
+        kin = self.model.with_grip_width(width)
+        self.driver.grip(width)
         self._kin = kin
 
     def home(self, *, speed: float | None = None) -> None:
@@ -204,10 +217,12 @@ class Arm:
         return np.radians(q)
 
     def _move(self, q: F64, timing: _Timing) -> None:
-        """Check limits and timing, then send; with a timeout, poll until there."""
-        _check_limits(self.model, q)
-        speed = 1.0 if timing.speed is None else timing.speed
-        trapezoid(self.model, self.driver.read(), q, speed, timing.duration)  # raises if too fast
+        """Check limits and timing (the drivers' own rule), then send; with a timeout,
+        poll until there."""
+        goal = check_joints(self.model, q)
+        move_time(
+            self.model, self.driver.read(), goal, speed=timing.speed, duration=timing.duration
+        )
         wait = timing.wait and timing.timeout is None
         self.driver.move(q, duration=timing.duration, speed=timing.speed, wait=wait)
         if timing.wait and timing.timeout is not None:
@@ -226,13 +241,3 @@ class Arm:
                 self.driver.stop()
                 raise DeviceError(f"the arm did not reach its target within {timeout} s; stopped")
             self.clock.sleep(0.005)
-
-
-def _check_limits(model: ArmModel, q: F64) -> None:
-    """JointLimitError naming the first joint of ``q`` [rad] outside its limits."""
-    for joint, angle in zip(model.joints, q, strict=True):
-        if not joint.lower - 1e-9 <= angle <= joint.upper + 1e-9:
-            raise JointLimitError(
-                f"{joint.name} {math.degrees(angle):.2f} deg is outside its limits "
-                f"{math.degrees(joint.lower):.2f}..{math.degrees(joint.upper):.2f} deg"
-            )

@@ -14,7 +14,7 @@ import pytest
 from armkit._errors import DeviceError
 from armkit.drivers.servo import open_ssc32, run_calibration
 from armkit.model import ArmModel
-from armkit.sim.ssc32_emulator import SSC32Emulator
+from armkit.sim.emulators import SSC32Emulator
 
 
 @pytest.fixture

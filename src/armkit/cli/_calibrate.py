@@ -7,7 +7,7 @@ import importlib
 from typing import Any
 
 from .._errors import ArmkitError
-from ..drivers import open_driver
+from ..connect import auto_operator, open_driver
 from ..model import load_model
 
 # driver name -> the module whose run_calibration(model, driver, ask, say) measures it
@@ -52,11 +52,9 @@ def _ask(prompt: str) -> str:
 def run_calibrate(args: argparse.Namespace) -> int:
     model = load_model(args.arm)
     module = importlib.import_module(_module_for(model.name, args.driver))
-    driver = open_driver(model, args.driver, args.port)
+    driver = open_driver(model, args.driver, args.port, keep=True)
     ask = _ask
     if args.driver == "sim":  # the simulated OWI is timed by an automatic operator
-        from ..sim.owi_operator import auto_operator
-
         operator = auto_operator(driver)
         ask = operator.ask if operator is not None else _ask
     try:

@@ -1,8 +1,9 @@
 """Motion commands: move, joints, grip, home, where, draw (millimetres, degrees).
 
-With ``--driver sim`` on a servo arm, the simulated arm's joint angles and grip
-are kept between invocations in a state file, so ``move`` then ``where`` agree:
-``$ARMKIT_CONFIG_DIR/sim_<arm>.json``, else ``$XDG_CONFIG_HOME/armkit/`` or
+With ``--driver sim`` the simulated arm's true joint angles and grip are kept
+between invocations in a state file, so ``move`` then ``where`` agree:
+``$ARMKIT_CONFIG_DIR/sim_<arm>.json`` (a model file of your own:
+``sim_<arm>-<hash of its path>.json``), else ``$XDG_CONFIG_HOME/armkit/`` or
 ``~/.config/armkit/``. ``--port FILE`` uses another file; delete it to start at home.
 """
 
@@ -16,6 +17,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..arm import Arm
+from ..connect import open_driver
 from ..model import load_model
 from ..motion import (
     EarlyStreaming,
@@ -27,13 +29,13 @@ from ..motion import (
     line,
     rectangle,
 )
-from ..sim.servo_arm import ServoArmSim, default_state_file
 
 F64 = NDArray[np.float64]
 MODES = ("naive", "early", "timed")
 SIM_NOTE = (
     "With --driver sim, the simulated arm's joint angles are kept between runs in "
-    "$ARMKIT_CONFIG_DIR/sim_<arm>.json (default ~/.config/armkit/); delete it to start at home."
+    "$ARMKIT_CONFIG_DIR/sim_<arm>.json (default ~/.config/armkit/); delete it to start at home; "
+    "a second process on the same simulated arm is refused until the first ends."
 )
 
 
@@ -100,17 +102,14 @@ def _draw_options(p: argparse.ArgumentParser) -> None:
     p.add_argument(
         "--record",
         metavar="FILE.csv",
-        help="sim only: write t_s,<joint>_deg,... one row per 1 ms of simulated time",
+        help="simulated arms only: write t_s,<joint>_deg,... one row per 1 ms of simulated time",
     )
     p.set_defaults(func=_draw)
 
 
 def _open(args: argparse.Namespace) -> Arm:
     model = load_model(args.arm)
-    port = args.port
-    if args.driver == "sim" and port is None and "owi535" not in model.drivers:
-        port = default_state_file(model)
-    return Arm(model, args.driver, port)
+    return Arm(model, open_driver(model, args.driver, args.port, keep=True))
 
 
 def _move(args: argparse.Namespace) -> int:
@@ -157,15 +156,15 @@ def _print_where(arm: Arm) -> None:
 def _draw(args: argparse.Namespace) -> int:
     points = _shape_points(args)
     streamer = _streamer(args)
+    if args.record and args.driver != "sim" and args.port != "emu":
+        raise ValueError("--record needs a simulated arm (--driver sim, or --port emu)")
     with _open(args) as arm:
-        if args.record and not isinstance(arm.driver, ServoArmSim):
-            raise ValueError("--record needs the simulated servo arm (--driver sim)")
         t0 = arm.clock.now()
         arm.follow(points, args.pitch, streamer=streamer)
         took = arm.clock.now() - t0
         print(f"drew {args.shape}: {len(points)} points in {took:.2f} s ({args.mode} mode)")
-        if args.record and isinstance(arm.driver, ServoArmSim):
-            rows = arm.driver.recording().write_csv(args.record)
+        if args.record and arm.world is not None:
+            rows = arm.world.recording().between(t0, arm.clock.now()).write_csv(args.record)
             print(f"recorded {rows} samples (1 ms apart) to {args.record}")
     return 0
 

@@ -114,9 +114,9 @@ class OwiPhysics:
             or (d < 0 and self.q[j] <= self.model.lower[j])
         )
 
-    def advance(self) -> None:
-        """Integrate the motion up to ``clock.now()``."""
-        t = self.clock.now()
+    def advance(self, until: float | None = None) -> None:
+        """Integrate the motion up to ``until`` [s] (None: ``clock.now()``)."""
+        t = self.clock.now() if until is None else until
         while self._t < t - 1e-12:
             h = min(STEP_S, t - self._t)
             self._step(h)

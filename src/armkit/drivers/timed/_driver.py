@@ -20,6 +20,7 @@ from numpy.typing import NDArray
 from ..._clock import Clock
 from ..._errors import ArmkitError
 from ...model import ArmModel
+from ...model._limits import check_grip, check_joints, move_time
 from ._config import OwiConfig, default_timing, owi_config
 from ._estimate import MOVING, after_run, pending_of, recovered
 from ._motors import Device, Motors, Run
@@ -86,17 +87,18 @@ class TimedDriver:
         wait: bool = True,
     ) -> None:
         """Turn every joint to ``q`` [rad], shape (4,), one joint at a time in an order that
-        keeps the arm off the table. The OWI's motors have one speed, so ``duration`` and
-        ``speed`` cannot change it; moves always block. Joints within the 200 ms
-        resolution stay where they are.
+        keeps the arm off the table. ``duration`` and ``speed`` are checked by the shared
+        rule (``armkit.model._limits.move_time``) but cannot change the OWI's one motor
+        speed; moves always block. Joints within the 200 ms resolution stay where they are.
 
         Raises:
-            JointLimitError: a target is outside the unit's limits (nothing moves).
+            JointLimitError: a target is outside the model's or the unit's limits (nothing moves).
+            ValueError: a bad speed or a duration too short for the joints' speed limits.
             UnreachableError: every order would sweep the arm through the table.
         """
-        if speed is not None and not 0.0 < speed <= 1.0:
-            raise ValueError(f"speed must be in (0, 1], got {speed}")
-        self.move_report(np.asarray(q, dtype=float))
+        goal = check_joints(self.model, q)
+        move_time(self.model, self.read(), goal, speed=speed, duration=duration)
+        self.move_report(goal)
 
     def move_report(self, q: F64, *, table: bool = True) -> MoveReport:
         """:meth:`move`, returning what was done (steps, clamped or skipped joints).
@@ -123,6 +125,7 @@ class TimedDriver:
 
     def grip(self, width: float) -> None:
         """Open (``width`` [m] over half the gripper's range) or close the gripper."""
+        check_grip(self.model, width)
         self.open_gripper(width > (self.model.gripper.width_min + self.model.gripper.width_max) / 2)
 
     def stop(self) -> None:
