@@ -23,7 +23,9 @@ file (``sim_state_file``), locked while in use.
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
+from .._clock import Clock
 from ..drivers._driver import Driver
 from ..drivers._registry import DRIVERS
 from ..drivers._registry import open_driver as open_hardware
@@ -31,11 +33,14 @@ from ..model import ArmModel
 from ..sim import World as World
 from ..sim import world_of as world_of
 from ..sim._state import state_file
-from ..sim.owi_operator import auto_operator as auto_operator
-from ._simulate import native_kind as native_kind
-from ._simulate import simulate
-from ._simulate import simulated_bus as simulated_bus
-from ._simulate import simulated_line as simulated_line
+
+if TYPE_CHECKING:
+    from ..devices.dynamixel import DynamixelBus
+    from ..sim.emulators import Emulator
+    from ..sim.owi_operator import SimOperator
+
+# The builders (``_simulate``) import every driver and simulated device: they load
+# when a simulation is opened, so ``import armkit`` stays light.
 
 
 def open_driver(
@@ -60,6 +65,8 @@ def open_driver(
         DeviceError: the device is missing or refuses, or the simulated arm is in use
             by another process (the message names it).
     """
+    from ._simulate import simulate
+
     if driver == "sim":
         state = Path(port) if port not in (None, "emu") else None
         if state is None and keep and port is None:
@@ -80,6 +87,45 @@ def open_driver(
 def sim_state_file(model: ArmModel) -> Path:
     """Where the CLI keeps the simulated ``model``'s truth between processes."""
     return state_file(model)
+
+
+def native_kind(model: ArmModel) -> str:
+    """Which device ``--driver sim`` simulates for ``model``: ``"owi535"``, ``"dynamixel"``,
+    ``"ssc32"``, ``"maestro"``, or ``"generic"`` (a bus of simulated smart servos)."""
+    for kind in ("owi535", "dynamixel", "ssc32", "maestro"):
+        if kind in model.drivers:
+            return kind
+    return "generic"
+
+
+def auto_operator(driver: object) -> SimOperator | None:
+    """An automatic operator for ``calibrate`` on a simulated OWI (None otherwise)."""
+    from ..sim.owi_operator import auto_operator as operator
+
+    return operator(driver)
+
+
+def simulated_line(kind: str) -> tuple[Any, Clock]:
+    """A serial line to a lone simulated ``"ssc32"`` or ``"maestro"`` and its world's clock
+    (for ``armkit servo --port emu``)."""
+    from ._simulate import simulated_line as line
+
+    return line(kind)
+
+
+def emulate(kind: str, model: ArmModel | None = None) -> Emulator:
+    """A simulated ``"ssc32"``, ``"maestro"`` or ``"dynamixel"`` controller (driving ``model``,
+    if given) in a real-time world on a pseudo-terminal: ``.port`` is its path."""
+    from ._emulate import emulate as start
+
+    return start(kind, model)
+
+
+def simulated_bus(baudrate: int, retries: int = 3) -> DynamixelBus:
+    """A bus of the OpenManipulator-X's five simulated XM430s (for ``dxl-scan --port emu``)."""
+    from ._simulate import simulated_bus as bus
+
+    return bus(baudrate, retries)
 
 
 __all__ = ["World", "auto_operator", "native_kind", "open_driver", "sim_state_file", "world_of"]

@@ -23,44 +23,19 @@ from ..devices._dxl_protocol import PortHandler
 from ..devices.dynamixel import DynamixelBus
 from ..devices.owi535 import OwiDevice, attach, open_device
 from ..drivers._driver import Driver
-from ..drivers.dynamixel import DynamixelDriver, calibration_points
+from ..drivers.dynamixel import DynamixelDriver
 from ..drivers.servo import open_maestro, open_ssc32
-from ..drivers.servo._config import load_setup
 from ..drivers.timed import TimedDriver, state_path
 from ..model import ArmModel
 from ..sim import SimArm, World
-from ..sim._assemble import Persistence, add_owi_arm, add_servo_arm
-from ..sim._servo_body import GRIPPER, Mount
+from ..sim._assemble import Persistence, add_owi_arm
 from ..sim._state import state_key
 from ..sim._wire import Wire, serial_port
-from ..sim.dynamixel import SimDynamixelBus
-from ..sim.maestro import SimMaestro
 from ..sim.owi535 import SimOwiUsb
 from ..sim.owi_sim import OwiSim
-from ..sim.ssc32 import SimSSC32
+from ._rigs import dynamixel_rig, generic_config, lone_rig, servo_rig
 
 KINDS = ("owi535", "ssc32", "maestro", "dynamixel", "generic")
-GENERIC_BAUD = 1_000_000
-
-
-def native_kind(model: ArmModel) -> str:
-    """Which device ``--driver sim`` simulates for ``model``: its own hardware's kind, or
-    ``"generic"`` (a bus of simulated smart servos) when its file names none."""
-    for kind in ("owi535", "dynamixel", "ssc32", "maestro"):
-        if kind in model.drivers:
-            return kind
-    return "generic"
-
-
-def generic_config(model: ArmModel) -> dict[str, Any]:
-    """The generic bus's setup: servo IDs 1..dof, the gripper next, extended position mode."""
-    return {
-        "ids": list(range(1, model.dof + 1)),
-        "gripper_id": model.dof + 1,
-        "baudrate": GENERIC_BAUD,
-        "operating_mode": "extended",
-        "gripper_ticks": (1024, 3072),
-    }
 
 
 def simulate(model: ArmModel, kind: str, world: World | None, state: Path | None) -> Driver:
@@ -92,16 +67,11 @@ def _closing(world: World, arm: SimArm, keep: Persistence | None) -> Callable[[]
 def _servo(
     model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm], kind: str
 ) -> Driver:
-    setup = load_setup(model, kind)
-    device = SimSSC32(setup.baudrate) if kind == "ssc32" else SimMaestro()
-    tables = [(i, t) for i, t in enumerate(setup.joints)]
-    if setup.grip is not None:
-        tables.append((GRIPPER, setup.grip))
-    mounts = [Mount(t.channel, j, t.pulses_us, t.values) for j, t in tables]
-    arm = add_servo_arm(world, model, device, mounts, truth=keep.truth if keep else None)
-    opened.append(arm)
-    wire = Wire(device, world, baudrate=setup.baudrate, timeout=0.1)
-    wire.on_close(_closing(world, arm, keep))
+    rig = servo_rig(model, world, kind, keep.truth if keep else None)
+    assert rig.arm is not None
+    opened.append(rig.arm)
+    wire = Wire(rig.device, world, baudrate=rig.baudrate, timeout=0.1)
+    wire.on_close(_closing(world, rig.arm, keep))
     opener = open_ssc32 if kind == "ssc32" else open_maestro
     return opener(model, serial_port(wire), clock=world.clock)
 
@@ -113,18 +83,13 @@ def _dynamixel(
     opened: list[SimArm],
     config: dict[str, Any] | None = None,
 ) -> Driver:
-    cfg = config if config is not None else dict(model.drivers["dynamixel"])
-    points = calibration_points(model, cfg)
-    bus_device = SimDynamixelBus([sid for sid, *_ in points], clock=world.now)
-    mounts = [Mount(sid, joint, ticks, values) for sid, joint, ticks, values in points]
-    truth = keep.truth if keep else None
-    arm = add_servo_arm(world, model, bus_device, mounts, truth=truth)
-    opened.append(arm)
-    baud = int(cfg.get("baudrate", GENERIC_BAUD))
-    wire = Wire(bus_device, world, baudrate=baud, timeout=0)
-    wire.on_close(_closing(world, arm, keep))
+    rig = dynamixel_rig(model, world, keep.truth if keep else None, config)
+    assert rig.arm is not None
+    opened.append(rig.arm)
+    wire = Wire(rig.device, world, baudrate=rig.baudrate, timeout=0)
+    wire.on_close(_closing(world, rig.arm, keep))
     bus = DynamixelBus.on_port(PortHandler(serial_port(wire), world.clock), clock=world.clock)
-    return DynamixelDriver(model, bus, config=cfg, clock=world.clock)
+    return DynamixelDriver(model, bus, config=rig.config, clock=world.clock)
 
 
 def _generic(
@@ -137,6 +102,7 @@ def _owi(model: ArmModel, world: World, keep: Persistence | None, opened: list[S
     arm, physics = add_owi_arm(world, model, truth=keep.truth if keep else None)
     opened.append(arm)
     board = SimOwiUsb(physics)
+    arm.device = board
     board.on_close(_closing(world, arm, keep))
     if keep is not None:
         unit = "sim" if state_key(model) == model.name else f"sim-{state_key(model)}"
@@ -163,17 +129,15 @@ def simulated_line(kind: str) -> tuple[Any, Clock]:
     """A serial line to a lone simulated ``"ssc32"`` or ``"maestro"`` (no arm on it) in a
     new world, and that world's clock: for the raw device commands (``armkit servo``)."""
     world = World()
-    device = SimSSC32() if kind == "ssc32" else SimMaestro()
-    baud = device.baudrate or 9600
-    return serial_port(Wire(device, world, baudrate=baud, timeout=0.1)), world.clock
+    rig = lone_rig(kind, world)
+    return serial_port(Wire(rig.device, world, baudrate=rig.baudrate, timeout=0.1)), world.clock
 
 
 def simulated_bus(baudrate: int, retries: int = 3) -> DynamixelBus:
     """A Dynamixel bus with the OpenManipulator-X's five simulated XM430s (IDs 11..15)
     and no arm on them: for ``armkit dxl-scan --port emu``."""
     world = World()
-    device = SimDynamixelBus(clock=world.now)
-    wire = Wire(device, world, baudrate=baudrate, timeout=0)
+    wire = Wire(lone_rig("dynamixel", world).device, world, baudrate=baudrate, timeout=0)
     port = PortHandler(serial_port(wire), world.clock)
     if not port.setBaudRate(baudrate):
         raise DeviceError(

@@ -48,7 +48,7 @@ from ..model._limits import (
 from ._driver import pieces
 
 MAX_PROFILE_MS = 32737  # time-based Profile Velocity limit
-_POLL_S = 0.01
+_POLL_S = 0.005  # between reads of Moving and Present Position while waiting [s]
 _SETTLE_S = 0.3  # longest wait for a stopped servo's encoder to reach its goal tick [s]
 _HOLD_PROFILE_MS = (50, 100)  # (ramp, total) of a stop: settle on the held tick in 0.1 s
 _Profile = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int64], float, float]

@@ -67,6 +67,9 @@ class SimArm:
 
     Attributes:
         model: the arm.  name: its name in its world (unique there).
+        device: the simulated controller driving it (``ssc32.SimSSC32``, ``maestro.SimMaestro``,
+            ``dynamixel.SimDynamixelBus``, ``owi535.SimOwiUsb``): for tests and tools that
+            inject faults or read what it received.
         analog: analog input channel -> function giving volts (0..5 V). On a Lynx6 these
             are the SSC-32's VA..VD (channels 0..3); elsewhere a serial ADC board's
             channels. A distance sensor installs its function here.
@@ -75,6 +78,7 @@ class SimArm:
     def __init__(self, model: ArmModel, body: Body, name: str | None = None) -> None:
         self.model, self.name = model, name or model.name
         self.body = body
+        self.device: object | None = None  # the simulated controller driving it (tests, tools)
         self.analog: dict[int, Callable[[], float]] = {}
         self._lock: contextlib.AbstractContextManager[object] = threading.RLock()
         self._recorder = Recorder(model.joint_names, 2)

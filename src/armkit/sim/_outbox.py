@@ -11,9 +11,15 @@ from __future__ import annotations
 
 import heapq
 from collections import deque
-from typing import Protocol
+from typing import Any, Protocol
 
 FAULTS = ("drop", "late", "garbage")
+LOG_ROWS = 10_000  # a device keeps its last this many commands for inspection (bounded memory)
+
+
+def log() -> deque[Any]:
+    """A bounded log of what a device received or did (the oldest entries go)."""
+    return deque(maxlen=LOG_ROWS)
 
 
 class ByteDevice(Protocol):

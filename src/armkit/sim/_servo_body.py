@@ -30,7 +30,8 @@ from ..model import ArmModel
 from ._arm import Truth
 
 F64 = NDArray[np.float64]
-GRIPPER = -1  # Mount.joint of the gripper's servo
+GRIPPER = -1
+_SNAP = 1e-12  # [rad]: a motor this close to its setpoint lands on it (the lag never would)  # Mount.joint of the gripper's servo
 
 
 class Outputs(Protocol):
@@ -128,6 +129,7 @@ class ServoBody:
         self._stop: float | None = None
         self._cache: dict[int, tuple[float, float]] = {}  # channel -> (unit, si)
         self._busy = False
+        self._moving = False
 
     def step(self, t: float, dt: float) -> None:
         """Integrate one step of ``dt`` [s] ending at ``t``."""
@@ -157,15 +159,23 @@ class ServoBody:
         return si
 
     def _move_motors(self, dt: float) -> None:
+        error = self.setpoint - self.motor
+        if not error.any():  # at rest on the setpoint: nothing to integrate
+            if self._moving:
+                self.velocity[:] = 0.0
+                self._moving = False
+            return
         lag = self.params.lag
         alpha = 1.0 - math.exp(-dt / lag) if lag > 0 else 1.0
         cap = self.motor_vmax * dt
-        move = np.clip((self.setpoint - self.motor) * alpha, -cap, cap)
+        move = np.minimum(np.maximum(error * alpha, -cap), cap)
+        move[np.abs(error) < _SNAP] = error[np.abs(error) < _SNAP]  # land exactly
         self.motor += move
         self.velocity = move / dt
+        self._moving = True
         half = self.params.backlash / 2.0
-        joint = np.clip(self.joint, self.motor - half, self.motor + half)
-        self.joint = np.clip(joint, self.lower, self.upper)
+        joint = np.minimum(np.maximum(self.joint, self.motor - half), self.motor + half)
+        self.joint = np.minimum(np.maximum(joint, self.lower), self.upper)
 
     def _move_gripper(self, dt: float) -> None:
         step = self.params.grip_speed * dt

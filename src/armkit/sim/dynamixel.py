@@ -19,11 +19,12 @@ the Baud Rate register is not checked against the host's rate.
 
 from __future__ import annotations
 
+from collections import deque
 from collections.abc import Callable, Iterable
 
 from ..devices import _dxl_packet as pkt
 from ..devices import _xm430 as xm
-from ._outbox import Outbox
+from ._outbox import Outbox, log
 from .xm430 import ACCESS_ERROR, Servo
 
 FAULTS = ("drop", "corrupt", "late", "vanish", "overload")
@@ -35,7 +36,8 @@ class SimDynamixelBus:
     """XM430 servos on one bus (``ids``), on ``clock`` [s].
 
     Attributes:
-        servos: ID -> ``Servo``.  received: bytes read from the bus (count).
+        servos: ID -> ``Servo``.  received: bytes read from the bus (count).  frames: the
+            last frames read (bounded).
         outbox: the servos' status packets.  baudrate: None (any rate is answered).
     """
 
@@ -53,7 +55,8 @@ class SimDynamixelBus:
         self.servos = {sid: Servo(sid, clock) for sid in ids}
         self.late_s = late_s
         self.outbox = Outbox()
-        self.received = 0
+        self.received = 0  # bytes read from the bus
+        self.frames: deque[bytes] = log()  # every complete frame read, as it came
         self._buffer = bytearray()
         self._pending: dict[int, list[str]] = {}
         self._vanished: set[int] = set()
@@ -97,6 +100,7 @@ class SimDynamixelBus:
             del self._buffer[:consumed]
             if frame is None:
                 return
+            self.frames.append(frame)
             try:
                 packet = pkt.decode(frame)
             except pkt.PacketError:

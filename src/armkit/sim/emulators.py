@@ -31,10 +31,13 @@ from .xm430 import Servo
 
 
 class Emulator:
-    """A simulated device in a real-time world on a pseudo-terminal (``port``)."""
+    """A simulated device in a real-time world (its own, or ``world``) on a pseudo-terminal
+    (``port``)."""
 
-    def __init__(self, device: ByteDevice, time_scale: float = 1.0) -> None:
-        self.world = World(realtime=True, pace=time_scale)
+    def __init__(
+        self, device: ByteDevice, time_scale: float = 1.0, world: World | None = None
+    ) -> None:
+        self.world = world or World(realtime=True, pace=time_scale)
         self.device = device
         self.server = PtyServer(device, self.world)
         self.port = self.server.port
@@ -98,8 +101,12 @@ class _PulseEmulator(Emulator):
 class SSC32Emulator(_PulseEmulator):
     """An SSC-32U at ``baudrate`` on a pseudo-terminal."""
 
-    def __init__(self, baudrate: int = 9600, time_scale: float = 1.0) -> None:
-        super().__init__(SimSSC32(baudrate), time_scale)
+    device: SimSSC32
+
+    def __init__(
+        self, baudrate: int = 9600, time_scale: float = 1.0, world: World | None = None
+    ) -> None:
+        super().__init__(SimSSC32(baudrate), time_scale, world)
 
 
 class MaestroEmulator(_PulseEmulator):
@@ -107,8 +114,10 @@ class MaestroEmulator(_PulseEmulator):
 
     device: SimMaestro
 
-    def __init__(self, channels: int = 24, time_scale: float = 1.0) -> None:
-        super().__init__(SimMaestro(channels), time_scale)
+    def __init__(
+        self, channels: int = 24, time_scale: float = 1.0, world: World | None = None
+    ) -> None:
+        super().__init__(SimMaestro(channels), time_scale, world)
 
     @property
     def speed(self) -> list[int]:

@@ -15,9 +15,10 @@ the factory 992..2000 µs channel range, home on error, and acceleration ramps.
 
 from __future__ import annotations
 
+from collections import deque
 from collections.abc import Callable
 
-from ._outbox import Outbox
+from ._outbox import Outbox, log
 from ._pulses import MoveRecord, PulseOutputs, VirtualServo
 
 PROTOCOL_ERROR = 1 << 4  # "serial protocol error" bit of the error field
@@ -35,9 +36,9 @@ class SimMaestro(PulseOutputs):
         self.speed = [0] * channels  # units of 0.25 µs / 10 ms
         self.acceleration = [0] * channels
         self.outbox = Outbox()
-        self.received: list[bytes] = []
-        self.errors: list[str] = []
-        self.history: list[MoveRecord] = []
+        self.received: deque[bytes] = log()
+        self.errors: deque[str] = log()
+        self.history: deque[MoveRecord] = log()
         self.error_bits = 0
         self._packet = b""
         self.commands: dict[int, tuple[int, Callable[[bytes, float], None]]] = {

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import errno
 import math
+from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -28,6 +29,7 @@ from ..devices._owi_commands import decode
 from ..devices.owi535 import INDEX, REQUEST, REQUEST_TYPE, VALUE
 from ..model import ArmModel
 from ._arm import Truth
+from ._outbox import log
 from .owi_physics import JOINTS, OwiPhysics
 
 F64 = NDArray[np.float64]
@@ -65,7 +67,8 @@ class SimOwiUsb:
         self.product_id = product_id
         self.present, self.deny_access, self.fail_after = present, deny_access, fail_after
         self.log_path = log_path
-        self.transfers: list[Transfer] = []
+        self.transfers: deque[Transfer] = log()  # the last transfers accepted (bounded)
+        self.count = 0  # transfers accepted, ever
         self.closed = False
         self._on_close: list[Callable[[], None]] = []
 
@@ -93,9 +96,7 @@ class SimOwiUsb:
 
     def check_alive(self) -> None:
         """UsbFault(ENODEV) once unplugged (or after ``fail_after`` transfers)."""
-        if not self.present or (
-            self.fail_after is not None and len(self.transfers) >= self.fail_after
-        ):
+        if not self.present or (self.fail_after is not None and self.count >= self.fail_after):
             self.present = False
             raise UsbFault(errno.ENODEV, "No such device (it may have been disconnected)")
 
@@ -112,6 +113,7 @@ class SimOwiUsb:
 
     def _record(self, transfer: Transfer) -> None:
         self.transfers.append(transfer)
+        self.count += 1
         if self.log_path is not None:
             with open(self.log_path, "a") as fh:
                 fh.write(transfer.data.hex() + "\n")

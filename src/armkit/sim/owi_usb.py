@@ -48,8 +48,8 @@ class OwiUsbBackend(usb.backend.IBackend):  # type: ignore[misc]
 
     @property
     def transfers(self) -> list[Transfer]:
-        """Every transfer the board accepted."""
-        return self.board.transfers
+        """The transfers the board accepted (the last ``LOG_ROWS``), oldest first."""
+        return list(self.board.transfers)
 
     @property
     def present(self) -> bool:

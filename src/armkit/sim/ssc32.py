@@ -20,9 +20,10 @@ I/O ``H``/``L``/``A``..``D``/``AL``..``DL`` and the analog inputs ``VA``..``VD``
 from __future__ import annotations
 
 import re
+from collections import deque
 from collections.abc import Callable
 
-from ._outbox import Outbox
+from ._outbox import Outbox, log
 from ._pulses import MoveRecord, PulseOutputs, VirtualServo
 
 CHANNELS = 32
@@ -46,9 +47,9 @@ class SimSSC32(PulseOutputs):
         self.baudrate: int | None = baudrate
         self.servos = [VirtualServo() for _ in range(CHANNELS)]
         self.outbox = Outbox()
-        self.received: list[bytes] = []
-        self.errors: list[str] = []
-        self.history: list[MoveRecord] = []
+        self.received: deque[bytes] = log()
+        self.errors: deque[str] = log()
+        self.history: deque[MoveRecord] = log()
         self.analog: dict[int, Callable[[], float]] = {}
         self._line = b""
         self.commands: dict[str, Callable[[Tokens, float], None]] = {

@@ -33,7 +33,7 @@ _TICKS_PER_S_PER_UNIT = xm.VELOCITY_UNIT_RPM * xm.TICKS_PER_TURN / 60.0
 _TICKS_PER_S2_PER_UNIT = xm.ACCELERATION_UNIT_RPM2 * xm.TICKS_PER_TURN / 3600.0
 LIMIT_ERROR, ACCESS_ERROR = 6, 7
 EXTENDED_LIMIT = 1_048_575  # Goal Position range in extended position mode [tick]
-_PRESENT = ("Present Position", "Present Velocity", "Present Current", "Moving")
+_TORQUE_ENABLE = xm.register("Torque Enable").address
 
 
 @dataclass(frozen=True, slots=True)
@@ -130,9 +130,12 @@ class Servo:
 
     def setpoint(self, now: float) -> float | None:
         """Where the profile asks the motor to be at ``now`` [tick]; None with torque off."""
-        if not self.value("Torque Enable"):
+        if not self.memory[_TORQUE_ENABLE]:
             return None
-        return self.profile.at(now)[0]
+        profile = self.profile
+        if now >= profile.t0 + profile.total:
+            return profile.start + profile.distance
+        return profile.at(now)[0]
 
     def busy(self, now: float) -> bool:
         """True while the profile is running."""
