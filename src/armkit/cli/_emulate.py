@@ -56,13 +56,13 @@ def run_emulate(args: argparse.Namespace) -> int:
     previous = signal.signal(signal.SIGTERM, lambda n, f: _stop(done, n, f))
     try:
         what = KINDS[args.kind] + (f" driving the {model.name}" if model else "")
-        print(emulator.port, flush=True)
-        print(f"armkit: {what} on {emulator.port}; Ctrl-C to stop", file=sys.stderr, flush=True)
         try:
+            print(emulator.port, flush=True)
+            print(f"armkit: {what} on {emulator.port}; Ctrl-C to stop", file=sys.stderr, flush=True)
             while not done.wait(0.5):
                 pass
         except KeyboardInterrupt:
-            pass
+            pass  # Ctrl-C is how an emulator ends
         print("armkit: emulator stopped", file=sys.stderr)
     finally:
         signal.signal(signal.SIGTERM, previous)

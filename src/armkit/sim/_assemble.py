@@ -16,6 +16,7 @@ import numpy as np
 from .._lock import exclusive
 from ..model import ArmModel
 from ._arm import SimArm, Truth
+from ._pulses import PulseOutputs
 from ._servo_body import Mount, Outputs, ServoBody, ServoParams
 from ._state import load_truth, save_truth
 from ._world import World
@@ -47,13 +48,19 @@ def add_servo_arm(
     name: str | None = None,
 ) -> SimArm:
     """An arm of servos driven by ``outputs`` through ``mounts``, added to ``world``.
-    A Dynamixel bus's servos read their positions back from the arm."""
+    A Dynamixel bus's servos read their positions back from the arm. Given a ``truth``
+    (the arm as a previous process left it), the controller was never switched off:
+    every channel still holds the arm where it is."""
     start = truth or home_truth(model)
     body = ServoBody(model, params or params_for(model), start, mounts)
     body.outputs = outputs
     if isinstance(outputs, SimDynamixelBus):
         for mount in mounts:
             _link_encoder(outputs, body, mount)
+    elif isinstance(outputs, PulseOutputs) and truth is not None:
+        for mount in mounts:
+            pulse = round(4 * mount.from_si(body.position(mount.joint))) / 4
+            outputs.go(mount.channel, pulse, 0.0, world.now())
     return world.add_arm(SimArm(model, body, world.unique_name(name or model.name)))
 
 
@@ -61,8 +68,7 @@ def _link_encoder(bus: SimDynamixelBus, body: ServoBody, mount: Mount) -> None:
     servo = bus.servos[mount.channel]
 
     def feedback() -> tuple[float, float]:
-        speed = 0.0 if mount.joint < 0 else float(body.velocity[mount.joint])
-        return mount.from_si(body.position(mount.joint)), speed * mount.slope
+        return mount.from_si(body.position(mount.joint)), body.speed(mount.joint) * mount.slope
 
     tick = round(mount.from_si(body.position(mount.joint)))
     body.place(mount.joint, mount.to_si(tick))  # a servo with torque rests on a tick

@@ -126,6 +126,7 @@ class ServoBody:
         )
         self.grip_width = truth.grip
         self.grip_goal = truth.grip
+        self.grip_velocity = 0.0  # [m/s]
         self._stop: float | None = None
         self._cache: dict[int, tuple[float, float]] = {}  # channel -> (unit, si)
         self._busy = False
@@ -182,6 +183,7 @@ class ServoBody:
         width = self.grip_width + min(step, max(-step, self.grip_goal - self.grip_width))
         if self._stop is not None and width < self._stop <= self.grip_width:
             width = self._stop
+        self.grip_velocity = (width - self.grip_width) / dt
         self.grip_width = width
 
     def q(self) -> F64:
@@ -202,6 +204,10 @@ class ServoBody:
             self.grip_width = self.grip_goal = value
             return
         self.motor[joint] = self.joint[joint] = self.setpoint[joint] = value
+
+    def speed(self, joint: int) -> float:
+        """How fast ``joint``'s motor turns [rad/s] (GRIPPER: the opening changes [m/s])."""
+        return self.grip_velocity if joint == GRIPPER else float(self.velocity[joint])
 
     def position(self, joint: int) -> float:
         """What an encoder on ``joint``'s output reads [rad] (GRIPPER: the opening [m])."""

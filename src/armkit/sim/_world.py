@@ -130,7 +130,7 @@ class World:
             if name is not None and name in self._arms:
                 return self._arms[name]
             names = ", ".join(self._arms) or "none yet"
-            asked = "an arm" if name is None else f"arm {name!r}"
+            asked = "single arm" if name is None else f"arm {name!r}"
             raise ArmkitError(f"this world has no {asked} to pick; its arms: {names}")
 
     def add_arm(self, arm: SimArm) -> SimArm:
