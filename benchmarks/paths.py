@@ -7,6 +7,12 @@ streaming (seed 001) and time-parametrised streaming. For each: RMS and maximum
 distance of the true gripper path (1 kHz of the world's true joint angles
 through FK) from the ideal path [mm], and the simulated drawing time [s].
 
+"floor" is what the device's resolution alone costs: the ideal path's joint
+angles rounded to what the controller can be told (an XM430's tick, 0.088 deg;
+an SSC-32's whole microsecond, about 0.09 deg), RMS distance from the path [mm].
+A drawing cannot be expected below it (the servos' lag smooths the steps, so a
+streamed drawing may come out a little under it).
+
 Run: .venv/bin/python benchmarks/paths.py
 """
 
@@ -20,6 +26,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from armkit.connect import open_driver, world_of
+from armkit.drivers.dynamixel import DynamixelDriver
+from armkit.drivers.servo import ServoArmDriver
 from armkit.kinematics import fk
 from armkit.model import ArmModel, load_model
 from armkit.motion import (
@@ -67,8 +75,28 @@ def draw(model: ArmModel, points: F64, pitch: float, streamer: Streamer) -> tupl
     return fk(model, rec.q)[:, :3, 3], t1 - t0
 
 
+def floor(model: ArmModel, ideal: F64, pitch: float) -> float:
+    """RMS distance [mm] of the ideal path rounded to the device's resolution."""
+    driver = open_driver(model, "sim")
+    path = plan_path(model, ideal, pitch, driver.read())
+    if isinstance(driver, DynamixelDriver):
+        held = np.array([driver.to_angles(driver.to_ticks(q)) for q in path.q])
+    else:
+        assert isinstance(driver, ServoArmDriver)
+        tables = driver.joints
+        held = np.array(
+            [
+                [t.to_value(round(t.to_pulse(a))) for t, a in zip(tables, q, strict=True)]
+                for q in path.q
+            ]
+        )
+    driver.close()
+    err = distance_to_polyline(fk(model, held)[:, :3, 3], ideal) * 1000
+    return float(np.sqrt(np.mean(err**2)))
+
+
 def main() -> None:
-    cols = ("rms mm", "max mm", "time s", "x naive")
+    cols = ("rms mm", "max mm", "time s", "x naive", "floor")
     head = f"{'arm':<18} {'shape':<11} {'mode':<12} " + " ".join(f"{c:>7}" for c in cols)
     print(head)
     print("-" * len(head))
@@ -77,6 +105,7 @@ def main() -> None:
         model = load_model(arm_name)
         for shape, make in SHAPES.items():
             ideal = make(centre, 0.0002)
+            lowest = floor(model, ideal, pitch)
             naive_time = math.nan
             for mode, streamer in MODES.items():
                 true, took = draw(model, make(centre, SPACING), pitch, streamer)
@@ -85,7 +114,7 @@ def main() -> None:
                 rms = float(np.sqrt(np.mean(err**2)))
                 print(
                     f"{arm_name:<18} {shape:<11} {mode:<12} {rms:7.3f} {err.max():7.3f} "
-                    f"{took:7.2f} {naive_time / took:7.2f}"
+                    f"{took:7.2f} {naive_time / took:7.2f} {lowest:7.3f}"
                 )
     print(f"\n(simulated; {time.perf_counter() - started:.1f} s of real time for the whole table)")
 
