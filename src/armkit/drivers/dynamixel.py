@@ -37,22 +37,15 @@ from .._errors import DeviceError
 from ..devices import _xm430 as xm
 from ..devices.dynamixel import DynamixelBus
 from ..model import ArmModel
-from ..model._limits import (
-    check_grip,
-    check_joints,
-    check_speed,
-    limits,
-    move_time,
-    ramp_time,
-)
+from ..model._limits import check_grip, check_joints, check_speed, limits, move_time, ramp_time
 from ._driver import pieces
+from ._dxl_points import calibration_points as calibration_points
+from ._sent import SentProfile
 
 MAX_PROFILE_MS = 32737  # time-based Profile Velocity limit
 _POLL_S = 0.005  # between reads of Moving and Present Position while waiting [s]
 _SETTLE_S = 0.3  # longest wait for a stopped servo's encoder to reach its goal tick [s]
 _HOLD_PROFILE_MS = (50, 100)  # (ramp, total) of a stop: settle on the held tick in 0.1 s
-_Profile = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int64], float, float]
-_NO_PROFILE: _Profile = (np.zeros(0), np.zeros(0), np.zeros(0, dtype=np.int64), -1.0, 0.0)
 
 
 def open_driver(model: ArmModel, port: str | None) -> DynamixelDriver:
@@ -98,8 +91,7 @@ class DynamixelDriver:
         closed, opened = cfg.get("gripper_ticks", (1500, 2600))
         self._grip_ticks = (int(closed), int(opened))
         self._tolerance = int(cfg.get("position_tolerance_ticks", 30))
-        # the last profile sent: (start [rad], goal [rad], goal ticks, start time, total [s])
-        self._last = _NO_PROFILE
+        self._sent: SentProfile | None = None  # the last profile sent, while it holds
         try:
             self._setup(int(cfg.get("gripper_current", 300)))
         except DeviceError:
@@ -187,7 +179,7 @@ class DynamixelDriver:
         ticks = self.to_ticks(target)
         self.bus.set_profiles({sid: (ramp_ms, total_ms) for sid in self.ids})
         self.bus.sync_write("Goal Position", dict(zip(self.ids, ticks.tolist(), strict=True)))
-        self._last = (origin, target.copy(), ticks, self.clock.now(), total_ms / 1000.0)
+        self._sent = SentProfile(origin, target.copy(), ticks, self.clock.now(), total_ms / 1000.0)
         if wait:
             self.clock.sleep(total_ms / 1000.0)  # nothing to ask before it can be done
             self._wait(total_ms / 1000.0 * 0.5 + 1.0, ticks)
@@ -235,11 +227,9 @@ class DynamixelDriver:
         servos follow it, their encoders a little behind), unless they are further from
         it than the arrival tolerance (blocked, pushed): then where they are."""
         present = self.read()
-        start, goal, _, t0, total = self._last
-        if not start.size:
+        if self._sent is None:
             return present
-        frac = min(1.0, max(0.0, (self.clock.now() - t0) / total)) if total > 0 else 1.0
-        commanded = start + (goal - start) * frac
+        commanded = self._sent.where(self.clock.now())
         near = np.max(np.abs(present - commanded)) * self._ticks_per_rad <= self._tolerance
         return commanded if near else present
 
@@ -250,11 +240,7 @@ class DynamixelDriver:
         states = self.bus.read_states(self.ids)
         ticks = np.array([states[sid].position for sid in self.ids])
         angles = self.to_angles(ticks)
-        _, goal, goal_ticks, _, _ = self._last
-        if goal.size:
-            on_goal = ticks == goal_ticks
-            angles[on_goal] = goal[on_goal]
-        return angles
+        return angles if self._sent is None else self._sent.reading(ticks, angles)
 
     def grip_ticks(self, width: float) -> int:
         """Gripper goal tick for an opening ``width`` [m] (ValueError outside the model's range)."""
@@ -276,7 +262,7 @@ class DynamixelDriver:
         """Command every servo that answers to its present position; the IDs that did not.
         One try per servo, so that a missing one delays the others as little as possible."""
         held, lost = {}, []
-        self._last = _NO_PROFILE  # the goal sent last no longer holds
+        self._sent = None  # the goal sent last no longer holds
         retries, self.bus.retries = self.bus.retries, 0
         try:
             for sid in [*self.ids, self.gripper_id]:
@@ -314,22 +300,3 @@ class DynamixelDriver:
             on_close, self._on_close = self._on_close, None
             if on_close is not None:
                 on_close()
-
-
-def calibration_points(
-    model: ArmModel, config: Mapping[str, Any] | None = None
-) -> list[tuple[int, int, tuple[float, float], tuple[float, float]]]:
-    """The calibration as this driver uses it, as points: (servo ID, joint index or -1
-    for the gripper, two ticks, the angles [rad] or openings [m] at those ticks)."""
-    cfg = model.drivers["dynamixel"] if config is None else config
-    center = float(cfg.get("center_tick", 2048))
-    per_rad = float(cfg.get("ticks_per_turn", 4096)) / (2.0 * math.pi)
-    points = [
-        (int(sid), j, (center, center + per_rad), (0.0, 1.0)) for j, sid in enumerate(cfg["ids"])
-    ]
-    closed, opened = cfg.get("gripper_ticks", (1500, 2600))
-    g = model.gripper
-    points.append(
-        (int(cfg["gripper_id"]), -1, (float(closed), float(opened)), (g.width_min, g.width_max))
-    )
-    return points

@@ -16,7 +16,6 @@ then runs through pyserial's own ``read_until``, settings and checks.
 
 from __future__ import annotations
 
-import contextlib
 from collections.abc import Callable
 from typing import Any
 
@@ -120,87 +119,11 @@ class Wire:
             action()
 
 
-_SERIAL_CLASS: list[type] = []
-
-
 def serial_port(wire: Wire) -> Any:
     """``wire`` as a pyserial port (``serial.SerialBase``) where pyserial is installed;
     else the wire itself (it has the same methods)."""
     try:
-        import serial
+        from ._serial_port import SimSerial
     except ModuleNotFoundError:
         return wire
-    if not _SERIAL_CLASS:
-        _SERIAL_CLASS.append(_make_serial_class(serial))
-    return _SERIAL_CLASS[0](wire)
-
-
-def _make_serial_class(serial: Any) -> type:
-    class SimSerial(serial.SerialBase):  # type: ignore[misc,name-defined]
-        """A pyserial port whose other end is a simulated device (see ``Wire``)."""
-
-        def __init__(self, wire: Wire) -> None:
-            self._wire = wire
-            super().__init__(port=None, baudrate=wire.baudrate, timeout=wire.timeout)
-            self.port = wire.port
-            self.is_open = True
-
-        def open(self) -> None:
-            self.is_open = True
-
-        def close(self) -> None:
-            self.is_open = False
-            self._wire.close()
-
-        def _reconfigure_port(self, *args: object) -> None:
-            self._wire.baudrate, self._wire.timeout = self._baudrate, self._timeout
-
-        @property
-        def in_waiting(self) -> int:
-            return self._wire.in_waiting
-
-        def read(self, size: int = 1) -> bytes:
-            self._reconfigure_port()
-            return self._wire.read(size)
-
-        def write(self, data: bytes) -> int:
-            self._reconfigure_port()
-            return self._wire.write(data)
-
-        def reset_input_buffer(self) -> None:
-            self._wire.reset_input_buffer()
-
-        def reset_output_buffer(self) -> None:
-            self._wire.reset_output_buffer()
-
-        def flush(self) -> None:
-            self._wire.flush()
-
-        def _update_break_state(self) -> None:
-            pass
-
-        def _update_rts_state(self) -> None:
-            pass
-
-        def _update_dtr_state(self) -> None:
-            pass
-
-        @property
-        def cts(self) -> bool:
-            return True
-
-        @property
-        def dsr(self) -> bool:
-            return True
-
-        @property
-        def ri(self) -> bool:
-            return False
-
-        @property
-        def cd(self) -> bool:
-            return True
-
-    with contextlib.suppress(AttributeError):
-        SimSerial.__module__ = __name__
-    return SimSerial
+    return SimSerial(wire)
