@@ -216,13 +216,20 @@ def _missing(buffer: bytearray) -> int:
     return max(1, _STATUS_MIN - len(buffer))
 
 
-class GroupSyncWrite:
-    """The SDK's ``GroupSyncWrite``: one SYNC_WRITE of ``data_length`` bytes per servo."""
+class _Group:
+    """What the SDK's group classes share: a port, a packet handler, one register span."""
 
     def __init__(self, port: Any, ph: Any, start_address: int, data_length: int) -> None:
         self.port, self.ph = port, ph
         self.start_address, self.data_length = start_address, data_length
         self.data_dict: dict[int, list[int]] = {}
+
+    def clearParam(self) -> None:
+        self.data_dict.clear()
+
+
+class GroupSyncWrite(_Group):
+    """The SDK's ``GroupSyncWrite``: one SYNC_WRITE of ``data_length`` bytes per servo."""
 
     def addParam(self, dxl_id: int, data: Any) -> bool:
         if dxl_id in self.data_dict or len(data) > self.data_length:
@@ -230,27 +237,16 @@ class GroupSyncWrite:
         self.data_dict[dxl_id] = list(data)
         return True
 
-    def clearParam(self) -> None:
-        self.data_dict.clear()
-
     def txPacket(self) -> int:
         if not self.data_dict:
             return COMM_NOT_AVAILABLE
         param = [b for sid, data in self.data_dict.items() for b in (sid, *data)]
-        return int(
-            self.ph.syncWriteTxOnly(
-                self.port, self.start_address, self.data_length, param, len(param)
-            )
-        )
+        address, size = self.start_address, self.data_length
+        return int(self.ph.syncWriteTxOnly(self.port, address, size, param, len(param)))
 
 
-class GroupSyncRead:
+class GroupSyncRead(_Group):
     """The SDK's ``GroupSyncRead`` (the transmit half; replies are read with ``readRx``)."""
-
-    def __init__(self, port: Any, ph: Any, start_address: int, data_length: int) -> None:
-        self.port, self.ph = port, ph
-        self.start_address, self.data_length = start_address, data_length
-        self.data_dict: dict[int, list[int]] = {}
 
     def addParam(self, dxl_id: int) -> bool:
         if dxl_id in self.data_dict:
@@ -258,13 +254,9 @@ class GroupSyncRead:
         self.data_dict[dxl_id] = []
         return True
 
-    def clearParam(self) -> None:
-        self.data_dict.clear()
-
     def txPacket(self) -> int:
         if not self.data_dict:
             return COMM_NOT_AVAILABLE
         ids = list(self.data_dict)
-        return int(
-            self.ph.syncReadTx(self.port, self.start_address, self.data_length, ids, len(ids))
-        )
+        address, size = self.start_address, self.data_length
+        return int(self.ph.syncReadTx(self.port, address, size, ids, len(ids)))
