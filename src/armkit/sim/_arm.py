@@ -6,16 +6,13 @@ import contextlib
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Protocol
+from typing import Protocol
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..model import ArmModel
 from ._recording import Recorder, Recording
-
-if TYPE_CHECKING:
-    from ._world import World
 
 F64 = NDArray[np.float64]
 
@@ -82,18 +79,13 @@ class SimArm:
         self.analog: dict[int, Callable[[], float]] = {}
         self._lock: contextlib.AbstractContextManager[object] = threading.RLock()
         self._recorder = Recorder(model.joint_names, 2)
-        self._world: World | None = None
 
-    def join(self, world: World) -> None:
-        """Called by ``World.add_arm``: share the world's lock, record at its rate."""
-        self._world, self._lock = world, world.lock
-        self._recorder = Recorder(self.model.joint_names, world.record_rows)
-        self._recorder.add(world.now(), self.body.q())
-
-    @property
-    def world(self) -> World | None:
-        """The world this arm is in."""
-        return self._world
+    def join(self, lock: contextlib.AbstractContextManager[object], rows: int, now: float) -> None:
+        """Called by ``World.add_arm``: share the world's ``lock``, keep ``rows`` samples of
+        recording, the first at ``now`` [s]."""
+        self._lock = lock
+        self._recorder = Recorder(self.model.joint_names, rows)
+        self._recorder.add(now, self.body.q())
 
     def q(self) -> F64:
         """True joint angles [rad], shape (dof,)."""

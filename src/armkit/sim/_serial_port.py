@@ -7,15 +7,16 @@ checks run on top of the simulated line (``_wire.Wire``).
 
 from __future__ import annotations
 
-import serial
+from typing import Any
 
-from ._wire import Wire
+import serial
 
 
 class SimSerial(serial.SerialBase):  # type: ignore[misc]
-    """A pyserial port on ``wire`` (opened at once; closing it closes the wire)."""
+    """A pyserial port on ``wire`` (a ``_wire.Wire``; opened at once, closing it closes
+    the wire)."""
 
-    def __init__(self, wire: Wire) -> None:
+    def __init__(self, wire: Any) -> None:
         self._wire = wire
         super().__init__(port=None, baudrate=wire.baudrate, timeout=wire.timeout)
         self.port = wire.port
@@ -33,15 +34,15 @@ class SimSerial(serial.SerialBase):  # type: ignore[misc]
 
     @property
     def in_waiting(self) -> int:
-        return self._wire.in_waiting
+        return int(self._wire.in_waiting)
 
     def read(self, size: int = 1) -> bytes:
         self._reconfigure_port()
-        return self._wire.read(size)
+        return bytes(self._wire.read(size))
 
     def write(self, data: bytes) -> int:
         self._reconfigure_port()
-        return self._wire.write(data)
+        return int(self._wire.write(data))
 
     def reset_input_buffer(self) -> None:
         self._wire.reset_input_buffer()

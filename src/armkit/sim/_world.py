@@ -139,7 +139,7 @@ class World:
         with self.lock:
             if arm.name in self._arms:
                 raise ArmkitError(f"this world already has an arm called {arm.name!r}")
-            arm.join(self)
+            arm.join(self.lock, self.record_rows, self.now())
             self._arms[arm.name] = arm
             self._start_pacing()
         return arm
