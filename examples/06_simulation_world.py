@@ -51,7 +51,9 @@ with Arm("openmanipulator_x", driver="sim", world=world) as arm:
     world.attach(CubeInTheJaws(truth))
     arm.approach(200, 0, 20, pitch=-90)  # down onto the cube
     arm.grip(20)  # close as far as it goes: the cube is in the way
-    print(f"simulated {world.now():.2f} s; the gripper went down to z {lowest.lowest * 1000:.1f} mm")
+    print(
+        f"simulated {world.now():.2f} s; the gripper went down to z {lowest.lowest * 1000:.1f} mm"
+    )
     print(f"asked for a 20 mm grip, the jaws stopped at {truth.grip() * 1000:.1f} mm on the cube")
     arm.retreat()
     print(f"true joints now (deg): {[round(math.degrees(a), 2) for a in truth.q()]}")
