@@ -41,7 +41,7 @@ import numpy as np
 from armkit.devices import _dxl_packet as pkt
 from armkit.devices.dynamixel import DynamixelBus
 from armkit.drivers.dynamixel import DynamixelDriver
-from armkit.model import load_model
+from armkit.model import check_joints, load_model
 from armkit.sim.emulators import DynamixelEmulator
 
 IDS = [11, 12, 13, 14]
@@ -140,7 +140,7 @@ def driver_conversion(driver: DynamixelDriver) -> Callable[[], object]:
     q = np.radians([10.0, -20.0, 30.0, 40.0])
 
     def cycle() -> object:
-        ticks = driver.to_ticks(driver.check_limits(q))
+        ticks = driver.to_ticks(check_joints(driver.model, q))
         return driver.to_angles(ticks)
 
     return cycle

@@ -24,6 +24,7 @@ joint space, every joint arriving together:
 from __future__ import annotations
 
 import math
+import weakref
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -52,7 +53,11 @@ def check_joints(model: ArmModel, q: ArrayLike) -> F64:
         arr = np.asarray(q, dtype=np.float64)
     except (TypeError, ValueError):
         arr = np.full(0, np.nan)
-    if arr.shape != (model.dof,) or not np.all(np.isfinite(arr)):
+    if arr.shape == (model.dof,):
+        low, high = _bounds(model)
+        if all(a <= v <= b for a, v, b in zip(low, arr.tolist(), high, strict=True)):
+            return arr  # the common case, kept cheap: every driver command passes here
+    if arr.shape != (model.dof,) or not np.isfinite(arr).all():
         names = ", ".join(model.joint_names)
         raise ValueError(f"{model.name} needs {model.dof} finite joint angles ({names}), got {q!r}")
     for joint, angle in zip(model.joints, arr, strict=True):
@@ -63,6 +68,19 @@ def check_joints(model: ArmModel, q: ArrayLike) -> F64:
                 "choose an angle inside them"
             )
     return arr
+
+
+_BOUNDS: weakref.WeakKeyDictionary[ArmModel, tuple[list[float], list[float]]]
+_BOUNDS = weakref.WeakKeyDictionary()
+
+
+def _bounds(model: ArmModel) -> tuple[list[float], list[float]]:
+    """The limits with their slack [rad], one per joint (kept per model: a model is frozen)."""
+    found = _BOUNDS.get(model)
+    if found is None:
+        found = [j.lower - SLACK for j in model.joints], [j.upper + SLACK for j in model.joints]
+        _BOUNDS[model] = found
+    return found
 
 
 def check_grip(model: ArmModel, width: float) -> float:
