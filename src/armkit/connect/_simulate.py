@@ -35,8 +35,6 @@ from ..sim.owi535 import SimOwiUsb
 from ..sim.owi_sim import OwiSim
 from ._rigs import dynamixel_rig, generic_config, lone_rig, servo_rig
 
-KINDS = ("owi535", "ssc32", "maestro", "dynamixel", "generic")
-
 
 def simulate(model: ArmModel, kind: str, world: World | None, state: Path | None) -> Driver:
     """``model``'s driver for ``kind`` on a simulated device in ``world`` (None: a new

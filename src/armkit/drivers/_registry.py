@@ -47,7 +47,8 @@ def driver_names() -> list[str]:
 
 
 def open_driver(model: ArmModel, name: str, port: str | None = None) -> Driver:
-    """Open the driver called ``name`` for ``model`` on the real device at ``port``.
+    """Open the driver called ``name`` for ``model`` on the real device at ``port`` (the
+    factory, ``armkit.connect.open_driver``, calls this for real hardware).
 
     Raises:
         ValueError: unknown driver name (the message lists the known ones).
