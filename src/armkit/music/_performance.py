@@ -118,7 +118,8 @@ def check_performance(performance: Performance) -> None:
     if problems:
         listed = "; ".join(str(p) for p in problems)
         raise PerformanceError(
-            f"{len(problems)} of {len(performance.strikes) + _unstruck(problems)} notes of "
+            f"{len({id(p.note) for p in problems})} of "
+            f"{len(performance.strikes) + _unstruck(problems)} notes of "
             f"{performance.source or 'the piece'} cannot be played: {listed}; slow the piece "
             "down (--tempo below 1), lower the hover height or move the instrument closer",
             problems,

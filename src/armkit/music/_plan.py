@@ -40,6 +40,7 @@ class _Cursor:
     strikes: list[Strike] = field(default_factory=list)
     problems: list[Problem] = field(default_factory=list)
     previous: float | None = None
+    rebound: tuple[float, F64, tuple[str, int]] | None = None  # last rebound: when, from, bar
 
 
 def plan_performance(
@@ -92,9 +93,10 @@ class _Option:
     down: JointProfile
     hit: float  # contact time from the stroke's start [s]
     speed: float  # tip speed at contact [m/s]
-    travel: JointProfile
+    travel: JointProfile  # to the hover pose (from the last contact if ``again``)
     stroke_start: float  # score time [s]
     ready: float  # earliest stroke start the arm can make [s]
+    again: bool  # the same bar as the last note: its rebound goes straight to this hover
 
     @property
     def fits(self) -> bool:
@@ -119,11 +121,13 @@ def _plan_note(
         except UnreachableError as exc:
             why = str(exc)
             continue
-        down = predictor(poses.hover, poses.through, p.stroke_speed(target.note.velocity))
+        again = cursor.rebound is not None and cursor.rebound[2] == target.key
+        since, q_from = (cursor.rebound[0], cursor.rebound[1]) if again else (cursor.free, cursor.q)
+        travel = predictor(q_from, poses.hover, p.travel_speed)
+        down = predictor(end_of(travel), poses.through, p.stroke_speed(target.note.velocity))
         hit = contact(arm, down, float(point[2]))
         if hit is None:
             continue
-        travel = predictor(cursor.q, poses.hover, p.travel_speed)
         stroke_start = target.note.onset - lag - hit[0]
         best = _Option(
             poses,
@@ -132,7 +136,8 @@ def _plan_note(
             hit[1],
             travel,
             stroke_start,
-            cursor.free + travel.duration + p.settle,
+            since + travel.duration + p.settle,
+            again,
         )
         if best.fits:
             break
@@ -157,7 +162,12 @@ def _schedule(
     if not o.fits and cursor.previous is not None:
         needed = o.ready + o.hit + lag - cursor.previous
         cursor.problems.append(Problem(note, "too soon", note.onset - cursor.previous, needed))
-    if not np.isfinite(cursor.free):
+    if o.again:  # the last rebound goes straight to this note's hover
+        last = cursor.moves.pop()
+        cursor.moves.append(
+            Move(last.t, o.poses.hover, o.travel, last.speed, last.kind, last.strike)
+        )
+    elif not np.isfinite(cursor.free):
         send = o.stroke_start - p.settle - o.travel.duration
         cursor.moves.append(Move(send, o.poses.hover, o.travel, p.travel_speed, "travel", index))
     elif o.travel.duration > 0:
@@ -174,8 +184,15 @@ def _schedule(
     rebound = predictor(q_now, o.poses.hover, p.travel_speed)
     cursor.moves.append(Move(rebound_at, o.poses.hover, rebound, p.travel_speed, "rebound", index))
     cursor.strikes.append(Strike(target, note.onset, o.poses.height, o.poses, o.speed, lag))
-    cursor.q, cursor.free, cursor.top = o.poses.hover, rebound_at + rebound.duration, top
+    cursor.q, cursor.free, cursor.top = end_of(rebound), rebound_at + rebound.duration, top
     cursor.previous = note.onset
+    cursor.rebound = (rebound_at, q_now, target.key)
+
+
+def end_of(profile: JointProfile) -> F64:
+    """Where ``profile`` ends [rad], shape (dof,): the goal as the servos resolve it."""
+    end: F64 = profile.sample(np.array([profile.duration]))[0][0]
+    return end
 
 
 def _shifted(cursor: _Cursor, arm: ArmModel, source: str) -> Performance:

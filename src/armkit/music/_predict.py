@@ -60,21 +60,26 @@ class LinearMove:
         return self.q0 + s * (self.q1 - self.q0), vel, np.zeros_like(vel)
 
 
-def time_based_predictor(model: ArmModel, tick: float = 0.001) -> Predictor:
+def time_based_predictor(
+    model: ArmModel, tick: float = 0.001, ticks_per_turn: int | None = None
+) -> Predictor:
     """Dynamixel time-based profiles as ``drivers.dynamixel`` commands them: the total
     time of the slowest joint's trapezoid rounded up to ``tick`` [s] (1 ms on the
     XM430), a ramp rounded to ``tick`` that keeps every joint under its acceleration
-    limit, every joint on the same normalised trapezoid (a straight joint-space line)."""
+    limit, every joint on the same normalised trapezoid (a straight joint-space line).
+    Goals are rounded to the servo's position resolution, ``ticks_per_turn`` (default
+    the model's ``[drivers.dynamixel]`` value, else 4096)."""
+    a_max = np.array([j.max_acceleration for j in model.joints])
+    turn = ticks_per_turn or int(model.drivers.get("dynamixel", {}).get("ticks_per_turn", 4096))
+    per_rad = turn / (2.0 * math.pi)
 
     def predict(q0: F64, q1: F64, speed: float) -> JointProfile:
-        fastest = trapezoid(model, q0, q1, speed=speed).duration
-        total = max(1, math.ceil(fastest / tick)) * tick
-        dist = np.abs(np.asarray(q1, dtype=np.float64) - np.asarray(q0, dtype=np.float64))
-        a_max = np.array([j.max_acceleration for j in model.joints])
-        ramp = round(_shortest_ramp(total, dist, a_max) / tick) * tick
-        return ramped_line(
-            np.asarray(q0, dtype=np.float64), np.asarray(q1, dtype=np.float64), total, ramp
-        )
+        start = np.asarray(q0, dtype=np.float64)
+        goal = np.rint(np.asarray(q1, dtype=np.float64) * per_rad) / per_rad
+        fastest = trapezoid(model, start, goal, speed=speed).duration
+        total = max(1, math.ceil(fastest / tick - 1e-9)) * tick
+        ramp = round(_shortest_ramp(total, np.abs(goal - start), a_max) / tick) * tick
+        return ramped_line(start, goal, total, ramp)
 
     return predict
 

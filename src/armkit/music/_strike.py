@@ -55,7 +55,7 @@ class StrikeParams:
     loud: float = 1.0
     travel_speed: float = 1.0
     settle: float = 0.01
-    rebound_delay: float = 0.004
+    rebound_delay: float = 0.002
     clearance: float = 0.003
 
     def __post_init__(self) -> None:
