@@ -142,7 +142,7 @@ def test_the_base_may_stand_elsewhere_in_the_scene(arm: ArmModel) -> None:
     T[:3, 3] = [0.5, 0.2, 0.0]
     c, s = math.cos(0.3), math.sin(0.3)
     T[:2, :2] = [[c, -s], [s, c]]
-    xylo, drum = omx_layout()
+    xylo, _ = omx_layout()
     moved = [
         replace(
             xylo,

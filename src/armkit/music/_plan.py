@@ -121,8 +121,11 @@ def _plan_note(
         except UnreachableError as exc:
             why = str(exc)
             continue
-        again = cursor.rebound is not None and cursor.rebound[2] == target.key
-        since, q_from = (cursor.rebound[0], cursor.rebound[1]) if again else (cursor.free, cursor.q)
+        last = cursor.rebound
+        again = last is not None and last[2] == target.key
+        since, q_from = (
+            (last[0], last[1]) if last is not None and again else (cursor.free, cursor.q)
+        )
         travel = predictor(q_from, poses.hover, p.travel_speed)
         down = predictor(end_of(travel), poses.through, p.stroke_speed(target.note.velocity))
         hit = contact(arm, down, float(point[2]))
