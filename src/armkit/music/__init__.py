@@ -32,6 +32,7 @@ from ._performance import Problem as Problem
 from ._performance import Strike as Strike
 from ._performance import check_performance as check_performance
 from ._plan import plan_performance as plan_performance
+from ._plot import plot_onsets as plot_onsets
 from ._predict import JointProfile as JointProfile
 from ._predict import LinearMove as LinearMove
 from ._predict import Predictor as Predictor
@@ -46,3 +47,7 @@ from ._score import note_name as note_name
 from ._score import parse_pitch as parse_pitch
 from ._strike import StrikeParams as StrikeParams
 from ._strike import StrikePoses as StrikePoses
+from ._synth import check_output as check_output
+from ._synth import frequency as frequency
+from ._synth import render as render
+from ._synth import write_wav as write_wav

@@ -19,12 +19,14 @@ class Contact:
         instrument: name of the xylophone or drum.
         note: the bar's MIDI note (a drum's General MIDI number).
         speed: tip speed at the contact [m/s] (loudness).
+        drum: True for a drum (sounds as a drum in ``render``).
     """
 
     time: float
     instrument: str
     note: int
     speed: float = 1.0
+    drum: bool = False
 
     @property
     def key(self) -> tuple[str, int]:

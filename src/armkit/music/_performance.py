@@ -50,7 +50,8 @@ class Strike:
 
     def contact(self) -> Contact:
         """The contact this strike should make."""
-        return Contact(self.time, self.target.instrument, self.target.note.pitch, self.speed)
+        note = self.target.note
+        return Contact(self.time, self.target.instrument, note.pitch, self.speed, note.drum)
 
 
 @dataclass(frozen=True)
