@@ -48,7 +48,8 @@ def test_drums_are_noisy_and_repeatable() -> None:
     a, b = render(hit, rate=RATE), render(hit, rate=RATE)
     assert np.array_equal(a, b)
     piece = a[round(0.1 * RATE) : round(0.15 * RATE)]
-    assert np.mean(np.abs(np.diff(np.sign(piece))) > 0) > 0.05  # 10x the zero crossings of its tone: noise
+    # ten times the zero crossings of its tone: noise
+    assert np.mean(np.abs(np.diff(np.sign(piece))) > 0) > 0.05
 
 
 def test_wav_file_round_trip(tmp_path: Path) -> None:

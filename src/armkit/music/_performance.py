@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import math
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -68,6 +70,8 @@ class Problem:
 
     def __str__(self) -> str:
         head = f"{self.note.name} at {self.note.onset:.3f} s"
+        if self.reason == "too soon" and self.available == 0.0:
+            return f"{head}: sounds with the previous note; one stick strikes one note at a time"
         if self.reason == "too soon" and self.available is not None and self.needed is not None:
             return (
                 f"{head}: {self.available:.3f} s after the previous note, needs {self.needed:.3f} s"
@@ -94,6 +98,7 @@ class Performance:
         offset: performance time of the score's time 0 [s].
         model: the arm with the stick as its tool.
         source: the score's file.
+        tempo: the tempo factor it was planned at (1 = as written).
     """
 
     strikes: tuple[Strike, ...]
@@ -102,6 +107,17 @@ class Performance:
     offset: float
     model: ArmModel
     source: str = ""
+    tempo: float = 1.0
+
+    @property
+    def suggested_tempo(self) -> float | None:
+        """A tempo factor (two decimals, rounded down) at which every late note would
+        have the time it needs at its present hover; None if no note is late. A
+        slower piece may choose higher hovers, so check the new plan too."""
+        ratios = [p.available / p.needed for p in self.problems if p.available and p.needed]
+        if not ratios:
+            return None
+        return max(math.floor(self.tempo * min(ratios) * 100) / 100, 0.1)
 
     @property
     def feasible(self) -> bool:
@@ -116,15 +132,18 @@ class Performance:
 def check_performance(performance: Performance) -> None:
     """PerformanceError listing every note that cannot be played, or nothing."""
     problems = performance.problems
-    if problems:
-        listed = "; ".join(str(p) for p in problems)
-        raise PerformanceError(
-            f"{len({id(p.note) for p in problems})} of "
-            f"{len(performance.strikes) + _unstruck(problems)} notes of "
-            f"{performance.source or 'the piece'} cannot be played: {listed}; slow the piece "
-            "down (--tempo below 1), lower the hover height or move the instrument closer",
-            problems,
-        )
+    if not problems:
+        return
+    listed = "; ".join(str(p) for p in problems)
+    tempo = performance.suggested_tempo
+    slower = f"--tempo {tempo}" if tempo is not None else "--tempo below 1"
+    raise PerformanceError(
+        f"{len({id(p.note) for p in problems})} of "
+        f"{len(performance.strikes) + _unstruck(problems)} notes of "
+        f"{performance.source or 'the piece'} cannot be played: {listed}; slow the piece "
+        f"down ({slower}), lower the hover or move the instrument closer",
+        problems,
+    )
 
 
 def _unstruck(problems: tuple[Problem, ...]) -> int:

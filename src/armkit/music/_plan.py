@@ -82,7 +82,7 @@ def plan_performance(
     for target in map_notes(score.at_tempo(tempo) if tempo != 1.0 else score, layout):
         point = (T_base_world @ np.append(target.point, 1.0))[:3]
         _plan_note(arm, predictor, p, target, point, delays.of(target.key), cursor)
-    return _shifted(cursor, arm, score.source)
+    return _shifted(cursor, arm, score.source, tempo)
 
 
 @dataclass(frozen=True)
@@ -198,7 +198,7 @@ def end_of(profile: JointProfile) -> F64:
     return end
 
 
-def _shifted(cursor: _Cursor, arm: ArmModel, source: str) -> Performance:
+def _shifted(cursor: _Cursor, arm: ArmModel, source: str, tempo: float) -> Performance:
     """Shift score time so that the first command is sent at 0."""
     offset = max(0.0, -min((m.t for m in cursor.moves), default=0.0))
     moves = tuple(sorted((_later(m, offset) for m in cursor.moves), key=lambda m: m.t))
@@ -206,7 +206,7 @@ def _shifted(cursor: _Cursor, arm: ArmModel, source: str) -> Performance:
         Strike(s.target, s.time + offset, s.hover, s.poses, s.speed, s.latency)
         for s in cursor.strikes
     )
-    return Performance(strikes, moves, tuple(cursor.problems), offset, arm, source)
+    return Performance(strikes, moves, tuple(cursor.problems), offset, arm, source, tempo)
 
 
 def _later(move: Move, offset: float) -> Move:
