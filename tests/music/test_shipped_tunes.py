@@ -15,9 +15,10 @@ TUNES = Path(__file__).parent.parent.parent / "examples" / "music"
 
 
 @pytest.mark.parametrize(
-    ("name", "count"), [("ode_to_joy.mid", 16), ("twinkle.rtttl", 14), ("frere_jacques.txt", 28)]
+    ("name", "count", "drums"),
+    [("ode_to_joy.mid", 16, [38]), ("twinkle.rtttl", 14, []), ("frere_jacques.txt", 28, [38])],
 )
-def test_shipped_tunes_load(name: str, count: int) -> None:
+def test_shipped_tunes_load(name: str, count: int, drums: list[int]) -> None:
     score = load_score(TUNES / name)
     assert len(score.notes) == count
     assert all(72 <= n.pitch <= 95 for n in score.notes if not n.drum)  # C5..B6
