@@ -121,33 +121,39 @@ def _plan_note(
         except UnreachableError as exc:
             why = str(exc)
             continue
-        last = cursor.rebound
-        again = last is not None and last[2] == target.key
-        since, q_from = (
-            (last[0], last[1]) if last is not None and again else (cursor.free, cursor.q)
-        )
-        travel = predictor(q_from, poses.hover, p.travel_speed)
-        down = predictor(end_of(travel), poses.through, p.stroke_speed(target.note.velocity))
-        hit = contact(arm, down, float(point[2]))
-        if hit is None:
-            continue
-        stroke_start = target.note.onset - lag - hit[0]
-        best = _Option(
-            poses,
-            down,
-            hit[0],
-            hit[1],
-            travel,
-            stroke_start,
-            since + travel.duration + p.settle,
-            again,
-        )
-        if best.fits:
+        option = _option(arm, predictor, p, target, float(point[2]), lag, cursor, poses)
+        best = option or best
+        if best is not None and best.fits:
             break
     if best is None:
         cursor.problems.append(Problem(target.note, "unreachable", detail=why))
     else:
         _schedule(arm, predictor, p, target, float(point[2]), lag, cursor, best)
+
+
+def _option(
+    arm: ArmModel,
+    predictor: Predictor,
+    p: StrikeParams,
+    target: Target,
+    top: float,
+    lag: float,
+    cursor: _Cursor,
+    poses: StrikePoses,
+) -> _Option | None:
+    """The timing of a strike from ``poses``, or None if its stroke never reaches ``top``.
+    On the bar of the last note, the last rebound goes straight to the new hover."""
+    last = cursor.rebound
+    again = last is not None and last[2] == target.key
+    since, q_from = (last[0], last[1]) if last is not None and again else (cursor.free, cursor.q)
+    travel = predictor(q_from, poses.hover, p.travel_speed)
+    down = predictor(end_of(travel), poses.through, p.stroke_speed(target.note.velocity))
+    hit = contact(arm, down, top)
+    if hit is None:
+        return None
+    stroke_start = target.note.onset - lag - hit[0]
+    ready = since + travel.duration + p.settle
+    return _Option(poses, down, hit[0], hit[1], travel, stroke_start, ready, again)
 
 
 def _schedule(
