@@ -114,3 +114,12 @@ def test_plot_of_planned_against_played(tmp_path: Path) -> None:
     assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     with pytest.raises(ArmkitError, match="must end in"):
         plot_onsets(planned, played, tmp_path / "onsets.txt")
+
+
+def test_importing_music_loads_no_plotting_or_midi_library() -> None:
+    import subprocess
+    import sys
+
+    code = "import sys, armkit.music; print(sorted(m for m in sys.modules if m.split('.')[0] in ('matplotlib', 'mido', 'scipy')))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "[]"
