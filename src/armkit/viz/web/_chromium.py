@@ -96,7 +96,7 @@ class Chromium:
                 "a picture of the page needs Chromium; install it "
                 "(Debian: apt-get install chromium) or set ARMKIT_CHROMIUM to its path"
             )
-        self._profile = tempfile.TemporaryDirectory(prefix="armkit-chromium-")
+        self._profile = tempfile.TemporaryDirectory(prefix="armkit-chromium-", ignore_cleanup_errors=True)
         args = [exe, *FLAGS, f"--user-data-dir={self._profile.name}", "about:blank"]
         self._proc = subprocess.Popen(
             args, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
