@@ -36,9 +36,9 @@ def project(camera: Any, point: Any) -> tuple[int, int]:
     p = R.T @ (np.asarray(point, dtype=np.float64) - np.asarray(camera.position))
     assert p[2] > 0, "the point is behind the camera"
     f = (camera.image_height / 2) / np.tan(camera.fov / 2)
-    return int(round(camera.image_width / 2 + f * p[0] / p[2])), int(
-        round(camera.image_height / 2 + f * p[1] / p[2])
-    )
+    u = camera.image_width / 2 + f * float(p[0]) / float(p[2])
+    v = camera.image_height / 2 + f * float(p[1]) / float(p[2])
+    return round(u), round(v)
 
 
 def decode(png: bytes) -> np.ndarray:

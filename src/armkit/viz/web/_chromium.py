@@ -96,7 +96,9 @@ class Chromium:
                 "a picture of the page needs Chromium; install it "
                 "(Debian: apt-get install chromium) or set ARMKIT_CHROMIUM to its path"
             )
-        self._profile = tempfile.TemporaryDirectory(prefix="armkit-chromium-", ignore_cleanup_errors=True)
+        self._profile = tempfile.TemporaryDirectory(
+            prefix="armkit-chromium-", ignore_cleanup_errors=True
+        )
         args = [exe, *FLAGS, f"--user-data-dir={self._profile.name}", "about:blank"]
         self._proc = subprocess.Popen(
             args, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
@@ -142,13 +144,20 @@ class Chromium:
 
     def call(self, method: str, timeout: float = 30.0, **params: Any) -> dict[str, Any]:
         """Send one DevTools command and wait for its result."""
+        return self._send(method, params).result(timeout=timeout)
+
+    def _send(
+        self, method: str, params: dict[str, Any], session: str | None = None
+    ) -> Future[dict[str, Any]]:
         with self._send_lock:
             self._next += 1
-            ident = self._next
             future: Future[dict[str, Any]] = Future()
-            self._pending[ident] = future
-            self._ws.send(json.dumps({"id": ident, "method": method, "params": params}))
-        return future.result(timeout=timeout)
+            self._pending[self._next] = future
+            msg: dict[str, Any] = {"id": self._next, "method": method, "params": params}
+            if session is not None:
+                msg["sessionId"] = session
+            self._ws.send(json.dumps(msg))
+        return future
 
     def close(self) -> None:
         """Close the page and stop the browser (waits for it to exit)."""
@@ -187,6 +196,10 @@ class Chromium:
         self.call("Network.enable")
         self.call("Runtime.enable")
         self.call("Page.enable")
+        # the page's websocket lives in a Web Worker: attach to workers to see its frames
+        self.call(
+            "Target.setAutoAttach", autoAttach=True, waitForDebuggerOnStart=False, flatten=True
+        )
         self.call(
             "Emulation.setDeviceMetricsOverride",
             width=width,
@@ -216,7 +229,9 @@ class Chromium:
                     future.set_result(msg.get("result", {}))
             return
         method, params = msg.get("method"), msg.get("params", {})
-        if method == "Network.requestWillBeSent":
+        if method == "Target.attachedToTarget":
+            self._send("Network.enable", {}, params["sessionId"])
+        elif method == "Network.requestWillBeSent":
             self.requests.append(params["request"]["url"])
         elif method == "Network.webSocketCreated":
             self.requests.append(params["url"])
