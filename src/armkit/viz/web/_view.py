@@ -212,8 +212,8 @@ class View:
         )
         s.scene.add_light_directional("/lights/sun", intensity=1.6, position=(0.3, -0.5, 1.0))
         reach = reach_of(self.model)
-        s.initial_camera.position = (1.0 * reach, -0.95 * reach, 0.7 * reach)
-        s.initial_camera.look_at = (0.3 * reach, 0.0, 0.12 * reach)
+        s.initial_camera.position = (1.1 * reach, -1.0 * reach, 0.95 * reach)
+        s.initial_camera.look_at = (0.3 * reach, 0.0, 0.3 * reach)
         s.initial_camera.up = (0.0, 0.0, 1.0)
         self.renderer.draw([table_primitive(self.model), *scene])
 
