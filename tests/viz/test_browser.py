@@ -65,7 +65,7 @@ def page(tmp_path: Any) -> Iterator[Page]:
         yield Page(arm, view, browser, client)
         # the page came from this process alone: nothing was fetched from a network
         outside = [
-            u for u in browser.requests if not u.startswith(("http://127.0.0.1", "data:", "blob:"))
+            u for u in browser.requests if not u.startswith(("http://127.0.0.1:", "ws://127.0.0.1:", "data:", "blob:"))
         ]
         assert outside == []
 
