@@ -39,6 +39,10 @@ class Box:
     color: RGB
     opacity: float = 1.0
 
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "size", _array(self.size, (3,), "size"))
+        object.__setattr__(self, "T", _array(self.T, (4, 4), "T"))
+
 
 @dataclass(frozen=True, eq=False)
 class Cylinder:
@@ -52,6 +56,9 @@ class Cylinder:
     color: RGB
     opacity: float = 1.0
 
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "T", _array(self.T, (4, 4), "T"))
+
 
 @dataclass(frozen=True, eq=False)
 class Capsule:
@@ -64,6 +71,10 @@ class Capsule:
     radius: float
     color: RGB
 
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "p0", _array(self.p0, (3,), "p0"))
+        object.__setattr__(self, "p1", _array(self.p1, (3,), "p1"))
+
 
 @dataclass(frozen=True, eq=False)
 class Sphere:
@@ -73,6 +84,9 @@ class Sphere:
     center: F64
     radius: float
     color: RGB
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "center", _array(self.center, (3,), "center"))
 
 
 @dataclass(frozen=True, eq=False)
@@ -84,6 +98,9 @@ class Polyline:
     color: RGB
     width: float = 2.0
 
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "points", _array(self.points, (-1, 3), "points"))
+
 
 @dataclass(frozen=True, eq=False)
 class Axes:
@@ -92,6 +109,9 @@ class Axes:
     name: str
     T: F64
     length: float = 0.03
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "T", _array(self.T, (4, 4), "T"))
 
 
 @dataclass(frozen=True, eq=False)
@@ -102,6 +122,9 @@ class Label:
     position: F64
     text: str
     color: RGB = field(default=(0, 0, 0))
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "position", _array(self.position, (3,), "position"))
 
 
 Primitive = Box | Cylinder | Capsule | Sphere | Polyline | Axes | Label
@@ -150,3 +173,12 @@ def _vec3(value: ArrayLike, what: str) -> F64:
     if v.shape != (3,) or not np.all(np.isfinite(v)):
         raise ValueError(f"{what} must be 3 finite numbers [m], got {value!r}")
     return v
+
+
+def _array(value: ArrayLike, shape: tuple[int, ...], what: str) -> F64:
+    """``value`` as a float array of ``shape`` (-1: any length), finite, else ValueError."""
+    a = np.asarray(value, dtype=np.float64)
+    ok = a.ndim == len(shape) and all(w in (-1, n) for w, n in zip(shape, a.shape, strict=True))
+    if not ok or not np.all(np.isfinite(a)):
+        raise ValueError(f"{what} must be finite numbers of shape {shape}, got {value!r}")
+    return a
