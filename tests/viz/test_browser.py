@@ -65,7 +65,9 @@ def page(tmp_path: Any) -> Iterator[Page]:
         yield Page(arm, view, browser, client)
         # the page came from this process alone: nothing was fetched from a network
         outside = [
-            u for u in browser.requests if not u.startswith(("http://127.0.0.1:", "ws://127.0.0.1:", "data:", "blob:"))
+            u
+            for u in browser.requests
+            if not u.startswith(("http://127.0.0.1:", "ws://127.0.0.1:", "data:", "blob:"))
         ]
         assert outside == []
 
@@ -126,3 +128,17 @@ def test_page_follows_the_arm_when_it_moves(page: Page) -> None:
     for pixel in moved:
         assert colour_near(image, pixel, LINK_COLOUR), f"the page did not follow the arm to {pixel}"
     assert not any(colour_near(image, p, LINK_COLOUR) for p in before_links[-1:])
+
+
+def test_in_ci_a_missing_chromium_fails_instead_of_skipping(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    import browser_page
+
+    monkeypatch.setattr(browser_page, "find_chromium", lambda: None)
+    monkeypatch.setenv("CI", "true")
+    with pytest.raises(pytest.fail.Exception, match="missing in CI"):
+        browser_page.chromium_or_skip()
+    monkeypatch.setenv("CI", "")
+    with pytest.raises(pytest.skip.Exception):
+        browser_page.chromium_or_skip()

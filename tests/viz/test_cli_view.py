@@ -52,3 +52,39 @@ def test_gif_of_a_joint_path(tmp_path: Path, capsys: pytest.CaptureFixture[str])
     with Image.open(out) as img:
         assert img.n_frames > 3
     assert "frames" in capsys.readouterr().out
+
+
+def test_view_serves_the_page_on_loopback_until_ctrl_c(config: Path) -> None:
+    import os
+    import signal
+    import subprocess
+    import sys
+    import urllib.request
+
+    cmd = [
+        sys.executable,
+        "-c",
+        "from armkit.cli import main; raise SystemExit(main())",
+        "view",
+        "--port",
+        "0",
+    ]
+    env = dict(os.environ, ARMKIT_CONFIG_DIR=str(config))
+    proc = subprocess.Popen(
+        cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env
+    )
+    try:
+        assert proc.stdout is not None
+        line = proc.stdout.readline()
+        assert line.startswith("armkit view: http://127.0.0.1:") and "Ctrl-C" in line, line
+        url = line.split()[2]
+        with urllib.request.urlopen(url, timeout=10) as reply:
+            assert b"<html" in reply.read(2000).lower()
+        proc.send_signal(signal.SIGINT)
+        out, _ = proc.communicate(timeout=20)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode == 0
+    assert "stopped" in out
