@@ -229,10 +229,15 @@ class Program:
 
 @dataclass(frozen=True)
 class Source:
-    """A script's text and the name to report it by (a path or ``<shell>``)."""
+    """A script's text and the name to report it by (a path or ``<shell>``).
+
+    Attributes:
+        first_line: the number of its first line (the shell numbers its input on).
+    """
 
     name: str
     text: str
+    first_line: int = 1
 
     @property
     def lines(self) -> list[str]:
@@ -240,6 +245,7 @@ class Source:
         return self.text.splitlines()
 
     def line(self, number: int) -> str:
-        """Line ``number`` (1-based), or '' past the end."""
+        """Line ``number`` (counted from ``first_line``), or '' outside the text."""
         lines = self.lines
-        return lines[number - 1] if 0 < number <= len(lines) else ""
+        k = number - self.first_line
+        return lines[k] if 0 <= k < len(lines) else ""

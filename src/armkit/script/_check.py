@@ -8,6 +8,7 @@ import importlib
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -21,7 +22,7 @@ from ._jobs import JobUnavailable, job_function
 from ._model_arm import ModelArm
 from ._parse import parse
 from ._plan import Plan
-from ._resolve import Resolver, SceneInfo
+from ._resolve import Resolver, SceneInfo, Target
 from ._walk import Walker
 
 F64 = NDArray[np.float64]
@@ -36,6 +37,14 @@ class Setup:
     arm: Header | None = None
     driver: Header | None = None
     scene: Header | None = None
+
+
+@dataclass
+class Env:
+    """Poses and procedures known before a script starts (the shell's session)."""
+
+    poses: dict[str, Target | None] = field(default_factory=dict)
+    procs: dict[str, Define] = field(default_factory=dict)
 
 
 @dataclass
@@ -82,6 +91,7 @@ def check_source(
     require_jobs: bool = False,
     repeat: int = 1,
     base_dir: Path | None = None,
+    env: Env | None = None,
 ) -> CheckResult:
     """Parse and check ``source`` whole.
 
@@ -93,6 +103,7 @@ def check_source(
         require_jobs: a job whose function is missing is an error (``run``), not a warning.
         repeat: run the whole script this many times (``--repeat``).
         base_dir: where relative file names start (default: the script's folder).
+        env: poses and procedures already defined (copied, not changed).
     """
     program, diagnostics = parse(source)
     setup = setup_of(program)
@@ -103,26 +114,39 @@ def check_source(
         return CheckResult(
             program, load_model(DEFAULT_ARM), Plan(()), setup, None, sorted_unique(diagnostics)
         )
+    _check_arm(setup.arm, model, diagnostics)
     _check_driver(setup.driver, diagnostics)
     if scene is None and setup.scene is not None:
-        scene = load_scene_info(setup.scene, here, diagnostics)
+        scene = load_scene_info(setup.scene.value, here, setup.scene.value_loc, diagnostics)
     arm = ModelArm(
         model, model.home if q0 is None else q0, model.gripper.width_max if grip0 is None else grip0
     )
     resolver = Resolver(model, scene, here)
-    resolver.poses.update(dict.fromkeys(program.broken))
     walker = Walker(resolver, arm, source.name, checking=True)
+    if env is not None:
+        resolver.poses.update(env.poses)
+        walker.procs.update(env.procs)
+        walker.called.update(env.procs)
+        walker.redefine = True
+    resolver.poses.update(dict.fromkeys(program.broken))
     walker.broken = set(program.broken)
-    statements: tuple[Statement, ...] = program.statements
-    if repeat != 1:
-        statements = (Repeat(Num(repeat, None, RUN_LOOP), statements, RUN_LOOP),)
-    walker.walk(statements)
+    walker.walk(looped(program.statements, repeat))
     walker.finish()
     diagnostics += walker.diagnostics + _job_diagnostics(program, require_jobs)
     return CheckResult(program, model, arm.plan, setup, scene, sorted_unique(diagnostics))
 
 
-def check_file(path: str | Path, **options: object) -> CheckResult:
+def looped(statements: tuple[Statement, ...], repeat: int) -> tuple[Statement, ...]:
+    """The statements run ``repeat`` times (``--repeat``): procedures are defined once,
+    before the loop."""
+    if repeat == 1:
+        return statements
+    defines = tuple(s for s in statements if isinstance(s, Define))
+    rest = tuple(s for s in statements if not isinstance(s, Define))
+    return (*defines, Repeat(Num(repeat, None, RUN_LOOP), rest, RUN_LOOP))
+
+
+def check_file(path: str | Path, **options: Any) -> CheckResult:
     """``check_source`` on a file (same options)."""
     p = Path(path)
     try:
@@ -131,7 +155,7 @@ def check_file(path: str | Path, **options: object) -> CheckResult:
         raise ScriptCheckError(
             Source(str(p), ""), [Diagnostic(Loc(1, 1), f"cannot read {p}: {exc}")]
         ) from None
-    return check_source(Source(str(p), text), **options)  # type: ignore[arg-type]
+    return check_source(Source(str(p), text), **options)
 
 
 def _model_from(
@@ -154,6 +178,17 @@ def _model_from(
         return None
 
 
+def _check_arm(header: Header | None, model: ArmModel, diagnostics: list[Diagnostic]) -> None:
+    if header is not None and model.name not in (header.value, Path(header.value).stem):
+        diagnostics.append(
+            Diagnostic(
+                header.value_loc,
+                f"this script is for {header.value}, but the arm is {model.name}; "
+                f"run it with --arm {header.value} or change its 'arm' line",
+            )
+        )
+
+
 def _check_driver(header: Header | None, diagnostics: list[Diagnostic]) -> None:
     if header is not None and header.value not in driver_names():
         names = driver_names()
@@ -165,7 +200,9 @@ def _check_driver(header: Header | None, diagnostics: list[Diagnostic]) -> None:
         )
 
 
-def load_scene_info(header: Header, here: Path, diagnostics: list[Diagnostic]) -> SceneInfo | None:
+def load_scene_info(
+    label: str, here: Path, loc: Loc, diagnostics: list[Diagnostic]
+) -> SceneInfo | None:
     """The scene a ``scene`` line names (a file next to the script, or a shipped
     scene's name); a warning if this armkit has no ``armkit.scene`` yet."""
     try:
@@ -173,19 +210,19 @@ def load_scene_info(header: Header, here: Path, diagnostics: list[Diagnostic]) -
     except ImportError:
         diagnostics.append(
             Diagnostic(
-                header.value_loc,
+                loc,
                 "this armkit has no scenes yet (armkit.scene); the names of scene objects are not checked",
                 "warning",
             )
         )
-        return SceneInfo(header.value, None, None)
-    path = here / header.value
+        return SceneInfo(label, None, None)
+    path = here / label
     try:
-        scene = module.load_scene(path if path.exists() else header.value)
+        scene = module.load_scene(path if path.exists() else label)
     except (ArmkitError, ValueError, OSError) as exc:
-        diagnostics.append(Diagnostic(header.value_loc, f"scene {header.value!r}: {exc}"))
+        diagnostics.append(Diagnostic(loc, f"scene {label!r}: {exc}"))
         return None
-    return SceneInfo(header.value, frozenset(scene_names(scene)), scene)
+    return SceneInfo(label, frozenset(scene_names(scene)), scene)
 
 
 def scene_names(scene: object) -> Iterator[str]:

@@ -148,6 +148,10 @@ class ModelArm:
         self.time += iterations * seconds
         self.plan.total += iterations * seconds
 
+    def lose_track(self) -> None:
+        """After a failed statement: where the arm is is no longer known."""
+        self.state = replace(self.state, q=None)
+
     @contextmanager
     def blind(self) -> Iterator[None]:
         saved = (self.state, self.time, self._recording)

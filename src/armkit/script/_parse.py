@@ -38,11 +38,11 @@ class _State:
         self.diagnostics.append(Diagnostic(loc, message))
 
 
-def parse(source: Source, *, first_line: int = 1) -> tuple[Program, list[Diagnostic]]:
+def parse(source: Source) -> tuple[Program, list[Diagnostic]]:
     """Every statement of ``source`` and every problem found (the program holds the
-    lines that parsed). ``first_line`` numbers the first line (the shell's chunks)."""
-    state = _State([_Block("top", Loc(first_line, 1), None)])
-    for number, text in enumerate(source.lines, start=first_line):
+    lines that parsed)."""
+    state = _State([_Block("top", Loc(source.first_line, 1), None)])
+    for number, text in enumerate(source.lines, start=source.first_line):
         _line(state, number, text)
     while len(state.stack) > 1:
         block = state.stack[-1]

@@ -16,9 +16,9 @@ from .._errors import DeviceError, ScriptError
 from ..arm import Arm
 from ..kinematics import fk
 from ..motion import TimedStreaming, line
-from ._ast import Loc, Num, Repeat, Source, Statement
+from ._ast import Loc, Source, Statement
 from ._backend import Frame
-from ._check import RUN_LOOP, CheckResult, check_source
+from ._check import CheckResult, check_source, looped
 from ._jobs import job_function
 from ._model_arm import LINE_SPACING
 from ._resolve import JointPose, Point, Resolver, SceneInfo, Target
@@ -106,6 +106,9 @@ class ArmBackend:
     def blind(self) -> AbstractContextManager[None]:
         return nullcontext()
 
+    def lose_track(self) -> None:
+        """Never called: a failure stops the run."""
+
     def _line(self, target: Target) -> None:
         kin = (
             self.arm.model
@@ -181,9 +184,7 @@ def run_checked(
     source = result.program.source
     resolver = Resolver(arm.model, result.scene, base_dir or Path(source.name).parent)
     walker = Walker(resolver, ArmBackend(arm, result.scene, on_step), source.name, checking=False)
-    statements: tuple[Statement, ...] = result.program.statements
-    if repeat != 1:
-        statements = (Repeat(Num(repeat, None, RUN_LOOP), statements, RUN_LOOP),)
+    statements = looped(result.program.statements, repeat)
     try:
         walker.walk(statements)
     except BaseException:

@@ -54,6 +54,7 @@ class Walker:
         self.steps = 0
         self.budget = CHECK_BUDGET
         self.broken: set[str] = set()  # procedures whose definition did not parse
+        self.redefine = False  # a procedure may be defined again (the shell)
 
     def walk(self, statements: Iterable[Statement]) -> None:
         """Execute ``statements`` in order."""
@@ -74,9 +75,19 @@ class Walker:
         except ScriptRunError:
             raise
         except Fail as f:
+            self._failed(s)
             self._report(f.loc, f.message)
         except (ArmkitError, ValueError) as exc:
+            self._failed(s)
             self._report(s.loc, str(exc))
+
+    def _failed(self, s: Statement) -> None:
+        """Checking goes on after a failed statement without cascading: a pose it meant
+        to define and the arm's position become unknown."""
+        if isinstance(s, PoseDef):
+            self.resolver.poses[s.name] = None
+        if self.checking:
+            self.backend.lose_track()
 
     def _report(
         self, loc: Loc, message: str, severity: Literal["error", "warning"] = "error"
@@ -212,7 +223,7 @@ class Walker:
         return state, tuple(sorted((k, repr(v)) for k, v in self.resolver.poses.items()))
 
     def _define(self, s: Define) -> None:
-        if s.name in self.procs:
+        if s.name in self.procs and not self.redefine:
             first = self.procs[s.name].loc.line
             raise Fail(s.loc, f"procedure {s.name!r} is already defined on line {first}")
         self.procs[s.name] = s
