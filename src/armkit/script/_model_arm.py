@@ -75,11 +75,13 @@ class ModelArm:
 
     def turn(self, joint: str, angle: float | None, relative: bool) -> None:
         q0 = self.state.q
+        j = self.model.joint_index(joint)
+        if angle is not None and not relative:
+            self._check_pose(self.model.home, only=(j, angle))
         if angle is None or q0 is None:
             self._step(None, None)
             return
         q1 = q0.copy()
-        j = self.model.joint_index(joint)
         q1[j] = q0[j] + angle if relative else angle
         self._check_pose(q1)
         self._step(q1, self._joint_time(q0, q1))
@@ -198,14 +200,20 @@ class ModelArm:
         took = time_path(self.model, path, self.state.tool_speed, TOOL_ACCEL).duration
         self._step(path.q[-1].copy(), took)
 
-    def _check_pose(self, q: F64) -> None:
+    def _check_pose(self, q: F64, only: tuple[int, float] | None = None) -> None:
+        """Joint limits and the table for ``q`` [rad]; with ``only`` = (joint, angle),
+        just that joint's limits."""
+        if only is not None:
+            q = q.copy()
+            q[only[0]] = only[1]
         for joint, angle in zip(self.model.joints, q, strict=True):
             if not joint.lower - 1e-9 <= angle <= joint.upper + 1e-9:
                 raise JointLimitError(
                     f"{joint.name} {math.degrees(angle):.2f} deg is outside its limits "
                     f"{math.degrees(joint.lower):.2f}..{math.degrees(joint.upper):.2f} deg"
                 )
-        self._check_table(q, "")
+        if only is None:
+            self._check_table(q, "")
 
     def _check_table(self, q: F64, where: str) -> None:
         z = fk_frames(self._kin(), q)[1:, 2, 3]

@@ -45,6 +45,13 @@ class Point:
         p = "free" if self.pitch is None else f"{math.degrees(self.pitch):.6g}"
         return f"Point({', '.join(f'{v:.9g}' for v in self.xyz)}, pitch {p})"
 
+    def describe(self) -> str:
+        """As a script writes it: ``xyz 180 0 80 pitch -90`` [mm, deg]."""
+        xyz = " ".join(f"{v * 1000:.4g}" for v in self.xyz)
+        return f"xyz {xyz}" + (
+            "" if self.pitch is None else f" pitch {math.degrees(self.pitch):.4g}"
+        )
+
 
 @dataclass(frozen=True)
 class JointPose:
@@ -54,6 +61,10 @@ class JointPose:
 
     def __repr__(self) -> str:
         return f"JointPose({', '.join(f'{v:.9g}' for v in self.q)})"
+
+    def describe(self) -> str:
+        """As a script writes it: ``joints 0 -60 20 40`` [deg]."""
+        return "joints " + " ".join(f"{math.degrees(v):.3f}" for v in self.q)
 
 
 Target = Point | JointPose

@@ -147,9 +147,9 @@ class Session:
         if word == "where":
             return Reply(self.where())
         if word == "poses":
-            return Reply(
-                "\n".join(f"{n} = {p!r}" for n, p in self.resolver.poses.items()) or "no poses yet"
-            )
+            poses = self.resolver.poses.items()
+            lines = [f"pose {n} = {'?' if p is None else p.describe()}" for n, p in poses]
+            return Reply("\n".join(lines) or "no poses yet")
         if word == "help":
             if not args:
                 return Reply(HELP)
