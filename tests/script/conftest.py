@@ -1,20 +1,14 @@
-"""Fixtures for the script tests: a private config directory, and an arm on the
-simulator whose driver counts every command that reaches it (only the public
-``Arm`` API and ``driver.read()`` are used, so this survives a new simulator)."""
+"""Fixtures for the script tests: a private config directory and a counting arm."""
 
 from __future__ import annotations
 
 from collections.abc import Iterator
 from pathlib import Path
-from typing import Any
 
-import numpy as np
 import pytest
-from numpy.typing import NDArray
+from script_arms import CountingDriver, counting_arm
 
 from armkit import Arm
-from armkit.drivers import open_driver
-from armkit.model import load_model
 
 
 @pytest.fixture(autouse=True)
@@ -22,54 +16,6 @@ def config_dir(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     d = tmp_path / "config"
     monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(d))
     return d
-
-
-class CountingDriver:
-    """Passes everything to a real driver and counts what would make the arm act."""
-
-    def __init__(self, inner: Any) -> None:
-        self.inner = inner
-        self.sent = 0
-        self.clock = inner.clock
-
-    @property
-    def joint_names(self) -> tuple[str, ...]:
-        return tuple(self.inner.joint_names)
-
-    def move(self, q: NDArray[np.float64], **options: Any) -> None:
-        self.sent += 1
-        self.inner.move(q, **options)
-
-    def grip(self, width: float) -> None:
-        self.sent += 1
-        self.inner.grip(width)
-
-    def read(self) -> NDArray[np.float64]:
-        return np.asarray(self.inner.read(), dtype=np.float64)
-
-    def stop(self) -> None:
-        self.inner.stop()
-
-    def close(self) -> None:
-        self.inner.close()
-
-    def __getattr__(self, name: str) -> Any:  # turn_for, set_light on the OWI
-        attr = getattr(self.inner, name)
-        if callable(attr) and name in ("turn_for", "set_light"):
-
-            def counted(*args: Any, **kwargs: Any) -> Any:
-                self.sent += 1
-                return attr(*args, **kwargs)
-
-            return counted
-        return attr
-
-
-def counting_arm(name: str = "openmanipulator_x") -> tuple[Arm, CountingDriver]:
-    """An ``Arm`` on the simulator with a counting driver."""
-    model = load_model(name)
-    driver = CountingDriver(open_driver(model, "sim"))
-    return Arm(model, driver), driver  # type: ignore[arg-type]
 
 
 @pytest.fixture

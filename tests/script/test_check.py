@@ -48,10 +48,15 @@ def test_report_shows_the_line_and_a_caret() -> None:
     result = check_source(Source("job.arm", MISTAKES))
     report = ScriptCheckError(result.program.source, result.diagnostics).report()
     lines = report.splitlines()
-    k = lines.index("job.arm:3:6: error: undefined pose 'abve' (define it with 'pose abve = ...'); did you mean 'above'?")
+    k = lines.index(
+        "job.arm:3:6: error: undefined pose 'abve' (define it with 'pose abve = ...'); did you mean 'above'?"
+    )
     assert lines[k + 1] == "    move abve"
     assert lines[k + 2] == "         ^"
-    with pytest.raises(ScriptCheckError, match=r"job.arm:2:1: unknown command 'mvoe'.*\(8 errors in job.arm; nothing moved\)"):
+    with pytest.raises(
+        ScriptCheckError,
+        match=r"job.arm:2:1: unknown command 'mvoe'.*\(8 errors in job.arm; nothing moved\)",
+    ):
         result.raise_if_failed()
 
 
