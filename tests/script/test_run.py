@@ -94,7 +94,10 @@ def test_the_whole_script_repeats(arm: tuple[Arm, CountingDriver]) -> None:
     assert a.angles()["waist"] == pytest.approx(30, abs=0.5)
     with pytest.raises(ScriptCheckError, match=r"job.arm:2:3: waist 18\d\.\d\d deg") as info:
         _run(a, text, repeat=20)
-    assert info.value.diagnostics[0].notes == ("in bump called at line 4", "run 16 of 20 (--repeat)")
+    assert info.value.diagnostics[0].notes == (
+        "in bump called at line 4",
+        "run 16 of 20 (--repeat)",
+    )
 
 
 def test_a_job_runs_through_its_table_entry(

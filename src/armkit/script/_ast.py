@@ -32,10 +32,11 @@ class Num:
 
 @dataclass(frozen=True)
 class Ref:
-    """A name where a value is expected: a procedure parameter."""
+    """A name where a value is expected: a procedure parameter (``-name``: negated)."""
 
     name: str
     loc: Loc
+    negate: bool = False
 
 
 Value = Num | Ref

@@ -15,6 +15,10 @@ from ._lexer import Token
 from ._units import UNITS, Dim, UnitProblem, to_si
 
 
+def _is_name(text: str, reserved: Collection[str]) -> bool:
+    return bool(text) and Token("word", text, 0).is_name and text not in reserved
+
+
 class Problem(Exception):
     """What is wrong at a column of the line."""
 
@@ -108,6 +112,9 @@ class Cursor:
         t = self.take(what)
         if t.kind == "word" and t.is_name and t.text not in self.reserved:
             return Ref(t.text, self.loc(t))
+        name = t.text[1:]
+        if t.kind == "word" and t.text.startswith("-") and _is_name(name, self.reserved):
+            return Ref(name, self.loc(t), negate=True)
         if t.kind != "number":
             raise Problem(t.col, f"expected {what} (a number), got {t.text!r}{self._usage()}")
         unit = t.unit

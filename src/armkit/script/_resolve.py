@@ -117,7 +117,8 @@ class Resolver:
         if arg is UNKNOWN:
             return None
         if isinstance(arg, Num):
-            return self._si(arg, dim, value.loc)
+            si = self._si(arg, dim, value.loc)
+            return -si if value.negate else si
         raise Fail(value.loc, f"{value.name} is {arg!r}, a name, but {NOUN[dim]} is needed")
 
     def binding(self, name: str, loc: Loc) -> Arg:

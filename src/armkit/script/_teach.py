@@ -139,6 +139,7 @@ class Jog:
         set_light = getattr(self.arm.driver, "set_light", None)
         if not callable(set_light):
             return f"{self.arm.model.name} has no light"
+        self._flush()
         set_light(on)
         self.lines.append("light on" if on else "light off")
         return None
