@@ -216,13 +216,21 @@ def load_scene_info(
             )
         )
         return SceneInfo(label, None, None)
-    path = here / label
     try:
-        scene = module.load_scene(path if path.exists() else label)
+        scene = module.load_scene(_scene_path(label, here, module))
     except (ArmkitError, ValueError, OSError) as exc:
         diagnostics.append(Diagnostic(loc, f"scene {label!r}: {exc}"))
         return None
     return SceneInfo(label, frozenset(scene_names(scene)), scene)
+
+
+def _scene_path(label: str, here: Path, module: Any) -> Path:
+    """A file next to the script, a path, or a shipped scene's name (``board_001``)."""
+    for candidate in (here / label, Path(label)):
+        if candidate.is_file():
+            return candidate
+    shipped = Path(module.__file__).parent / "scenes" / f"{Path(label).stem}.toml"
+    return shipped if shipped.is_file() else here / label
 
 
 def scene_names(scene: object) -> Iterator[str]:

@@ -104,7 +104,7 @@ class Cursor:
         if not t.is_name:
             raise Problem(t.col, f"expected {what} (a name like 'above'), got {t.text!r}")
         if t.text in self.reserved:
-            raise Problem(t.col, f"{t.text!r} is a word of the language; choose another {what}")
+            raise Problem(t.col, f"{t.text!r} is a word of the language; choose another name")
         return t
 
     def value(self, dim: Dim, what: str) -> Value:

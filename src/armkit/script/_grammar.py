@@ -151,13 +151,7 @@ BLOCKS = {
 }
 KEYWORDS = {"xyz", "joints", "pitch", "here", "by", "open", "close", "closed", "on", "off", "port"}
 RESERVED = frozenset(
-    set(COMMANDS)
-    | set(BLOCKS)
-    | set(JOBS)
-    | KEYWORDS
-    | set(DIRECTIONS)
-    | job_keywords()
-    | set(UNITS)
+    set(COMMANDS) | set(BLOCKS) | set(JOBS) | KEYWORDS | job_keywords() | set(UNITS)
 )
 
 
