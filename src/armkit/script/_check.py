@@ -118,22 +118,26 @@ def check_source(
     _check_driver(setup.driver, diagnostics)
     if scene is None and setup.scene is not None:
         scene = load_scene_info(setup.scene.value, here, setup.scene.value_loc, diagnostics)
-    arm = ModelArm(
-        model, model.home if q0 is None else q0, model.gripper.width_max if grip0 is None else grip0
-    )
-    resolver = Resolver(model, scene, here)
-    walker = Walker(resolver, arm, source.name, checking=True)
-    if env is not None:
-        resolver.poses.update(env.poses)
-        walker.procs.update(env.procs)
-        walker.called.update(env.procs)
-        walker.redefine = True
-    resolver.poses.update(dict.fromkeys(program.broken))
-    walker.broken = set(program.broken)
+    start = (model.home if q0 is None else q0, model.gripper.width_max if grip0 is None else grip0)
+    arm = ModelArm(model, *start)
+    walker = Walker(Resolver(model, scene, here), arm, source.name, checking=True)
+    _seed(walker, program, env)
     walker.walk(looped(program.statements, repeat))
     walker.finish()
     diagnostics += walker.diagnostics + _job_diagnostics(program, require_jobs)
     return CheckResult(program, model, arm.plan, setup, scene, sorted_unique(diagnostics))
+
+
+def _seed(walker: Walker, program: Program, env: Env | None) -> None:
+    """What the walk knows before the first statement: the session's poses and
+    procedures, and the names whose definitions did not parse (not reported again)."""
+    if env is not None:
+        walker.resolver.poses.update(env.poses)
+        walker.procs.update(env.procs)
+        walker.called.update(env.procs)
+        walker.redefine = True
+    walker.resolver.poses.update(dict.fromkeys(program.broken))
+    walker.broken = set(program.broken)
 
 
 def looped(statements: tuple[Statement, ...], repeat: int) -> tuple[Statement, ...]:
