@@ -99,7 +99,8 @@ def check_source(
         model: the arm (None: the script's ``arm`` line, else openmanipulator_x).
         scene: the scene (None: the script's ``scene`` line, if any).
         q0: joint angles at the start [rad], shape (dof,) (None: the model's home).
-        grip0: gripper opening at the start [m] (None: open, for timing only).
+        grip0: gripper opening at the start [m] (None: not set yet, so the model's own
+            grip length, as ``Arm`` before its first ``grip``; timed as if open).
         require_jobs: a job whose function is missing is an error (``run``), not a warning.
         repeat: run the whole script this many times (``--repeat``).
         base_dir: where relative file names start (default: the script's folder).
@@ -118,8 +119,7 @@ def check_source(
     _check_driver(setup.driver, diagnostics)
     if scene is None and setup.scene is not None:
         scene = load_scene_info(setup.scene.value, here, setup.scene.value_loc, diagnostics)
-    start = (model.home if q0 is None else q0, model.gripper.width_max if grip0 is None else grip0)
-    arm = ModelArm(model, *start)
+    arm = ModelArm(model, model.home if q0 is None else q0, grip0)
     walker = Walker(Resolver(model, scene, here), arm, source.name, checking=True)
     _seed(walker, program, env)
     walker.walk(looped(program.statements, repeat))

@@ -35,7 +35,8 @@ TABLE_TOLERANCE = 1e-4  # [m]
 
 @dataclass(frozen=True)
 class ArmState:
-    """What the checker knows of the arm; None = not known before it runs."""
+    """What the checker knows of the arm; None = not known before it runs (``grip``:
+    not set yet, the model's own grip length)."""
 
     q: F64 | None
     grip: float | None
@@ -87,8 +88,8 @@ class ModelArm:
         self._step(q1, self._joint_time(q0, q1))
 
     def grip(self, width: float | None) -> None:
-        before = self.state.grip
-        took = None if width is None or before is None else abs(width - before) / GRIP_SPEED
+        before = self.model.gripper.width_max if self.state.grip is None else self.state.grip
+        took = None if width is None else abs(width - before) / GRIP_SPEED
         self.state = replace(self.state, grip=width)
         self._step(self.state.q, took)
 

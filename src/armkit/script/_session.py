@@ -20,7 +20,7 @@ from ._backend import ScriptRunError
 from ._check import Env, check_source
 from ._diagnostics import ScriptCheckError
 from ._grammar import RESERVED, usage_of
-from ._lexer import LexError, tokenize
+from ._lexer import LexError, Token, tokenize
 from ._resolve import JointPose, Resolver, SceneInfo
 from ._run import ArmBackend, run_source
 from ._teach import Jog, Teaching, joints_line, pose_now
@@ -170,13 +170,10 @@ class Session:
         return Reply(jog=step)
 
     def _save(self, name: str) -> Reply:
-        if (
-            not name.replace("_", "a").replace("-", "a").isalnum()
-            or not name[0].isalpha()
-            or name in RESERVED
-        ):
+        if not Token("word", name, 1).is_name or name in RESERVED:
             return Reply(
-                f"error: {name!r} cannot name a pose (letters, digits, _ and -; not a command word)"
+                f"error: {name!r} cannot name a pose (a letter, then letters, digits, _ or -; "
+                "not a word of the language)"
             )
         q = pose_now(self.arm)
         self.resolver.poses[name] = JointPose(q)
