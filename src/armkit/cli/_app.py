@@ -23,6 +23,7 @@ COMMAND_MODULES = (
     "armkit.cli._compare",
     "armkit.cli._dynamixel",
     "armkit.cli._view",
+    "armkit.cli._script",
 )
 
 EPILOG = """\
