@@ -1,0 +1,114 @@
+"""SVG files to a ``Figure`` through svgelements (the ``svg`` extra).
+
+Paths and the basic shapes (rect, circle, ellipse, line, polyline, polygon),
+with their transforms, ``use`` references and the root's viewBox, as svgelements
+resolves them at 96 px per inch; hidden elements (display:none) are left out.
+Text is left out with a warning: convert it to paths first (Inkscape: Path >
+Object to Path). The file is checked first (``_svg_check``), so a problem names
+its line and column.
+"""
+
+from __future__ import annotations
+
+import io
+import warnings
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ._errors import DrawingError, DrawingWarning
+from ._figure import Cubic, EllipticArc, Figure, FigurePath, Line, Quad, Segment
+from ._svg_check import check_svg
+
+METRES_PER_PX = 0.0254 / 96.0  # CSS: 96 px per inch
+
+
+def read_svg(path: str | Path) -> Figure:
+    """Read an SVG file; raise ``DrawingError`` naming the file, line and column."""
+    name = str(path)
+    data = read_bytes(path)
+    texts = check_svg(data, name)
+    try:
+        import svgelements
+    except ImportError:
+        raise DrawingError(
+            "reading SVG needs svgelements: pip install 'armkit[svg]'", file=name
+        ) from None
+    try:
+        svg = svgelements.SVG.parse(io.BytesIO(data))
+        paths = [p for e in svg.elements() for p in _element_paths(e, svgelements)]
+    except (ValueError, TypeError, IndexError, AttributeError, ZeroDivisionError) as e:
+        # the checks above should leave svgelements nothing to choke on
+        raise DrawingError(f"svgelements cannot read it ({e}); export it again", file=name) from e
+    notes: tuple[str, ...] = ()
+    if texts:
+        where = ", ".join(f"line {t.line}" for t in texts[:3]) + (" ..." if len(texts) > 3 else "")
+        note = (
+            f"{name}: {len(texts)} text element(s) left out ({where}); "
+            "convert text to paths to draw it (Inkscape: Path > Object to Path)"
+        )
+        warnings.warn(note, DrawingWarning, stacklevel=2)
+        notes = (note,)
+    k = METRES_PER_PX
+    to_metres = np.array([[k, 0.0, 0.0], [0.0, -k, 0.0], [0.0, 0.0, 1.0]])
+    return Figure(tuple(paths), to_metres, source=name, notes=notes)
+
+
+def read_bytes(path: str | Path) -> bytes:
+    """The file's bytes, or ``DrawingError`` naming it and why it cannot be read."""
+    try:
+        return Path(path).read_bytes()
+    except OSError as e:
+        raise DrawingError(
+            f"cannot read it ({e.strerror or e}); check the path", file=str(path)
+        ) from None
+
+
+def _element_paths(element: Any, se: Any) -> list[FigurePath]:
+    """The pen-down runs of one svgelements element (none for non-shapes)."""
+    if not isinstance(element, se.Shape):
+        return []
+    if element.values.get("visibility") in ("hidden", "collapse"):
+        return []
+    runs: list[list[Segment]] = []
+    for seg in abs(se.Path(element)):
+        if isinstance(seg, se.Move):
+            runs.append([])
+            continue
+        mine = _segment(seg, se)
+        if mine is not None:
+            if not runs:
+                runs.append([])
+            runs[-1].append(mine)
+    return [FigurePath(tuple(r)) for r in runs if r]
+
+
+def _xy(point: Any) -> np.ndarray:
+    return np.array([float(point.x), float(point.y)])
+
+
+def _segment(seg: Any, se: Any) -> Segment | None:
+    """One svgelements segment as armkit's; None for zero-length closes."""
+    if seg.start is None or seg.end is None:
+        return None
+    if isinstance(seg, se.Close | se.Line):
+        if isinstance(seg, se.Close) and seg.start == seg.end:
+            return None
+        return Line(_xy(seg.start), _xy(seg.end))
+    if isinstance(seg, se.CubicBezier):
+        return Cubic(np.array([_xy(seg.start), _xy(seg.control1), _xy(seg.control2), _xy(seg.end)]))
+    if isinstance(seg, se.QuadraticBezier):
+        return Quad(np.array([_xy(seg.start), _xy(seg.control), _xy(seg.end)]))
+    if isinstance(seg, se.Arc):
+        if seg.rx == 0 or seg.ry == 0 or seg.sweep == 0:
+            return Line(_xy(seg.start), _xy(seg.end))
+        return EllipticArc(
+            _xy(seg.center),
+            float(seg.rx),
+            float(seg.ry),
+            float(seg.get_rotation()),
+            float(seg.get_start_t()),
+            float(seg.sweep),
+        )
+    return None

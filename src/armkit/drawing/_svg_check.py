@@ -1,0 +1,128 @@
+"""First pass over an SVG file with expat: is it XML, is it an SVG, are the
+attributes armkit draws from well formed? Every problem names the file, line and
+column. Also finds the text elements, which a plotter cannot draw as they are.
+"""
+
+from __future__ import annotations
+
+import re
+import xml.parsers.expat
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from . import _svg_syntax as syntax
+from ._errors import DrawingError
+
+SVG_NS = "http://www.w3.org/2000/svg"
+SHAPE_LENGTHS = {
+    "rect": ("x", "y", "width", "height", "rx", "ry"),
+    "circle": ("cx", "cy", "r"),
+    "ellipse": ("cx", "cy", "rx", "ry"),
+    "line": ("x1", "y1", "x2", "y2"),
+    "svg": ("x", "y", "width", "height"),
+    "use": ("x", "y", "width", "height"),
+}
+NON_NEGATIVE = {"width", "height", "r", "rx", "ry"}
+
+
+@dataclass(frozen=True)
+class TextElement:
+    """Where a <text> element starts: 1-based line and column."""
+
+    line: int
+    column: int
+
+
+def _checks(tag: str) -> dict[str, Callable[[str], syntax.Problem]]:
+    """The attribute checkers for an element of this (local) tag name."""
+    checks: dict[str, Callable[[str], syntax.Problem]] = {
+        "transform": syntax.transform_list,
+    }
+    if tag == "path":
+        checks["d"] = syntax.path_data
+    if tag in ("polyline", "polygon"):
+        checks["points"] = syntax.numbers
+    if tag in ("svg", "symbol"):
+        checks["viewBox"] = syntax.view_box
+    for name in SHAPE_LENGTHS.get(tag, ()):
+        checks[name] = _length_check(name in NON_NEGATIVE)
+    return checks
+
+
+def _length_check(non_negative: bool) -> Callable[[str], syntax.Problem]:
+    def check(value: str) -> syntax.Problem:
+        return None if value.strip() == "auto" else syntax.length(value, non_negative)
+
+    return check
+
+
+def check_svg(data: bytes, file: str) -> tuple[TextElement, ...]:
+    """Raise ``DrawingError`` at the first problem; return the text elements found."""
+    parser = xml.parsers.expat.ParserCreate(namespace_separator=" ")
+    texts: list[TextElement] = []
+    depth = [0]
+
+    def start(name: str, attrs: dict[str, str]) -> None:
+        ns, _, tag = name.rpartition(" ")
+        line, col = parser.CurrentLineNumber, parser.CurrentColumnNumber + 1
+        if depth[0] == 0 and (tag != "svg" or ns not in ("", SVG_NS)):
+            raise DrawingError(
+                f"the root element is <{tag}>, not <svg>; give an SVG file",
+                file=file,
+                line=line,
+                column=col,
+            )
+        depth[0] += 1
+        if ns not in ("", SVG_NS):
+            return
+        if tag == "text":
+            texts.append(TextElement(line, col))
+        for attr, check in _checks(tag).items():
+            if attr in attrs and (problem := check(attrs[attr])):
+                offset, expected = problem
+                at_line, at_col = _attribute_position(data, parser.CurrentByteIndex, attr, offset)
+                raise DrawingError(
+                    f'<{tag}> {attr}="{_clip(attrs[attr])}": expected {expected} '
+                    f"at character {offset + 1}; fix the attribute",
+                    file=file,
+                    line=at_line or line,
+                    column=at_col or col,
+                )
+
+    parser.StartElementHandler = start
+    try:
+        parser.Parse(data, True)
+    except xml.parsers.expat.ExpatError as e:
+        what = xml.parsers.expat.errors.messages.get(e.code, str(e))
+        raise DrawingError(
+            f"not well-formed XML ({what}); fix the file or export it again",
+            file=file,
+            line=e.lineno,
+            column=e.offset + 1,
+        ) from None
+    if depth[0] == 0:
+        raise DrawingError("no <svg> element; give an SVG file", file=file, line=1, column=1)
+    return tuple(texts)
+
+
+def _attribute_position(
+    data: bytes, tag_start: int, attr: str, offset: int
+) -> tuple[int | None, int | None]:
+    """Line and column (1-based) of character ``offset`` of attribute ``attr``'s
+    value in the start tag at byte ``tag_start``; (None, None) if not found."""
+    end = data.find(b">", tag_start)
+    tag = data[tag_start : end if end >= 0 else len(data)]
+    m = re.search(rb"[\s]" + re.escape(attr.encode()) + rb"\s*=\s*[\"']", tag)
+    if tag_start < 0 or not m:
+        return None, None
+    value_start = tag_start + m.end()
+    prefix = data[:value_start].decode("utf-8", errors="replace")
+    value = data[value_start:].decode("utf-8", errors="replace")[:offset]
+    text = prefix + value
+    line = text.count("\n") + 1
+    return line, len(text) - (text.rfind("\n") + 1) + 1
+
+
+def _clip(value: str, width: int = 40) -> str:
+    value = " ".join(value.split())
+    return value if len(value) <= width else value[: width - 3] + "..."
