@@ -12,6 +12,7 @@ from numpy.typing import NDArray
 
 F64 = NDArray[np.float64]
 IntArray = NDArray[np.intp]
+EXACT = 1000
 
 
 def cell_pairs(queries: F64, points: F64, cell: float, reach: int = 1) -> tuple[IntArray, IntArray]:
@@ -44,8 +45,14 @@ def cell_pairs(queries: F64, points: F64, cell: float, reach: int = 1) -> tuple[
 
 def nearest_k(points: F64, k: int, cell: float | None = None) -> IntArray:
     """For every point (P, 2), up to ``k`` other points among the nearest in
-    its 5 x 5 cells, shape (P, k), padded with -1 (approximate k nearest)."""
+    its 5 x 5 cells, shape (P, k), padded with -1 (approximate k nearest;
+    exact for up to ``EXACT`` points)."""
     n = len(points)
+    if n <= EXACT:  # small: every pair, exactly
+        d = np.sum((points[:, None] - points[None]) ** 2, axis=2)
+        np.fill_diagonal(d, np.inf)
+        out = np.argsort(d, axis=1, kind="stable")[:, :k]
+        return np.pad(out, ((0, 0), (0, k - out.shape[1])), constant_values=-1).astype(np.intp)
     if cell is None:
         w, h = np.ptp(points, axis=0) if n else (1.0, 1.0)
         cell = max(float(np.sqrt(2.0 * w * h / max(n, 1))), 2.0 * max(w, h) / max(n, 1), 1e-9)
