@@ -104,3 +104,21 @@ def test_example_drawings_read_without_warnings() -> None:
         warnings.simplefilter("error")
         for name in ("lines.svg", "text.svg", "curve.svg"):
             assert read_svg(EXAMPLES / name).paths
+
+
+def test_an_element_svgelements_chokes_on_is_found_alone(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    import armkit.drawing._svg as svg_module
+
+    real = svg_module._element_paths
+
+    def choke_on_ellipses(element, se):  # type: ignore[no-untyped-def]
+        if isinstance(element, se.Ellipse):
+            raise TypeError("boom")
+        return real(element, se)
+
+    monkeypatch.setattr(svg_module, "_element_paths", choke_on_ellipses)
+    path = _svg(tmp_path, '<circle r="3"/>\n  <ellipse rx="3" ry="2"/>')
+    with pytest.raises(DrawingError, match=r"line 3 column 3: svgelements cannot read <ellipse>"):
+        read_svg(path)

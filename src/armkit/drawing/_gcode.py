@@ -55,8 +55,8 @@ def read_gcode(path: str | Path, *, z_down: float = 0.0) -> Figure:
     name = str(path)
     text = read_bytes(path).decode("utf-8", errors="replace")
     st = _State(name, z_down)
-    for number, line in enumerate(text.splitlines(), start=1):
-        if _run_line(st, words_of(line, number, name), number):
+    for number, line in enumerate(text.split("\n"), start=1):  # lines as editors count them
+        if _run_line(st, words_of(line.rstrip("\r"), number, name), number):
             break
     paths = tuple(FigurePath(tuple(r)) for r in st.runs if r)
     return Figure(paths, np.eye(3), source=name, dwell=st.dwell)

@@ -14,21 +14,33 @@ import io
 import warnings
 from pathlib import Path
 from typing import Any
+from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
 from ._errors import DrawingError, DrawingWarning
 from ._figure import Cubic, EllipticArc, Figure, FigurePath, Line, Quad, Segment
-from ._svg_check import check_svg
+from ._svg_check import SVG_NS, Element, check_svg
 
 METRES_PER_PX = 0.0254 / 96.0  # CSS: 96 px per inch
+SVGELEMENTS_FAILURES = (
+    ValueError,
+    TypeError,
+    IndexError,
+    KeyError,
+    AttributeError,
+    ZeroDivisionError,
+    OverflowError,
+    RecursionError,
+)
 
 
 def read_svg(path: str | Path) -> Figure:
     """Read an SVG file; raise ``DrawingError`` naming the file, line and column."""
     name = str(path)
     data = read_bytes(path)
-    texts = check_svg(data, name)
+    checked = check_svg(data, name)
+    texts = checked.texts
     try:
         import svgelements
     except ImportError:
@@ -36,11 +48,18 @@ def read_svg(path: str | Path) -> Figure:
             "reading SVG needs svgelements: pip install 'armkit[svg]'", file=name
         ) from None
     try:
-        svg = svgelements.SVG.parse(io.BytesIO(data))
-        paths = [p for e in svg.elements() for p in _element_paths(e, svgelements)]
-    except (ValueError, TypeError, IndexError, AttributeError, ZeroDivisionError) as e:
-        # the checks above should leave svgelements nothing to choke on
-        raise DrawingError(f"svgelements cannot read it ({e}); export it again", file=name) from e
+        paths = _paths(data, svgelements)
+    except SVGELEMENTS_FAILURES as e:
+        # the checks above should leave svgelements nothing to choke on; if they
+        # missed something, find the element it chokes on, alone
+        at = next((el for el in checked.elements if not _reads(el, svgelements)), None)
+        raise DrawingError(
+            f"svgelements cannot read {'<' + at.tag + '>' if at else 'it'} "
+            f"({type(e).__name__}: {e}); fix or remove it",
+            file=name,
+            line=at.line if at else None,
+            column=at.column if at else None,
+        ) from e
     notes: tuple[str, ...] = ()
     if texts:
         where = ", ".join(f"line {t.line}" for t in texts[:3]) + (" ..." if len(texts) > 3 else "")
@@ -53,6 +72,22 @@ def read_svg(path: str | Path) -> Figure:
     k = METRES_PER_PX
     to_metres = np.array([[k, 0.0, 0.0], [0.0, -k, 0.0], [0.0, 0.0, 1.0]])
     return Figure(tuple(paths), to_metres, source=name, notes=notes)
+
+
+def _paths(data: bytes, se: Any) -> list[FigurePath]:
+    svg = se.SVG.parse(io.BytesIO(data))
+    return [p for e in svg.elements() for p in _element_paths(e, se)]
+
+
+def _reads(element: Element, se: Any) -> bool:
+    """Whether svgelements reads this element alone, in an SVG of its own."""
+    attrs = " ".join(f"{k.rpartition(' ')[2]}={quoteattr(v)}" for k, v in element.attrs.items())
+    alone = f'<svg xmlns="{SVG_NS}"><{element.tag} {attrs}/></svg>'.encode()
+    try:
+        _paths(alone, se)
+    except SVGELEMENTS_FAILURES:
+        return False
+    return True
 
 
 def read_bytes(path: str | Path) -> bytes:

@@ -26,11 +26,22 @@ NON_NEGATIVE = {"width", "height", "r", "rx", "ry"}
 
 
 @dataclass(frozen=True)
-class TextElement:
-    """Where a <text> element starts: 1-based line and column."""
+class Element:
+    """An SVG element as expat saw it: local ``tag``, ``attrs``, where its start
+    tag begins (1-based ``line`` and ``column``)."""
 
+    tag: str
+    attrs: dict[str, str]
     line: int
     column: int
+
+
+@dataclass(frozen=True)
+class Checked:
+    """What the first pass found: every SVG element in document order, and the text ones."""
+
+    elements: tuple[Element, ...]
+    texts: tuple[Element, ...]
 
 
 def _checks(tag: str) -> dict[str, Callable[[str], syntax.Problem]]:
@@ -38,8 +49,7 @@ def _checks(tag: str) -> dict[str, Callable[[str], syntax.Problem]]:
     checks: dict[str, Callable[[str], syntax.Problem]] = {
         "transform": syntax.transform_list,
     }
-    if tag == "path":
-        checks["d"] = syntax.path_data
+    checks["d"] = syntax.path_data  # svgelements reads d on any element
     if tag in ("polyline", "polygon"):
         checks["points"] = syntax.numbers
     if tag in ("svg", "symbol"):
@@ -56,10 +66,10 @@ def _length_check(non_negative: bool) -> Callable[[str], syntax.Problem]:
     return check
 
 
-def check_svg(data: bytes, file: str) -> tuple[TextElement, ...]:
-    """Raise ``DrawingError`` at the first problem; return the text elements found."""
+def check_svg(data: bytes, file: str) -> Checked:
+    """Raise ``DrawingError`` at the first problem; return the elements found."""
     parser = xml.parsers.expat.ParserCreate(namespace_separator=" ")
-    texts: list[TextElement] = []
+    elements: list[Element] = []
     depth = [0]
 
     def start(name: str, attrs: dict[str, str]) -> None:
@@ -75,8 +85,14 @@ def check_svg(data: bytes, file: str) -> tuple[TextElement, ...]:
         depth[0] += 1
         if ns not in ("", SVG_NS):
             return
-        if tag == "text":
-            texts.append(TextElement(line, col))
+        elements.append(Element(tag, dict(attrs), line, col))
+        if tag == "path" and "d" not in attrs:
+            raise DrawingError(
+                "<path> has no d attribute; give it path data or remove it",
+                file=file,
+                line=line,
+                column=col,
+            )
         for attr, check in _checks(tag).items():
             if attr in attrs and (problem := check(attrs[attr])):
                 offset, expected = problem
@@ -102,7 +118,7 @@ def check_svg(data: bytes, file: str) -> tuple[TextElement, ...]:
         ) from None
     if depth[0] == 0:
         raise DrawingError("no <svg> element; give an SVG file", file=file, line=1, column=1)
-    return tuple(texts)
+    return Checked(tuple(elements), tuple(e for e in elements if e.tag == "text"))
 
 
 def _attribute_position(
