@@ -35,6 +35,7 @@ bench: $(DEVSTAMP)
 	$(BIN)/python benchmarks/paths.py
 	$(BIN)/python benchmarks/bus.py
 	$(BIN)/python benchmarks/owi_drift.py
+	$(BIN)/python benchmarks/drawing.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info src/*.egg-info .pytest_cache .mypy_cache .ruff_cache
