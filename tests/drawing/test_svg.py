@@ -62,6 +62,8 @@ def test_hidden_elements_and_text(tmp_path: Path) -> None:
         fig = read_svg(_svg(tmp_path, body))
     assert len(fig.paths) == 1
     assert "Object to Path" in fig.notes[0]
+    with pytest.warns(DrawingWarning, match=r"1 image element\(s\) left out"):
+        read_svg(_svg(tmp_path, '<image href="x.png" width="5" height="5"/><line x2="1"/>'))
 
 
 @pytest.mark.parametrize(

@@ -12,7 +12,6 @@ from ._distance import hausdorff as hausdorff
 from ._errors import DrawingError as DrawingError
 from ._errors import DrawingWarning as DrawingWarning
 from ._figure import Figure as Figure
-from ._figure import FigurePath as FigurePath
 from ._fit import Fit as Fit
 from ._fit import clip_to_box as clip_to_box
 from ._fit import fit_transform as fit_transform
@@ -34,6 +33,7 @@ from ._plan import SheetLike as SheetLike
 from ._plan import SheetPlane as SheetPlane
 from ._plan import plan_drawing as plan_drawing
 from ._plan import read_drawing as read_drawing
+from ._segments import FigurePath as FigurePath
 from ._simplify import simplify as simplify
 from ._svg import read_svg as read_svg
 

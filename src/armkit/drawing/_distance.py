@@ -17,7 +17,8 @@ from ._grid import cell_pairs
 
 F64 = NDArray[np.float64]
 CELL = 1e-3  # [m]
-CHUNK = 2048  # queries per block in the fallback
+CHUNK = 256  # queries per block in the fallback (each against every segment)
+QUERIES = 20_000  # queries per block on a grid
 
 
 def segments_of(strokes: Sequence[F64], longest: float = CELL) -> tuple[F64, F64]:
@@ -51,14 +52,15 @@ def distance_to_strokes(points: F64, strokes: Sequence[F64], cell: float = CELL)
     """Distance [m] of each point (N, 2) from the nearest stroke, shape (N,)."""
     a, b = segments_of(strokes, cell)
     best = np.full(len(points), np.inf)
-    if len(a) == 0:
+    if len(a) == 0 or len(points) == 0:
         return best
     mid = (a + b) / 2
     span = float(np.ptp(np.vstack([points, mid]), axis=0).max())
     todo = np.arange(len(points))
     while len(todo) and cell < span:  # coarser grids for the points still far
-        q, s = cell_pairs(points[todo], mid, cell, reach=1)
-        np.minimum.at(best, todo[q], _point_segment(points[todo[q]], a[s], b[s]))
+        for block in np.array_split(todo, max(1, len(todo) // QUERIES)):
+            q, s = cell_pairs(points[block], mid, cell, reach=1)
+            np.minimum.at(best, block[q], _point_segment(points[block[q]], a[s], b[s]))
         todo = todo[best[todo] > cell / 2]
         cell *= 4.0
     for block in np.array_split(todo, max(1, len(todo) // CHUNK)) if len(todo) else ():

@@ -12,54 +12,10 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
+from ._flatten import flatten_paths
+from ._segments import Cubic, FigurePath, Line, Quad
+
 F64 = NDArray[np.float64]
-
-
-@dataclass(frozen=True)
-class Line:
-    """Straight segment from ``start`` to ``end``, shape (2,) each."""
-
-    start: F64
-    end: F64
-
-
-@dataclass(frozen=True)
-class Quad:
-    """Quadratic Bézier curve through control points ``p``, shape (3, 2)."""
-
-    p: F64
-
-
-@dataclass(frozen=True)
-class Cubic:
-    """Cubic Bézier curve through control points ``p``, shape (4, 2)."""
-
-    p: F64
-
-
-@dataclass(frozen=True)
-class EllipticArc:
-    """Arc of an ellipse: ``center`` (2,), semi-axes ``rx``, ``ry`` along the axes
-    turned by ``rotation`` [rad]; the point at parameter t is
-    center + R(rotation) (rx cos t, ry sin t), t from ``t0`` through ``sweep`` [rad]
-    (negative: clockwise). A circle has rx == ry and t is its angle."""
-
-    center: F64
-    rx: float
-    ry: float
-    rotation: float
-    t0: float
-    sweep: float
-
-
-Segment = Line | Quad | Cubic | EllipticArc
-
-
-@dataclass(frozen=True)
-class FigurePath:
-    """One pen-down run: segments joined end to end (the pen stays down between them)."""
-
-    segments: tuple[Segment, ...]
 
 
 @dataclass(frozen=True)
@@ -82,7 +38,7 @@ class Figure:
             self, "scale", float(np.sqrt(abs(np.linalg.det(self.to_metres[:2, :2]))))
         )
 
-    def size(self) -> float:
+    def extent(self) -> float:
         """The diagonal of the box around every end and control point [m] (0 if empty)."""
         pts = [np.asarray(p, dtype=np.float64).reshape(-1, 2) for p in _control_points(self.paths)]
         if not pts:
@@ -93,8 +49,6 @@ class Figure:
     def flatten(self, tolerance: float) -> tuple[F64, ...]:
         """Polylines in metres (y up), shape (N, 2) each, within ``tolerance`` [m]
         of the true curves; one per path with at least one segment."""
-        from ._flatten import flatten_paths
-
         strokes = flatten_paths(self.paths, tolerance / self.scale)
         A, b = self.to_metres[:2, :2], self.to_metres[:2, 2]
         return tuple(s @ A.T + b for s in strokes)

@@ -16,7 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ._errors import DrawingError
-from ._figure import Cubic, EllipticArc, FigurePath, Line, Quad, Segment
+from ._segments import Cubic, EllipticArc, FigurePath, Line, Quad, Segment
 
 F64 = NDArray[np.float64]
 MAX_POINTS = 5_000_000  # a flattened drawing larger than this is refused

@@ -21,8 +21,9 @@ from pathlib import Path
 import numpy as np
 
 from ._errors import DrawingError
-from ._figure import EllipticArc, Figure, FigurePath, Line, Segment
+from ._figure import Figure
 from ._gcode_words import Word, words_of
+from ._segments import EllipticArc, FigurePath, Line, Segment
 from ._svg import read_bytes
 
 LETTERS = "XYZIJFPS"

@@ -15,8 +15,10 @@ from numpy.typing import NDArray
 from ._distance import distance_to_strokes, hausdorff
 from ._errors import DrawingError
 from ._plan import DrawingPlan, SheetPlane
+from ._simplify import simplify
 
 F64 = NDArray[np.float64]
+TRACE_TOLERANCE = 1e-6  # [m]: the ink is simplified this much before the Hausdorff distance
 
 
 @dataclass(frozen=True)
@@ -75,17 +77,20 @@ def sheet_uv(sheet: SheetPlane, points: F64) -> tuple[F64, F64]:
     return uvh[:, :2], uvh[:, 2]
 
 
-def ink(trace: PenTrace, sheet: SheetPlane) -> list[F64]:
-    """The pen-down runs of the trace on the sheet, (K, 2) each [m]."""
+def ink(trace: PenTrace, sheet: SheetPlane, within: float = 0.0) -> list[F64]:
+    """The pen-down runs of the trace on the sheet, (K, 2) each [m]; with
+    ``within`` > 0 [m], simplified to that tolerance (a 1 kHz trace has many
+    points a few micrometres apart)."""
     uv, _ = sheet_uv(sheet, trace.points)
     d = trace.down.astype(np.int8)
     edges = np.flatnonzero(np.diff(np.concatenate([[0], d, [0]])))
-    return [uv[a:b] for a, b in zip(edges[::2], edges[1::2], strict=True)]
+    runs = [uv[a:b] for a, b in zip(edges[::2], edges[1::2], strict=True)]
+    return simplify(runs, within) if within > 0 else runs
 
 
 def measure(plan: DrawingPlan, trace: PenTrace, sheet: SheetPlane) -> DrawingMetrics:
     """Compare the trace with the plan on ``sheet`` (the plan's sheet in the world)."""
-    runs = ink(trace, sheet)
+    runs = ink(trace, sheet, within=TRACE_TOLERANCE)
     if not runs:
         raise DrawingError("the trace never touches the paper: nothing was drawn")
     uv, _ = sheet_uv(sheet, trace.points)

@@ -151,11 +151,13 @@ def _fitted(
     fig: Figure, size: tuple[float, float], fit: Fit, tolerance: float
 ) -> tuple[F64, list[F64]]:
     """The fit's map and the strokes flattened within tolerance / 2 on the sheet."""
-    extent = fig.size()
-    if not fig.paths or not math.isfinite(extent):
-        hint = " (the pen never goes down: Z <= z_down, M3 or M300 S30)" if fig.dwell >= 0 else ""
-        what = "nothing to draw" + hint if not fig.paths else "coordinates are not finite"
-        raise DrawingError(what, file=fig.source)
+    extent = fig.extent()
+    if not fig.paths:
+        gcode = Path(fig.source).suffix.lower() in GCODE_SUFFIXES
+        hint = " (the pen never goes down: Z <= z_down, M3 or M300 S30)" if gcode else ""
+        raise DrawingError("nothing to draw" + hint, file=fig.source)
+    if not math.isfinite(extent):
+        raise DrawingError("coordinates are not finite", file=fig.source)
     coarse = fig.flatten(max(extent, 1e-9) / 2000)
     M = fit_transform(coarse, size, fit)
     k = float(np.sqrt(abs(np.linalg.det(M[:2, :2]))))

@@ -16,7 +16,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ._errors import DrawingError
-from ._figure import EllipticArc, Figure, FigurePath, Line
+from ._figure import Figure
+from ._segments import EllipticArc, FigurePath, Line
 
 F64 = NDArray[np.float64]
 

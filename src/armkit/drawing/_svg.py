@@ -19,7 +19,8 @@ from xml.sax.saxutils import quoteattr
 import numpy as np
 
 from ._errors import DrawingError, DrawingWarning
-from ._figure import Cubic, EllipticArc, Figure, FigurePath, Line, Quad, Segment
+from ._figure import Figure
+from ._segments import Cubic, EllipticArc, FigurePath, Line, Quad, Segment
 from ._svg_check import SVG_NS, Element, check_svg
 
 METRES_PER_PX = 0.0254 / 96.0  # CSS: 96 px per inch
@@ -40,7 +41,6 @@ def read_svg(path: str | Path) -> Figure:
     name = str(path)
     data = read_bytes(path)
     checked = check_svg(data, name)
-    texts = checked.texts
     try:
         import svgelements
     except ImportError:
@@ -60,18 +60,26 @@ def read_svg(path: str | Path) -> Figure:
             line=at.line if at else None,
             column=at.column if at else None,
         ) from e
-    notes: tuple[str, ...] = ()
-    if texts:
-        where = ", ".join(f"line {t.line}" for t in texts[:3]) + (" ..." if len(texts) > 3 else "")
-        note = (
-            f"{name}: {len(texts)} text element(s) left out ({where}); "
-            "convert text to paths to draw it (Inkscape: Path > Object to Path)"
-        )
-        warnings.warn(note, DrawingWarning, stacklevel=2)
-        notes = (note,)
+    notes = _left_out_note(name, checked.left_out)
     k = METRES_PER_PX
     to_metres = np.array([[k, 0.0, 0.0], [0.0, -k, 0.0], [0.0, 0.0, 1.0]])
     return Figure(tuple(paths), to_metres, source=name, notes=notes)
+
+
+def _left_out_note(name: str, left_out: tuple[Element, ...]) -> tuple[str, ...]:
+    """Warn about, and note, the text and images a pen cannot draw."""
+    if not left_out:
+        return ()
+    kinds = sorted({e.tag for e in left_out})
+    where = ", ".join(f"line {e.line}" for e in left_out[:3]) + (
+        " ..." if len(left_out) > 3 else ""
+    )
+    note = (
+        f"{name}: {len(left_out)} {' and '.join(kinds)} element(s) left out ({where}); "
+        "convert text to paths to draw it (Inkscape: Path > Object to Path), trace images"
+    )
+    warnings.warn(note, DrawingWarning, stacklevel=3)
+    return (note,)
 
 
 def _paths(data: bytes, se: Any) -> list[FigurePath]:

@@ -38,10 +38,11 @@ class Element:
 
 @dataclass(frozen=True)
 class Checked:
-    """What the first pass found: every SVG element in document order, and the text ones."""
+    """What the first pass found: every SVG element in document order, and those
+    a plotter cannot draw as they are (text, images)."""
 
     elements: tuple[Element, ...]
-    texts: tuple[Element, ...]
+    left_out: tuple[Element, ...]
 
 
 def _checks(tag: str) -> dict[str, Callable[[str], syntax.Problem]]:
@@ -70,40 +71,15 @@ def check_svg(data: bytes, file: str) -> Checked:
     """Raise ``DrawingError`` at the first problem; return the elements found."""
     parser = xml.parsers.expat.ParserCreate(namespace_separator=" ")
     elements: list[Element] = []
-    depth = [0]
 
     def start(name: str, attrs: dict[str, str]) -> None:
         ns, _, tag = name.rpartition(" ")
-        line, col = parser.CurrentLineNumber, parser.CurrentColumnNumber + 1
-        if depth[0] == 0 and (tag != "svg" or ns not in ("", SVG_NS)):
-            raise DrawingError(
-                f"the root element is <{tag}>, not <svg>; give an SVG file",
-                file=file,
-                line=line,
-                column=col,
-            )
-        depth[0] += 1
-        if ns not in ("", SVG_NS):
-            return
-        elements.append(Element(tag, dict(attrs), line, col))
-        if tag == "path" and "d" not in attrs:
-            raise DrawingError(
-                "<path> has no d attribute; give it path data or remove it",
-                file=file,
-                line=line,
-                column=col,
-            )
-        for attr, check in _checks(tag).items():
-            if attr in attrs and (problem := check(attrs[attr])):
-                offset, expected = problem
-                at_line, at_col = _attribute_position(data, parser.CurrentByteIndex, attr, offset)
-                raise DrawingError(
-                    f'<{tag}> {attr}="{_clip(attrs[attr])}": expected {expected} '
-                    f"at character {offset + 1}; fix the attribute",
-                    file=file,
-                    line=at_line or line,
-                    column=at_col or col,
-                )
+        at = Element(tag, dict(attrs), parser.CurrentLineNumber, parser.CurrentColumnNumber + 1)
+        if not elements and (tag != "svg" or ns not in ("", SVG_NS)):
+            raise _error(file, at, f"the root element is <{tag}>, not <svg>; give an SVG file")
+        if ns in ("", SVG_NS):
+            elements.append(at)
+            _check_element(data, file, at, parser.CurrentByteIndex)
 
     parser.StartElementHandler = start
     try:
@@ -116,9 +92,31 @@ def check_svg(data: bytes, file: str) -> Checked:
             line=e.lineno,
             column=e.offset + 1,
         ) from None
-    if depth[0] == 0:
+    if not elements:
         raise DrawingError("no <svg> element; give an SVG file", file=file, line=1, column=1)
-    return Checked(tuple(elements), tuple(e for e in elements if e.tag == "text"))
+    left_out = tuple(e for e in elements if e.tag in ("text", "image"))
+    return Checked(tuple(elements), left_out)
+
+
+def _error(file: str, at: Element, what: str) -> DrawingError:
+    return DrawingError(what, file=file, line=at.line, column=at.column)
+
+
+def _check_element(data: bytes, file: str, at: Element, byte: int) -> None:
+    """Raise at the first attribute of ``at`` that is not well formed."""
+    if at.tag == "path" and "d" not in at.attrs:
+        raise _error(file, at, "<path> has no d attribute; give it path data or remove it")
+    for attr, check in _checks(at.tag).items():
+        if attr in at.attrs and (problem := check(at.attrs[attr])):
+            offset, expected = problem
+            line, col = _attribute_position(data, byte, attr, offset)
+            raise DrawingError(
+                f'<{at.tag}> {attr}="{_clip(at.attrs[attr])}": expected {expected} '
+                f"at character {offset + 1}; fix the attribute",
+                file=file,
+                line=line or at.line,
+                column=col or at.column,
+            )
 
 
 def _attribute_position(
