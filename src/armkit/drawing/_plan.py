@@ -141,10 +141,19 @@ def plan_drawing(
         raise DrawingError(
             "everything lies outside the sheet; fit it to the sheet", file=fig.source
         )
-    uv0 = None if start is None else np.asarray(start, dtype=np.float64).reshape(2)
+    uv0 = _start(start)
     strokes = simplify(merge_strokes(kept, tolerance / 2), tolerance / 2)
     ordered = order_strokes(strokes, uv0)
     return DrawingPlan(tuple(ordered), size, M, tolerance, fig.source, notes, uv0, fig.dwell)
+
+
+def _start(start: ArrayLike | None) -> F64 | None:
+    if start is None:
+        return None
+    uv = np.asarray(start, dtype=np.float64)
+    if uv.shape != (2,) or not np.all(np.isfinite(uv)):
+        raise DrawingError(f"start must be 2 finite sheet coordinates (u, v) [m], got {start!r}")
+    return uv
 
 
 def _fitted(
