@@ -79,6 +79,7 @@ def test_hidden_elements_and_text(tmp_path: Path) -> None:
         ('<rect width="1e400" height="1"/>', 2, 14, "at most"),
         ('<polyline points="1,2 3"/>', 2, 24, "odd count"),
         ("<line x1='0' y1='0' x2='1' y2='1'>", 3, 3, "not well-formed"),
+        ('<svg x="9" viewBox="0 0 1 1"><rect width="1" height="1"/></svg>', 2, 1, "nested <svg>"),
     ],
 )
 def test_errors_name_file_line_and_column(

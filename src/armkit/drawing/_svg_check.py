@@ -78,6 +78,8 @@ def check_svg(data: bytes, file: str) -> Checked:
         if not elements and (tag != "svg" or ns not in ("", SVG_NS)):
             raise _error(file, at, f"the root element is <{tag}>, not <svg>; give an SVG file")
         if ns in ("", SVG_NS):
+            if elements and tag == "svg":
+                _check_nested(file, at)
             elements.append(at)
             _check_element(data, file, at, parser.CurrentByteIndex)
 
@@ -100,6 +102,23 @@ def check_svg(data: bytes, file: str) -> Checked:
 
 def _error(file: str, at: Element, what: str) -> DrawingError:
     return DrawingError(what, file=file, line=at.line, column=at.column)
+
+
+def _check_nested(file: str, at: Element) -> None:
+    """svgelements 1.9 scales a nested <svg>'s x, y by its viewBox: refuse that one case."""
+    moved = any(_nonzero(at.attrs.get(k, "0")) for k in ("x", "y"))
+    if moved and "viewBox" in at.attrs:
+        raise _error(
+            file,
+            at,
+            "a nested <svg> with both x/y and a viewBox would be placed wrongly; "
+            'put its content in a <g transform="translate(x y) scale(...)"> instead',
+        )
+
+
+def _nonzero(value: str) -> bool:
+    m = syntax.NUMBER.match(value.strip())
+    return m is not None and float(m.group()) != 0.0
 
 
 def _check_element(data: bytes, file: str, at: Element, byte: int) -> None:
