@@ -8,7 +8,8 @@ ordered strokes: armkit ``plan_drawing`` (flatten 0.1 mm, merge ends within
 and vpype ``read -m FILE linemerge linesort`` (its defaults: quantization 0.1 mm,
 merge tolerance 0.05 mm, greedy with flipping), also with ``linesort --two-opt``.
 Pen-up travel is measured by the same function on both outputs: the sum of the
-moves between consecutive strokes (not from or back to a home position).
+moves between consecutive strokes (not from or back to a home position). The
+pen-down lengths of both, from two independent SVG flattenings, should agree.
 "file order" is the travel of the strokes as the file lists them.
 
 vpype lives in its own virtual environment, benchmarks/.peers/vpype (created on
@@ -92,6 +93,10 @@ def armkit_row(path: str) -> dict:  # type: ignore[type-arg]
     }
 
 
+def _length(strokes: list) -> float:  # type: ignore[type-arg]
+    return float(sum(np.linalg.norm(np.diff(s, axis=0), axis=1).sum() for s in strokes))
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--files", nargs="+", default=FILES, help="SVG files")
@@ -107,12 +112,13 @@ def main() -> int:
         ours = armkit_row(f)
         theirs = peers[f]
         up = {k: pen_up_length([np.array(line) for line in v["lines"]]) for k, v in theirs.items()}
-        down = sum(np.linalg.norm(np.diff(s, axis=0), axis=1).sum() for s in ours["strokes"])
+        down = _length(ours["strokes"])
+        their_down = _length([np.array(line) for line in theirs["greedy"]["lines"]])
         rows.append(
             [
                 Path(f).name,
                 ours["strokes_in"],
-                f"{down:.0f}",
+                f"{down:.1f} / {their_down:.1f}",
                 f"{ours['file_order']:.1f}",
                 f"{len(ours['strokes'])} / {len(theirs['greedy']['lines'])}",
                 f"{pen_up_length(ours['strokes']):.1f}",
@@ -126,7 +132,7 @@ def main() -> int:
     headers = [
         "file",
         "strokes in",
-        "pen-down mm",
+        "pen-down armkit / vpype",
         "file order",
         "strokes armkit / vpype",
         "armkit pen-up",
