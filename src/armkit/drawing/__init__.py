@@ -6,7 +6,7 @@ what a pen drew with the plan (``measure``). Sheet coordinates are u, v [m];
 ``DrawingPlan.world_strokes(sheet)`` puts them on the sheet's plane.
 """
 
-from . import _shapes as shapes
+from . import shapes as shapes
 from ._distance import distance_to_strokes as distance_to_strokes
 from ._distance import hausdorff as hausdorff
 from ._errors import DrawingError as DrawingError
