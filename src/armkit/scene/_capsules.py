@@ -107,7 +107,7 @@ def frame_origins(model: ArmModel, q: F64) -> tuple[F64, F64]:
     for row, qi in zip(model.dh, q.T, strict=True):
         theta = row.sign * qi + row.theta_offset
         A, t = _dh_batch(model.convention == "modified", row.a, row.alpha, row.d, theta)
-        p = p + np.einsum("nij,nj->ni", R, t)
+        p = p + (R @ t[:, :, None])[:, :, 0]
         R = R @ A
         out.append(p)
     T = model.T_flange_tool
@@ -119,25 +119,16 @@ def _dh_batch(modified: bool, a: float, alpha: float, d: float, theta: F64) -> t
     """Rotations (N, 3, 3) and translations (N, 3) of one DH row for N angles [rad]."""
     ct, st = np.cos(theta), np.sin(theta)
     ca, sa = math.cos(alpha), math.sin(alpha)
-    zero, one = np.zeros_like(theta), np.ones_like(theta)
+    R = np.empty((theta.shape[0], 3, 3))
+    t = np.empty((theta.shape[0], 3))
     if modified:  # Rx(alpha) Tx(a) Rz(theta) Tz(d)
-        R = np.stack(
-            [
-                np.stack([ct, -st, zero], -1),
-                np.stack([st * ca, ct * ca, -sa * one], -1),
-                np.stack([st * sa, ct * sa, ca * one], -1),
-            ],
-            axis=1,
-        )
-        t = np.stack([a * one, -sa * d * one, ca * d * one], -1)
+        R[:, 0, 0], R[:, 0, 1], R[:, 0, 2] = ct, -st, 0.0
+        R[:, 1, 0], R[:, 1, 1], R[:, 1, 2] = st * ca, ct * ca, -sa
+        R[:, 2, 0], R[:, 2, 1], R[:, 2, 2] = st * sa, ct * sa, ca
+        t[:, 0], t[:, 1], t[:, 2] = a, -sa * d, ca * d
     else:  # Rz(theta) Tz(d) Tx(a) Rx(alpha)
-        R = np.stack(
-            [
-                np.stack([ct, -st * ca, st * sa], -1),
-                np.stack([st, ct * ca, -ct * sa], -1),
-                np.stack([zero, sa * one, ca * one], -1),
-            ],
-            axis=1,
-        )
-        t = np.stack([a * ct, a * st, d * one], -1)
+        R[:, 0, 0], R[:, 0, 1], R[:, 0, 2] = ct, -st * ca, st * sa
+        R[:, 1, 0], R[:, 1, 1], R[:, 1, 2] = st, ct * ca, -ct * sa
+        R[:, 2, 0], R[:, 2, 1], R[:, 2, 2] = 0.0, sa, ca
+        t[:, 0], t[:, 1], t[:, 2] = a * ct, a * st, d
     return R, t

@@ -116,14 +116,23 @@ def _boxes(
 ) -> Collision | None:
     if not obs.owners:
         return None
-    r = caps.radii[None, :, None, None] + margin + TOUCH
-    lo = np.minimum(caps.p0, caps.p1)[:, :, None, :] - r
-    hi = np.maximum(caps.p0, caps.p1)[:, :, None, :] + r
-    near = np.all((lo <= obs.hi[None, None]) & (hi >= obs.lo[None, None]), axis=-1)  # (N, K, M)
+    r = caps.radii + margin + TOUCH
+    lo = np.minimum(caps.p0, caps.p1) - r[:, None]  # (N, K, 3)
+    low = np.flatnonzero(lo[..., 2].ravel() <= obs.hi[:, 2].max())  # most links are high up
+    if low.size == 0:
+        return None
+    hi = np.maximum(caps.p0, caps.p1).reshape(-1, 3)[low] + np.tile(r, len(caps.p0))[low, None]
+    near = np.all(
+        (lo.reshape(-1, 3)[low, None] <= obs.hi[None]) & (hi[:, None] >= obs.lo[None]), axis=-1
+    )
+    nk, m = np.nonzero(near)
+    n, k = np.divmod(low[nk], caps.p0.shape[1])
     if ignore:
-        skip = np.array([o in ignore for o in obs.owners])
-        near[:, caps.links == dof, :] &= ~skip[None, None, :]
-    n, k, m = np.nonzero(near)
+        keep = ~(
+            (caps.links[k] == dof)
+            & np.isin(m, [i for i, o in enumerate(obs.owners) if o in ignore])
+        )
+        n, k, m = n[keep], k[keep], m[keep]
     if n.size == 0:
         return None
     Rt = np.transpose(obs.rotations[m], (0, 2, 1))
@@ -150,14 +159,7 @@ def _held(
     low = box_corners(c, R, h)[..., 2].min(axis=1) - table_z
     hits = [(int(i), "table", float(low[i])) for i in np.flatnonzero(low < margin - TOUCH)[:1]]
     if scene is not None and obstacles(scene).owners:
-        obs = obstacles(scene)
-        m = len(obs.owners)
-        ii, mm = np.repeat(np.arange(n), m), np.tile(np.arange(m), n)
-        gap = box_box_gap(c[ii], R[ii], h[ii], obs.centers[mm], obs.rotations[mm], obs.halves[mm])
-        bad = np.flatnonzero(gap < margin - TOUCH)
-        if bad.size:
-            j = bad[0]
-            hits.append((int(ii[j]), obs.owners[mm[j]], float(gap[j])))
+        hits.extend(_held_boxes(c, R, h, obstacles(scene), margin))
     if not hits:
         return None
     step, obj, dist = min(hits)
@@ -173,3 +175,24 @@ def _first(
     step = int(np.flatnonzero(bad.any(axis=1))[0])
     k = int(np.argmin(dist[step]))
     return Collision(step, names[links[k]], "table", float(dist[step, k]))
+
+
+def _held_boxes(
+    c: F64, R: F64, h: F64, obs: Obstacles, margin: float
+) -> list[tuple[int, str, float]]:
+    """The first pose where the held box (centres (N, 3), rotations (N, 3, 3), half
+    sizes (N, 3)) overlaps a scene box: bounding boxes first, then separating axes."""
+    extent = np.einsum("nij,nj->ni", np.abs(R), h) + margin + TOUCH
+    near = np.all(
+        ((c - extent)[:, None, :] <= obs.hi[None]) & ((c + extent)[:, None, :] >= obs.lo[None]),
+        axis=-1,
+    )
+    ii, mm = np.nonzero(near)
+    if ii.size == 0:
+        return []
+    gap = box_box_gap(c[ii], R[ii], h[ii], obs.centers[mm], obs.rotations[mm], obs.halves[mm])
+    bad = np.flatnonzero(gap < margin - TOUCH)
+    if bad.size == 0:
+        return []
+    j = bad[0]
+    return [(int(ii[j]), obs.owners[mm[j]], float(gap[j]))]

@@ -51,11 +51,17 @@ def box_box_gap(c1: F64, R1: F64, h1: F64, c2: F64, R2: F64, h2: F64) -> F64:
     rotations (P, 3, 3) (columns = box axes), half sizes (P, 3). Positive: the largest
     gap along the 15 candidate axes (a lower bound of their distance); negative:
     overlapping, by at least that much along every axis (the smallest overlap)."""
-    axes = [R1[:, :, i] for i in range(3)] + [R2[:, :, i] for i in range(3)]
-    for i in range(3):
-        for j in range(3):
-            axes.append(np.cross(R1[:, :, i], R2[:, :, j]))
-    L = np.stack(axes, axis=1)  # (P, 15, 3)
+    A, B = R1.transpose(0, 2, 1), R2.transpose(0, 2, 1)  # rows = box axes, (P, 3, 3)
+    a, b = A[:, :, None, :], B[:, None, :, :]
+    cross = np.stack(
+        [
+            a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
+            a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
+            a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0],
+        ],
+        axis=-1,
+    ).reshape(-1, 9, 3)
+    L = np.concatenate([A, B, cross], axis=1)  # (P, 15, 3)
     norm = np.linalg.norm(L, axis=-1)
     valid = norm > 1e-9
     L = L / np.where(valid, norm, 1.0)[..., None]

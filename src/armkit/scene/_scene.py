@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 from pathlib import Path
 from typing import TypeVar
 
@@ -83,9 +84,15 @@ class Scene:
         """The same scene without the cube ``name`` (while it is held)."""
         return replace(self, cubes=tuple(c for c in self.cubes if c.name != name))
 
+    @cached_property
+    def T_base_world(self) -> F64:
+        """The inverse of ``T_world_base``, shape (4, 4)."""
+        T: F64 = np.linalg.inv(self.T_world_base)
+        return T
+
     def to_base(self, p: F64) -> F64:
         """Scene point(s) [m], shape (..., 3), in the arm's base frame."""
-        T = np.linalg.inv(self.T_world_base)
+        T = self.T_base_world
         out: F64 = np.asarray(p) @ T[:3, :3].T + T[:3, 3]
         return out
 
