@@ -9,6 +9,7 @@ from ._capsules import link_names as link_names
 from ._clearance import Collision as Collision
 from ._clearance import Held as Held
 from ._clearance import check_clear as check_clear
+from ._clearance import joint_sweep as joint_sweep
 from ._errors import SceneError as SceneError
 from ._instruments import Drum as Drum
 from ._instruments import Xylophone as Xylophone

@@ -24,6 +24,7 @@ from ._scene import Scene
 
 F64 = NDArray[np.float64]
 TOUCH = 0.2e-3  # [m]: surfaces this far into each other still only touch
+SWEEP_STEP = 0.0175  # [rad] (1 deg): joint-space sampling of a move for the check
 
 
 @dataclass(frozen=True)
@@ -196,3 +197,16 @@ def _held_boxes(
         return []
     j = bad[0]
     return [(int(ii[j]), obs.owners[mm[j]], float(gap[j]))]
+
+
+def joint_sweep(q_from: ArrayLike, targets: ArrayLike, step: float = SWEEP_STEP) -> F64:
+    """The poses a straight joint-space move from ``q_from`` (dof,) through each of
+    ``targets`` (K, dof) [rad] passes, at most ``step`` [rad] apart, shape (N, dof)
+    (``q_from`` left out, every target in)."""
+    prev = np.asarray(q_from, dtype=np.float64)
+    out = []
+    for q in np.atleast_2d(np.asarray(targets, dtype=np.float64)):
+        n = max(1, int(np.ceil(float(np.max(np.abs(q - prev))) / step)))
+        out.append(prev + (q - prev) * (np.arange(1, n + 1) / n)[:, None])
+        prev = q
+    return np.vstack(out)

@@ -87,7 +87,9 @@ class Scene:
     @cached_property
     def T_base_world(self) -> F64:
         """The inverse of ``T_world_base``, shape (4, 4)."""
-        T: F64 = np.linalg.inv(self.T_world_base)
+        R, t = self.T_world_base[:3, :3], self.T_world_base[:3, 3]
+        T = np.eye(4)
+        T[:3, :3], T[:3, 3] = R.T, -R.T @ t
         return T
 
     def to_base(self, p: F64) -> F64:
