@@ -37,7 +37,7 @@ def first_that_works(
             failures.append((name, exc))
     if len(failures) == 1:
         raise failures[0][1]
-    text = "; ".join(f"{name}: {exc}" for name, exc in failures)
+    text = "; ".join(f"{name}: {str(exc).removeprefix(ctx.task + ': ')}" for name, exc in failures)
     first = failures[0][1]
     raise TaskError(
         f"{ctx.task}: cannot {what}. {text}", step=first.step, link=first.link, obj=first.object

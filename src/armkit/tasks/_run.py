@@ -31,10 +31,14 @@ def run_plan(arm: Arm, plan: Plan, say: Callable[[int, Step], None] | None = Non
             f"the arm moved {math.degrees(off):.1f} deg since the plan '{plan.task}' was made; "
             "plan it again"
         )
-    for k, step in enumerate(plan.steps, 1):
-        if say is not None:
-            say(k, step)
-        if step.grip is not None:
-            arm.grip(step.grip * 1000.0)
-        elif step.q is not None:
-            arm.move_joints(np.degrees(step.q).tolist())
+    scene, arm.scene = arm.scene, None  # checked when planned, with the grasps allowed
+    try:
+        for k, step in enumerate(plan.steps, 1):
+            if say is not None:
+                say(k, step)
+            if step.grip is not None:
+                arm.grip(step.grip * 1000.0)
+            elif step.q is not None:
+                arm.move_joints(np.degrees(step.q).tolist())  # the table is checked again
+    finally:
+        arm.scene = scene
