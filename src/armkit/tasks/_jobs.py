@@ -18,6 +18,7 @@ from ..scene import Scene
 from ._calibration import Calibration, calibration_for
 from ._choose import pick_any, place_any, rotate
 from ._plan import Plan
+from ._points import move_point
 from ._run import run_plan
 from ._state import Context, Options, State
 from ._targets import resolve
@@ -132,7 +133,7 @@ def place(
 def move_item(
     arm: Arm,
     scene: Scene,
-    cube: str,
+    item: str | Sequence[float],
     to: str | Sequence[float],
     *,
     lift: float = 40.0,
@@ -141,17 +142,33 @@ def move_item(
     calibration: CalibrationLike = None,
     dry_run: bool = False,
 ) -> Plan:
-    """000's moveItem: pick ``cube`` up, lift it ``lift`` [mm] (>= the clearance)
-    before travelling, carry it to ``to`` (as ``place``), put it down, leave."""
+    """000's moveItem: pick ``item`` up, lift it ``lift`` [mm] (at least the
+    clearance) before travelling, carry it to ``to`` (as ``place``), put it down.
+
+    ``item`` is a cube of the scene, or the grip point (x, y, z) [mm] of an item the
+    scene does not know (then ``to`` must be a point or a place too, and the grasp
+    and the item's own clearance cannot be checked).
+    """
     target = resolve(scene, to)
     p = _deg(pitch)
     height = max(lift, clearance)
+    if isinstance(item, str):
+        name = item
 
-    def body(c: Context, s: State) -> State:
-        s = pick_any(c, s, cube, p)
-        return place_any(c, s, target.bottom, target.label, p if p is not None else target.pitch)
+        def body(c: Context, s: State) -> State:
+            s = pick_any(c, s, item, p)
+            return place_any(
+                c, s, target.bottom, target.label, p if p is not None else target.pitch
+            )
 
-    plan = plan_task(arm, scene, f"move {cube}", body, clearance=height, calibration=calibration)
+    else:
+        name = "the item"
+        start = resolve(scene, item).bottom
+
+        def body(c: Context, s: State) -> State:
+            return move_point(c, s, start, target.bottom, p)
+
+    plan = plan_task(arm, scene, f"move {name}", body, clearance=height, calibration=calibration)
     return _done(arm, plan, dry_run)
 
 
