@@ -13,8 +13,8 @@ from armkit._errors import DeviceError, JointLimitError, UnreachableError
 from armkit.arm import Arm
 from armkit.kinematics import fk, pitch_of
 from armkit.model import load_model
-from armkit.scene import check_clear
 from armkit.motion import EarlyStreaming, PathError, circle
+from armkit.scene import check_clear
 from armkit.sim.servo_arm import ServoArmSim
 from armkit.sim.servo_dynamics import ServoParams
 

@@ -57,7 +57,7 @@ class Entry:
 
     def positive_mm(self, key: str, default: Any = _MISSING) -> float:
         """A length > 0 [mm] in the file, returned in metres."""
-        value = self.number(key, default, lo=0.0)
+        value = self.number(key, default)
         if value <= 0:
             raise self.fail(key, f"must be > 0 mm, got {value:g}")
         return value / 1000.0

@@ -80,35 +80,44 @@ class ScenePhysics:
         self.holding: _Holding | None = None
         self._arm = arm
         self._width: float | None = None
-        self._opened = 0.0  # the opening when the jaws began to close [m]
-        self._is_closing = False
+        self._opened = 0.0  # the opening when the arm last moved [m]
+        self._q: F64 | None = None
+        self._model: ArmModel | None = None
         self._reported = False
-        self._T_tool = np.eye(4)
 
     def on_step(self, world: WorldView, t: float) -> None:
         """Grasp, carry or release (cheap when nothing changes: no FK)."""
         sim = world.arm(self._arm)
-        width = sim.grip()
+        self._model = sim.model
+        width, q = sim.grip(), sim.q()
+        if self._width is None or self._q is None or float(np.max(np.abs(q - self._q))) > 1e-9:
+            self._opened = width  # the jaws come round an object at the opening they move with
         if self._width is None:
-            self._width = self._opened = width
-        last, self._width = self._width, width
-        if width > last + WIDTH_EPS:
-            self._is_closing = False
+            self._width = width
+        self._q = q
+        last = self._width
+        if abs(width - last) <= WIDTH_EPS:
+            return
+        self._width = width
+        if width > last:
             self._reported = False
             if self.holding is not None and width > self.holding.width + WIDTH_EPS:
                 self._release(sim, t)
-        elif width < last - WIDTH_EPS:
-            if not self._is_closing:
-                self._is_closing, self._opened = True, last
-            if self.holding is None:
-                self._closing(sim, width, t)
-        if self.holding is not None:
-            self._T_tool = self._tool(sim.model, sim.q(), self.holding.width)
+        elif self.holding is None:
+            self._closing(sim, width, t)
 
     def cube(self, name: str) -> Cube:
-        """The cube ``name`` now (centre of its lowest face, yaw, face up)."""
-        if self.holding is not None and self.holding.cube.name == name:
-            return self.holding.cube.moved(self._T_tool @ self.holding.T_tool_object)
+        """The cube ``name`` as last seen (centre of its lowest face, yaw, face up); a
+        held one where the gripper carries it."""
+        held = self.holding
+        if (
+            held is not None
+            and held.cube.name == name
+            and self._model is not None
+            and self._q is not None
+        ):
+            T = self._tool(self._model, self._q, held.width)
+            return held.cube.moved(T @ held.T_tool_object)
         return self.scene.cube(name)
 
     def _tool(self, model: ArmModel, q: F64, width: float) -> F64:
@@ -125,11 +134,10 @@ class ScenePhysics:
         for cube in near:
             T = self._tool(sim.model, sim.q(), cube.size)
             outcomes.append((grasp(sim.model.gripper, T, self._opened, cube), cube, T))
-        for result, cube, T in outcomes:
+        for result, cube, _ in outcomes:
             if result.ok and result.T_tool_object is not None:
                 self.holding = _Holding(cube, result.T_tool_object, cube.size)
                 self.scene = self.scene.without_cube(cube.name)
-                self._T_tool = T
                 sim.grip_stop(cube.size)
                 turned = (
                     f", squared up by {np.degrees(result.turn):.1f} deg"
@@ -155,7 +163,8 @@ class ScenePhysics:
         assert self.holding is not None
         held, self.holding = self.holding, None
         sim.grip_stop(None)
-        done = settle(self.scene, held.cube, self._T_tool @ held.T_tool_object)
+        T_tool = self._tool(sim.model, sim.q(), held.width)
+        done = settle(self.scene, held.cube, T_tool @ held.T_tool_object)
         self.scene = replace(self.scene, cubes=(*self.scene.cubes, done.cube))
         fall = f", fell {done.fall * 1000:.1f} mm" if done.outcome == "dropped" else ""
         self._add(
