@@ -40,7 +40,7 @@ def first_that_works(
     text = "; ".join(f"{name}: {str(exc).removeprefix(ctx.task + ': ')}" for name, exc in failures)
     first = failures[0][1]
     raise TaskError(
-        f"{ctx.task}: cannot {what}. {text}", step=first.step, link=first.link, obj=first.object
+        f"{ctx.task}: cannot {what}: {text}", step=first.step, link=first.link, obj=first.object
     )
 
 
@@ -49,8 +49,11 @@ def pick_any(ctx: Context, st: State, name: str, pitch: float | None) -> State:
     cube = st.scene.cube(name)
 
     def at(p: float) -> Attempt:
-        shift = side_shift(ctx, st, cube) if abs(p - SIDE) < 1e-9 else 0.0
-        return lambda s: pick(ctx, s, name, p, shift)
+        def attempt(s: State) -> State:
+            shift = side_shift(ctx, s, cube) if abs(p - SIDE) < 1e-9 else 0.0
+            return pick(ctx, s, name, p, shift)
+
+        return attempt
 
     return first_that_works(ctx, st, f"pick {name}", [(how(p), at(p)) for p in pitches(ctx, pitch)])
 

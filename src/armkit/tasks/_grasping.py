@@ -13,7 +13,7 @@ from numpy.typing import NDArray
 from ..kinematics import fk
 from ..model import ArmModel
 from ..scene import Cube, Held, settle
-from ..scene._grasp import grasp
+from ..scene._grasp import MIN_COVER, grasp
 from ..scene._support import Rect, support_under
 from ._plan import TaskError
 from ._state import Context, State, down, grip, solve, up
@@ -57,12 +57,25 @@ def radial(st: State, point: F64) -> F64:
 def side_shift(ctx: Context, st: State, cube: Cube) -> float:
     """How far above its centre [m] a level gripper must hold ``cube`` so that its
     links (wrist and gripper radii) clear the surface round the cube: a board's
-    top face round a socket, the cube below in a stack, the table."""
+    top face round a socket, the cube below in a stack, the table.
+
+    Raises:
+        TaskError: that is too high for the pads to hold the cube.
+    """
     r = max(ctx.model.link_radii[-2:], default=0.015)
     foot = Rect(cube.position[:2].copy(), (cube.size / 2 + r,) * 2, cube.yaw)
     surface = support_under(st.scene.without_cube(cube.name), foot, float(cube.position[2]) + 1.0)
     level = max(float(cube.center[2]), surface.z + r + SIDE_MARGIN)
-    return level - float(cube.center[2])
+    shift = level - float(cube.center[2])
+    most = cube.size / 2 + ctx.model.gripper.finger_width * (0.5 - MIN_COVER)
+    if shift > most + 1e-9:
+        raise TaskError(
+            f"{ctx.task}: from the side, the gripper must stay {level * 1000:.1f} mm high to "
+            f"clear the {surface.on}: its jaws would hold only the top "
+            f"{(cube.top_z - level + ctx.model.gripper.finger_width / 2) * 1000:.1f} mm of {cube.name}",
+            step=f"pick {cube.name} from the side",
+        )
+    return shift
 
 
 def grasp_point(st: State, cube: Cube, pitch: float, shift: float) -> F64:
@@ -127,7 +140,7 @@ def _tool_point(
     p = centre - _heading(ctx, st, kin, centre, pitch) @ offset
     T_cube = np.eye(4)
     for _ in range(6):
-        q = solve(kin, st.scene.to_base(p), pitch, st.q, f"{ctx.task}: step '{label}'")
+        q = solve(kin, st.scene.to_base(p), pitch, st.q, ctx.task, label)
         T_cube = st.scene.T_world_base @ fk(kin, q) @ st.held.T_tool_object
         error = centre - T_cube[:3, 3]
         if float(np.linalg.norm(error)) < 1e-6:

@@ -14,7 +14,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..scene import Scene
+from ..kinematics import fk
+from ..scene import Cube, Scene
 from ._calibration import Calibration, calibration_for
 from ._choose import pick_any, place_any, rotate
 from ._plan import Plan
@@ -68,9 +69,19 @@ def plan_task(
         st = replace(st, held=picked.held, scene=picked.scene, opening=arm.model.gripper.width_min)
     st = body(ctx, st)
     after = (
-        st.scene if st.held is None else replace(st.scene, cubes=(*st.scene.cubes, st.held.cube))
+        st.scene
+        if st.held is None
+        else replace(st.scene, cubes=(*st.scene.cubes, _carried(ctx, st)))
     )
     return Plan(task, arm.model.name, st.steps, q0, scene, after, time.perf_counter() - start)
+
+
+def _carried(ctx: Context, st: State) -> Cube:
+    """The held cube where the gripper holds it at the end of the plan."""
+    assert st.held is not None
+    kin = ctx.model.with_grip_width(st.held.cube.size)
+    T = st.scene.T_world_base @ fk(kin, st.q) @ st.held.T_tool_object
+    return st.held.cube.moved(T)
 
 
 def _deg(pitch: float | None) -> float | None:

@@ -91,9 +91,7 @@ def moves(
     prev = st.q
     pitches = np.broadcast_to(np.asarray(pitch, dtype=np.float64), (len(points),))
     for k, point in enumerate(points):
-        q = solve(
-            kin, st.scene.to_base(point), float(pitches[k]), prev, f"{ctx.task}: step '{labels[k]}'"
-        )
+        q = solve(kin, st.scene.to_base(point), float(pitches[k]), prev, ctx.task, labels[k])
         n = max(2, math.ceil(float(np.max(np.abs(q - prev))) / SWEEP_STEP) + 1)
         sweeps.append(prev + (q - prev) * (np.arange(1, n) / (n - 1))[:, None])
         owner.extend([k] * (n - 1))
@@ -196,13 +194,13 @@ def up(
     return moves(ctx, st, pts[1:], pitch, labels, kin=kin, ignore=ignore)
 
 
-def solve(kin: ArmModel, base: F64, pitch: float, seed: F64, what: str) -> F64:
+def solve(kin: ArmModel, base: F64, pitch: float, seed: F64, task: str, label: str) -> F64:
     """IK for tool point ``base`` (base frame) [m] at ``pitch`` [rad] nearest ``seed``;
-    TaskError ``"<what> is unreachable: ..."``."""
+    TaskError ``"<task>: step '<label>' is unreachable: ..."``."""
     try:
         q: F64 = ik(kin, (float(base[0]), float(base[1]), float(base[2])), pitch, seed).q
     except UnreachableError as exc:
-        raise TaskError(f"{what} is unreachable: {exc}", step=what) from None
+        raise TaskError(f"{task}: step '{label}' is unreachable: {exc}", step=label) from None
     return q
 
 
@@ -216,7 +214,7 @@ def _calibrated(ctx: Context, kin: ArmModel, st: State, point: F64, pitch: float
     shifted = base + np.array([0.0, 0.0, cal.height])
     if norm > 1e-9:
         shifted = shifted + radial / norm * cal.perpendicular
-    return solve(kin, shifted, pitch, q, f"{ctx.task}: a point with the calibration offsets")
+    return solve(kin, shifted, pitch, q, ctx.task, "a point moved by the calibration offsets")
 
 
 def _last_pitch(st: State) -> float | None:
