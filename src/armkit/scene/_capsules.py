@@ -68,26 +68,22 @@ def arm_capsules(model: ArmModel, q: ArrayLike) -> Capsules:
 def clearance_capsules(model: ArmModel, origins: F64, R_tool: F64) -> Capsules:
     """``arm_capsules`` for N poses from ``frame_origins`` (origins (N, dof + 2, 3),
     tool rotations (N, 3, 3)), the gripper split into tapering pieces."""
-    approach = R_tool[:, :, 0]
+    n, links = origins.shape[0], model.dof
     radii = _radii(model)
-    p0, p1 = origins[:, :-2, :], origins[:, 1:-1, :]
+    p0 = np.empty((n, links + TAPER, 3))
+    p1 = np.empty((n, links + TAPER, 3))
+    p0[:, :links], p1[:, :links] = origins[:, :-2], origins[:, 1:-1]
     flange, tool = origins[:, -2, :], origins[:, -1, :]
-    r_tool = radii[-1]
-    ends, tips, piece_radii = [], [], []
-    for k in range(TAPER):
-        r = r_tool * (TAPER - k) / TAPER
-        start = flange + (tool - flange) * (k / TAPER)
-        end = flange + (tool - flange) * ((k + 1) / TAPER)
-        if k == TAPER - 1:  # the tip piece's cap ends at the tool point
-            end = tool - approach * r
-        ends.append(start)
-        tips.append(end)
-        piece_radii.append(r)
+    s = np.arange(TAPER + 1) / TAPER
+    along = flange[:, None, :] + s[None, :, None] * (tool - flange)[:, None, :]  # (N, TAPER+1, 3)
+    p0[:, links:], p1[:, links:] = along[:, :-1], along[:, 1:]
+    piece = radii[-1] * (TAPER - np.arange(TAPER)) / TAPER
+    p1[:, -1] = tool - R_tool[:, :, 0] * piece[-1]  # the tip piece's cap ends at the tool point
     return Capsules(
-        np.concatenate([p0, np.stack(ends, axis=1)], axis=1),
-        np.concatenate([p1, np.stack(tips, axis=1)], axis=1),
-        np.concatenate([radii[:-1], piece_radii]),
-        np.concatenate([np.arange(model.dof), np.full(TAPER, model.dof)]),
+        p0,
+        p1,
+        np.concatenate([radii[:-1], piece]),
+        np.concatenate([np.arange(links), np.full(TAPER, links)]),
     )
 
 

@@ -95,6 +95,8 @@ def check_clear(
 
 def _moved(caps: Capsules, T: F64) -> Capsules:
     """Capsules from the base frame to the scene frame by ``T`` (4, 4)."""
+    if np.array_equal(T, np.eye(4)):
+        return caps
     R, t = T[:3, :3], T[:3, 3]
     return Capsules(caps.p0 @ R.T + t, caps.p1 @ R.T + t, caps.radii, caps.links)
 
