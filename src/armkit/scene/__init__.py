@@ -22,6 +22,8 @@ from ._objects import Cube as Cube
 from ._objects import Pen as Pen
 from ._objects import PenStand as PenStand
 from ._objects import Place as Place
+from ._physics import SceneEvent as SceneEvent
+from ._physics import ScenePhysics as ScenePhysics
 from ._scene import Scene as Scene
 from ._support import Settled as Settled
 from ._support import settle as settle

@@ -4,7 +4,6 @@ scene's (table's) frame: x forward, y left, z up."""
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -191,13 +190,3 @@ class PenStand:
     name: str
     position: F64
     pen: str
-
-
-def socket_label(board: Board, row: int, col: int) -> str:
-    """``"board[row, col]"``."""
-    return f"{board.name}[{row}, {col}]"
-
-
-def yaw_deg(yaw: float) -> float:
-    """``yaw`` [rad] in degrees, -0.0 shown as 0.0."""
-    return math.degrees(yaw) + 0.0

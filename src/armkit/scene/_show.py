@@ -20,7 +20,7 @@ def mm(p: F64) -> str:
 
 
 def _deg(a: float) -> str:
-    return f"{math.degrees(a) + 0.0:.1f} deg"
+    return f"{round(math.degrees(a), 1) + 0.0:.1f} deg"  # never -0.0
 
 
 def describe(scene: Scene) -> list[str]:

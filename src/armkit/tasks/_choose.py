@@ -3,7 +3,6 @@ step is reachable and clear wins; if none, one error naming each way's failure."
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Sequence
 
 import numpy as np
@@ -91,5 +90,4 @@ def rotate(ctx: Context, st: State, name: str, direction: str) -> State:
     shift = side_shift(ctx, st, cube)
     first, second = (SIDE, TOP) if direction == "forward" else (TOP, SIDE)
     st = pick(ctx, st, name, first, shift)
-    turned = f"back in place ({direction}, {math.degrees(first - second):+.0f} deg)"
-    return place(ctx, st, cube.position, second, turned)
+    return place(ctx, st, cube.position, second, f"back turned {direction}")

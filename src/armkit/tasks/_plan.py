@@ -99,7 +99,7 @@ def _step_text(step: Step) -> str:
 def cube_text(cube: Cube) -> str:
     """``red at (220.0, -45.0, 3.0) mm, yaw 0.0 deg, +x up``."""
     x, y, z = (float(v) * 1000 for v in cube.position)
-    return f"{cube.name} at ({x:.1f}, {y:.1f}, {z:.1f}) mm, yaw {math.degrees(cube.yaw) + 0.0:.1f} deg, {cube.up_face} up"
+    return f"{cube.name} at ({x:.1f}, {y:.1f}, {z:.1f}) mm, yaw {round(math.degrees(cube.yaw), 1) + 0.0:.1f} deg, {cube.up_face} up"
 
 
 def _moved(before: Scene, cube: Cube) -> bool:
