@@ -3,6 +3,7 @@ step is reachable and clear wins; if none, one error naming each way's failure."
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 
 import numpy as np
@@ -12,16 +13,19 @@ from ._plan import TaskError
 from ._state import Context, State
 
 Attempt = Callable[[State], State]
+TILTS = tuple(math.radians(d) for d in (-75.0, -60.0, -45.0, -30.0, -15.0))
+SHOWN = 2  # failures spelt out in the error; the rest are summed up
 
 
 def pitches(ctx: Context, pitch: float | None) -> tuple[float, ...]:
     """The pitches to try [rad]: the one asked for; else the model's default (the
-    OWI keeps its gripper level, 000); else from the top, then from the side (001)."""
+    OWI keeps its gripper level, 000); else from the top, then from the side (001),
+    then tilted in between (for wrists such as the Lynx6's that reach neither)."""
     if pitch is not None:
         return (pitch,)
     if ctx.model.default_pitch is not None:
         return (ctx.model.default_pitch,)
-    return (TOP, SIDE)
+    return (TOP, SIDE, *TILTS)
 
 
 def first_that_works(
@@ -36,7 +40,11 @@ def first_that_works(
             failures.append((name, exc))
     if len(failures) == 1:
         raise failures[0][1]
-    text = "; ".join(f"{name}: {str(exc).removeprefix(ctx.task + ': ')}" for name, exc in failures)
+    text = "; ".join(
+        f"{name}: {str(exc).removeprefix(ctx.task + ': ')}" for name, exc in failures[:SHOWN]
+    )
+    if len(failures) > SHOWN:
+        text += f"; nor {', '.join(name for name, _ in failures[SHOWN:])}"
     first = failures[0][1]
     raise TaskError(
         f"{ctx.task}: cannot {what}: {text}", step=first.step, link=first.link, obj=first.object
