@@ -17,7 +17,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._errors import DeviceError, JointLimitError
+from ._errors import DeviceError, JointLimitError, UnreachableError
 from .drivers._driver import Driver
 from .drivers._registry import open_driver
 from .kinematics import fk, ik, pitch_of
@@ -34,6 +34,7 @@ from .motion import (
     retreat,
     trapezoid,
 )
+from .scene import Scene, check_clear, joint_sweep
 
 F64 = NDArray[np.float64]
 REACHED = math.radians(0.2)  # a move with a timeout is done when every joint is this close
@@ -63,6 +64,8 @@ class Arm:
         model: a shipped arm name, a model file path, or an ``ArmModel``.
         driver: a driver name (``"sim"``, ``"ssc32"``, ...) or an open ``Driver``.
         port: the driver's port (see ``armkit.drivers.open_driver``).
+        scene: what is on the table (``armkit.scene.load_scene``); every move is
+            checked against it, and against the table plane even without one.
     """
 
     def __init__(
@@ -70,7 +73,10 @@ class Arm:
         model: str | Path | ArmModel = "openmanipulator_x",
         driver: str | Driver = "sim",
         port: str | None = None,
+        *,
+        scene: Scene | None = None,
     ) -> None:
+        self.scene = scene
         self.model = model if isinstance(model, ArmModel) else load_model(model)
         self.driver = open_driver(self.model, driver, port) if isinstance(driver, str) else driver
         self.clock = clock_of(self.driver)
@@ -155,6 +161,7 @@ class Arm:
         pts = np.asarray(points_mm, dtype=np.float64) / 1000.0
         pitch_rad = None if pitch is None else math.radians(pitch)
         path = plan_path(self._kin, pts, pitch_rad, self.driver.read())
+        self._check_clear(path.q)
         follow(self.driver, self._kin, path, streamer or TimedStreaming(), self.clock)
         return path
 
@@ -206,6 +213,7 @@ class Arm:
     def _move(self, q: F64, timing: _Timing) -> None:
         """Check limits and timing, then send; with a timeout, poll until there."""
         _check_limits(self.model, q)
+        self._check_clear(q[None, :])
         speed = 1.0 if timing.speed is None else timing.speed
         trapezoid(self.model, self.driver.read(), q, speed, timing.duration)  # raises if too fast
         wait = timing.wait and timing.timeout is None
@@ -217,7 +225,22 @@ class Arm:
         """Plan ``points_m`` [m] (1 mm tolerance between waypoints), then step through them."""
         pitch_rad = None if pitch is None else math.radians(pitch)
         path = plan_path(self._kin, points_m, pitch_rad, self.driver.read(), tolerance=1e-3)
+        self._check_clear(path.q)
         follow(self.driver, self._kin, path, NaiveStepping(), self.clock)
+
+    def _check_clear(self, path: F64) -> None:
+        """Refuse a move from here through ``path`` (K, dof) [rad], sampled in joint
+        space, that puts a link below the table or into the scene's objects."""
+        hit = check_clear(self._kin, path, self.scene)
+        where = "there"
+        if hit is None:
+            hit = check_clear(self._kin, joint_sweep(self.driver.read(), path), self.scene)
+            where = "on the way"
+        if hit is not None:
+            raise UnreachableError(
+                f"move refused: {where}, {hit.describe()}; choose a higher point or another way",
+                reason="table" if hit.object == "table" else "collision",
+            )
 
     def _wait_until(self, q: F64, timeout: float) -> None:
         deadline = self.clock.now() + timeout

@@ -24,6 +24,8 @@ COMMAND_MODULES = (
     "armkit.cli._dynamixel",
     "armkit.cli._view",
     "armkit.cli._script",
+    "armkit.cli._scene",
+    "armkit.cli._tasks",
 )
 
 EPILOG = """\
@@ -65,6 +67,13 @@ def build_parser() -> argparse.ArgumentParser:
         default=None,
         metavar="PORT",
         help="serial port or device for the driver ('emu' = emulator)",
+    )
+    parser.add_argument(
+        "--scene",
+        default=None,
+        metavar="FILE|NAME",
+        help="what is on the table: a scene .toml file (mm, deg) or a shipped scene "
+        "(see 'armkit scene list'); tasks and moves are checked against it",
     )
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     for name in COMMAND_MODULES:

@@ -41,7 +41,14 @@ _REQUIRED_JOINT = ("name", "limits_deg", "home_deg", "dh")
 _DH = {"a_mm": _NUM, "alpha_deg": _NUM, "d_mm": _NUM, "theta_offset_deg": _NUM, "flip": bool}
 _REQUIRED_DH = ("a_mm", "alpha_deg", "d_mm")
 _TOOL = {"xyz_mm": list, "rpy_deg": list, "length_mm": _NUM}
-_GRIPPER = {"kind": str, "width_mm": list, "length_poly_mm": list, "closed_length_mm": _NUM}
+_GRIPPER = {
+    "kind": str,
+    "width_mm": list,
+    "length_poly_mm": list,
+    "closed_length_mm": _NUM,
+    "jaw_axis": str,
+    "finger_mm": list,
+}
 _GRIPPER_KINDS = ("parallel", "scissor", "timed")
 _LINKS = {"radius_mm": object}  # a number or a list, checked in _link_radii
 DEFAULT_LINK_RADIUS_MM = 15.0
@@ -246,10 +253,19 @@ def _gripper(check: _Checker, data: Any) -> Gripper:
         raise check.fail("gripper.width_mm", f"min must be <= max, got [{lo}, {hi}]")
     poly_mm = check.numbers(data.get("length_poly_mm", []), "gripper.length_poly_mm", None)
     closed = data.get("closed_length_mm")
+    jaw_axis = data.get("jaw_axis", "z")
+    if jaw_axis not in ("y", "z"):
+        raise check.fail("gripper.jaw_axis", f"must be 'y' or 'z' (tool axis), got {jaw_axis!r}")
+    finger = check.numbers(data.get("finger_mm", [20.0, 20.0]), "gripper.finger_mm", 2)
+    if not all(0.0 < f <= 500.0 for f in finger):
+        raise check.fail("gripper.finger_mm", f"must be 2 lengths in (0, 500] mm, got {finger}")
     return Gripper(
         kind=kind,
         width_min=lo / 1000.0,
         width_max=hi / 1000.0,
         length_poly=tuple(c * 1000.0 ** (k - 1) for k, c in enumerate(poly_mm)),
         closed_length=None if closed is None else closed / 1000.0,
+        jaw_axis=jaw_axis,
+        finger_length=finger[0] / 1000.0,
+        finger_width=finger[1] / 1000.0,
     )

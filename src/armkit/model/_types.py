@@ -63,6 +63,9 @@ class Gripper:
         length_poly: grip length [m] as polynomial coefficients of width [m],
             lowest order first, used for width > 0 (empty: fixed length).
         closed_length: grip length to the tip when fully closed [m], or None.
+        jaw_axis: the tool frame's axis the jaws close along, ``"y"`` or ``"z"``.
+        finger_length: each jaw's pad along the approach axis, centred on the tool
+            point [m].  finger_width: the pad across it (along the third axis) [m].
     """
 
     kind: str = "parallel"
@@ -70,6 +73,9 @@ class Gripper:
     width_max: float = 0.0
     length_poly: tuple[float, ...] = ()
     closed_length: float | None = None
+    jaw_axis: str = "z"
+    finger_length: float = 0.02
+    finger_width: float = 0.02
 
     def length_at(self, width: float) -> float | None:
         """Grip length [m] at an opening ``width`` [m]; None if the length is fixed."""
