@@ -141,8 +141,8 @@ def test_a_missing_job_function_refuses_the_run_before_any_motion(
     arm: tuple[Arm, CountingDriver],
 ) -> None:
     a, driver = arm
-    with pytest.raises(ScriptCheckError, match="the job 'stack' is not available"):
-        _run(a, "home\nstack a b c on xyz 100 0 0\n")
+    with pytest.raises(ScriptCheckError, match="the job 'search' is not available"):
+        _run(a, "home\nsearch from 30 to 120 step 5\n")
     assert driver.sent == 0
 
 
