@@ -17,7 +17,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._errors import DeviceError, JointLimitError
+from ._errors import DeviceError, InputError, JointLimitError
 from .drivers._driver import Driver
 from .drivers._registry import open_driver
 from .kinematics import fk, ik, pitch_of
@@ -37,6 +37,7 @@ from .motion import (
 
 F64 = NDArray[np.float64]
 REACHED = math.radians(0.2)  # a move with a timeout is done when every joint is this close
+MAX_MOVE_S = 30.0  # longest single move [s] (a Dynamixel time-based profile allows 32.7 s)
 
 
 class Position(NamedTuple):
@@ -126,7 +127,15 @@ class Arm:
 
     def grip(self, width_mm: float) -> None:
         """Open the gripper to ``width_mm`` [mm] (the grip point moves with it on
-        scissor grippers)."""
+        scissor grippers). A gripper that is only open or closed (the OWI's) takes
+        its closed or its open width and nothing in between (InputError)."""
+        g = self.model.gripper
+        lo, hi = g.width_min * 1000.0, g.width_max * 1000.0
+        if g.kind == "timed" and not (abs(width_mm - lo) < 1e-9 or abs(width_mm - hi) < 1e-9):
+            raise InputError(
+                f"{self.model.name}'s gripper is only open or closed: grip {lo:g} closes it, "
+                f"grip {hi:g} opens it; got {width_mm:g} mm"
+            )
         kin = self.model.with_grip_width(width_mm / 1000.0)
         self.driver.grip(width_mm / 1000.0)
         self._kin = kin
@@ -198,16 +207,23 @@ class Arm:
             q = np.asarray(angles, dtype=np.float64)
             if q.shape != (self.model.dof,):
                 names = ", ".join(self.model.joint_names)
-                raise ValueError(f"give {self.model.dof} angles ({names}), got {len(q)}")
+                raise InputError(f"give {self.model.dof} angles ({names}), got {q.size}")
         if not np.all(np.isfinite(q)):
-            raise ValueError(f"joint angles must be finite, got {list(q)}")
+            shown = ", ".join(f"{v:g}" for v in q)
+            raise InputError(f"joint angles must be finite numbers of degrees, got {shown}")
         return np.radians(q)
 
     def _move(self, q: F64, timing: _Timing) -> None:
         """Check limits and timing, then send; with a timeout, poll until there."""
         _check_limits(self.model, q)
+        _check_timing(timing)
         speed = 1.0 if timing.speed is None else timing.speed
-        trapezoid(self.model, self.driver.read(), q, speed, timing.duration)  # raises if too fast
+        profile = trapezoid(self.model, self.driver.read(), q, speed, timing.duration)
+        if profile.duration > MAX_MOVE_S:  # a tiny speed: refuse rather than crawl
+            raise InputError(
+                f"this move would take {profile.duration:.0f} s at speed {speed:g}; a move may "
+                f"take at most {MAX_MOVE_S:g} s: raise the speed"
+            )
         wait = timing.wait and timing.timeout is None
         self.driver.move(q, duration=timing.duration, speed=timing.speed, wait=wait)
         if timing.wait and timing.timeout is not None:
@@ -226,6 +242,21 @@ class Arm:
                 self.driver.stop()
                 raise DeviceError(f"the arm did not reach its target within {timeout} s; stopped")
             self.clock.sleep(0.005)
+
+
+def _check_timing(timing: _Timing) -> None:
+    """InputError unless speed is in (0, 1] and duration in 0..MAX_MOVE_S [s] (or None)."""
+    if timing.speed is not None and not (math.isfinite(timing.speed) and 0 < timing.speed <= 1):
+        raise InputError(f"speed must be a fraction of the maximum in (0, 1], got {timing.speed:g}")
+    if timing.duration is not None and not (
+        math.isfinite(timing.duration) and 0 <= timing.duration <= MAX_MOVE_S
+    ):
+        raise InputError(
+            f"duration must be 0..{MAX_MOVE_S:g} s, got {timing.duration:g} s; "
+            "split a longer motion into several moves"
+        )
+    if timing.timeout is not None and not (math.isfinite(timing.timeout) and timing.timeout > 0):
+        raise InputError(f"timeout must be a number of seconds > 0, got {timing.timeout:g}")
 
 
 def _check_limits(model: ArmModel, q: F64) -> None:

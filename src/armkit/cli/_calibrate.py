@@ -6,7 +6,7 @@ import argparse
 import importlib
 from typing import Any
 
-from .._errors import ArmkitError
+from .._errors import ArmkitError, InputError
 from ..drivers import open_driver
 from ..model import load_model
 
@@ -36,7 +36,7 @@ def _module_for(model_name: str, driver: str) -> str:
     if driver == "sim" and model_name == "owi535":
         return CALIBRATORS["owi535"]
     if driver not in CALIBRATORS:
-        raise ValueError(
+        raise InputError(
             f"calibrate works with --driver {', '.join(CALIBRATORS)} (or sim on the owi535), got {driver!r}"
         )
     return CALIBRATORS[driver]

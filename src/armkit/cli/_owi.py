@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .._errors import ArmkitError
+from ._args import coordinate, number
 
 if TYPE_CHECKING:
     from ..drivers.timed import TimedDriver
@@ -28,10 +29,14 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     )
     for name in ("ax", "ay", "az", "bx", "by", "bz"):
         p.add_argument(
-            name, type=float, metavar=name.upper(), help=f"{name[0].upper()} {name[1]} [mm]"
+            name, type=coordinate, metavar=name.upper(), help=f"{name[0].upper()} {name[1]} [mm]"
         )
     p.add_argument(
-        "--lift", type=float, default=40.0, metavar="MM", help="travel height above A and B [mm]"
+        "--lift",
+        type=number("mm", 0.0, 500.0),
+        default=40.0,
+        metavar="MM",
+        help="travel height above A and B [mm], 0..500",
     )
     p.set_defaults(func=_pick_place)
     p = sub.add_parser(
