@@ -31,7 +31,7 @@ from numpy.typing import NDArray
 from .._errors import DeviceError, JointLimitError
 from ..devices import _xm430 as xm
 from ..devices.dynamixel import DynamixelBus
-from ..model import ArmModel
+from ..model import ArmModel, dynamixel_section
 
 _MAX_PROFILE_MS = 32737  # time-based Profile Velocity limit
 _POLL_S = 0.01
@@ -42,21 +42,20 @@ def open_driver(model: ArmModel, port: str | None) -> DynamixelDriver:
     """Open the arm's servos on ``port`` (a device path, or ``"emu"`` for an emulator).
 
     Raises:
-        DeviceError: no port, no ``[drivers.dynamixel]`` table, or the servos do not answer.
+        ModelError: no or a wrong ``[drivers.dynamixel]`` table.
+        DeviceError: no port, or the servos do not answer.
     """
-    cfg = model.drivers.get("dynamixel")
-    if cfg is None:
-        raise DeviceError(f"{model.name} has no [drivers.dynamixel] table; not a Dynamixel arm")
+    cfg = dynamixel_section(model)
     if not port:
         raise DeviceError("the dynamixel driver needs a port: /dev/ttyUSB0 (say) or 'emu'")
     emulator = None
     if port == "emu":
         from ..sim.dynamixel_emulator import DynamixelEmulator
 
-        emulator = DynamixelEmulator([*cfg["ids"], cfg["gripper_id"]])
+        emulator = DynamixelEmulator([*cfg.ids, cfg.gripper_id])
         port = emulator.port
     try:
-        bus = DynamixelBus(port, int(cfg.get("baudrate", 1_000_000)))
+        bus = DynamixelBus(port, cfg.baudrate)
     except DeviceError:
         if emulator is not None:
             emulator.close()
@@ -97,17 +96,16 @@ class DynamixelDriver:
     """Driver (see ``drivers._driver``) for a Dynamixel arm described by ``model``."""
 
     def __init__(self, model: ArmModel, bus: DynamixelBus, *, emulator: Any = None) -> None:
-        cfg = model.drivers["dynamixel"]
+        cfg = dynamixel_section(model)
         self.model, self.bus, self._emulator = model, bus, emulator
-        self.ids = [int(i) for i in cfg["ids"]]
-        self.gripper_id = int(cfg["gripper_id"])
-        self._ticks_per_rad = float(cfg.get("ticks_per_turn", 4096)) / (2.0 * math.pi)
-        self._center = float(cfg.get("center_tick", 2048))
-        closed, opened = cfg.get("gripper_ticks", (1500, 2600))
-        self._grip_ticks = (int(closed), int(opened))
-        self._tolerance = int(cfg.get("position_tolerance_ticks", 30))
+        self.ids = list(cfg.ids)
+        self.gripper_id = cfg.gripper_id
+        self._ticks_per_rad = cfg.ticks_per_turn / (2.0 * math.pi)
+        self._center = cfg.center_tick
+        self._grip_ticks = cfg.gripper_ticks
+        self._tolerance = cfg.position_tolerance_ticks
         try:
-            self._setup(int(cfg.get("gripper_current", 300)))
+            self._setup(cfg.gripper_current)
         except DeviceError:
             self.close()
             raise
