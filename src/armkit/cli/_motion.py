@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 from typing import Any
 
 import numpy as np
@@ -18,6 +19,7 @@ from numpy.typing import NDArray
 from .._errors import InputError
 from .._files import config_dir
 from ..arm import MAX_MOVE_S, Arm
+from ..drivers.timed import TimedDriver
 from ..model import load_model
 from ..motion import (
     EarlyStreaming,
@@ -174,20 +176,24 @@ def _open(args: argparse.Namespace) -> Arm:
             port = default_state_file(model)
         else:
             check_output(port, "--port (the simulated arm's state file)")
-    return Arm(model, args.driver, port)
+    arm = Arm(model, args.driver, port)
+    if isinstance(arm.driver, TimedDriver):  # before moving from an uncertain estimate
+        rehome = f"armkit --arm {args.arm} --driver {args.driver} rehome"
+        arm.driver.warn = lambda text: print(f"armkit: warning: {text}: {rehome}", file=sys.stderr)
+    return arm
 
 
 def _move(args: argparse.Namespace) -> int:
     with _open(args) as arm:
         arm.move_to(args.x, args.y, args.z, args.pitch, speed=args.speed, duration=args.duration)
-        _print_where(arm)
+        _print_where(arm, args)
     return 0
 
 
 def _joints(args: argparse.Namespace) -> int:
     with _open(args) as arm:
         arm.move_joints(args.angles, speed=args.speed, duration=args.duration)
-        _print_where(arm)
+        _print_where(arm, args)
     return 0
 
 
@@ -202,20 +208,26 @@ def _grip(args: argparse.Namespace) -> int:
 def _home(args: argparse.Namespace) -> int:
     with _open(args) as arm:
         arm.home()
-        _print_where(arm)
+        _print_where(arm, args)
     return 0
 
 
 def _where(args: argparse.Namespace) -> int:
     with _open(args) as arm:
-        _print_where(arm)
+        _print_where(arm, args)
     return 0
 
 
-def _print_where(arm: Arm) -> None:
+def _print_where(arm: Arm, args: argparse.Namespace) -> None:
     x, y, z, pitch = arm.position()
     print(f"gripper at x {x:.1f} y {y:.1f} z {z:.1f} mm, pitch {pitch:.1f} deg")
     print("joints " + "  ".join(f"{n} {a:.2f}" for n, a in arm.angles().items()) + " deg")
+    reason = arm.driver.uncertainty if isinstance(arm.driver, TimedDriver) else None
+    if reason:
+        print(
+            f"uncertain: these are estimates ({reason}); to know the angles again run "
+            f"'armkit --arm {args.arm} --driver {args.driver} rehome'"
+        )
 
 
 def _draw(args: argparse.Namespace) -> int:

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
 from collections.abc import Callable
 from pathlib import Path
 
@@ -18,16 +19,23 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..._clock import Clock
-from ..._errors import ArmkitError
+from ..._errors import ArmkitError, DeviceError, InputError
+from ..._lock import exclusive
 from ...model import ArmModel
 from ._config import OwiConfig, default_timing, owi_config
 from ._estimate import MOVING, after_run, pending_of, recovered
 from ._motors import Device, Motors, Run
 from ._order import safe_order
 from ._plan import MoveReport, ShortMoveError, Step, plan_turns
-from ._safety import ExitGuard
+from ._safety import ExitGuard, SignalGate
+from ._short import RESOLUTION, legs
 from ._state import ArmState, load, save
 from ._timing import TimingModel
+
+
+class UncertainEstimateWarning(UserWarning):
+    """A move starts from joint angles that are only an uncertain estimate."""
+
 
 F64 = NDArray[np.float64]
 
@@ -45,19 +53,37 @@ class TimedDriver:
         *,
         durable: bool = True,
     ) -> None:
-        """Open the unit whose state file is ``path`` (created on first use), send stop, and
-        if the last process died mid-move, account for it. ``durable=False`` skips fsync
-        (simulations)."""
+        """Open the unit whose state file is ``path`` (created on first use): take its lock
+        (a second process is refused with DeviceError before a byte is sent), send stop,
+        and if the last process died mid-move, account for it. ``durable=False`` skips
+        fsync (simulations).
+
+        Attributes:
+            warn: called with a message before a move starts from an uncertain estimate
+                (default: ``warnings.warn`` with UncertainEstimateWarning), once per driver.
+        """
         self.durable = durable
         self.model, self.clock, self.path = model, clock, path
         self.config: OwiConfig = owi_config(model)
+        self._lock = exclusive(path, f"the OWI-535 unit {unit!r} ({path})")
+        try:
+            self._open(model, device, clock, unit)
+        except BaseException:
+            if hasattr(self, "_guard"):
+                self._guard.uninstall()
+            self._lock.release()
+            raise
+
+    def _open(self, model: ArmModel, device: Device, clock: Clock, unit: str) -> None:
+        self.warn: Callable[[str], None] = _warn
+        self._warned = False
         self.motors = Motors(
             device,
             clock,
             base_reversed=self.config.base_reversed,
             watchdog_margin_s=self.config.watchdog_margin_s,
         )
-        self.state = load(path) if path.exists() else _fresh_state(model, unit)
+        self.state = load(self.path) if self.path.exists() else _fresh_state(model, unit)
         self.motors.light = self.state.light
         self._guard = ExitGuard(self.motors.stop)
         self._guard.install()
@@ -95,31 +121,64 @@ class TimedDriver:
             UnreachableError: every order would sweep the arm through the table.
         """
         if speed is not None and not 0.0 < speed <= 1.0:
-            raise ValueError(f"speed must be in (0, 1], got {speed}")
+            raise InputError(f"speed must be in (0, 1], got {speed:g}")
         self.move_report(np.asarray(q, dtype=float))
 
     def move_report(self, q: F64, *, table: bool = True) -> MoveReport:
-        """:meth:`move`, returning what was done (steps, clamped or skipped joints).
-        ``table=False`` skips the table check (calibration, re-homing: the arm stands at
-        the edge of the table)."""
+        """:meth:`move`, returning what was done (steps, and notes on joints already
+        within the 0.5 deg resolution). ``table=False`` skips the table check
+        (calibration, re-homing: the arm stands at the edge of the table).
+
+        A joint whose turn is shorter than the motors' shortest reliable run turns in
+        two timed legs (past the target, then back); every leg is planned before the
+        first motor starts, so a refused move moves nothing."""
         if q.shape != (4,):
-            raise ValueError(f"q must have shape (4,), got {q.shape}")
+            raise InputError(f"q must be 4 joint angles, got shape {q.shape}")
+        targets = dict(enumerate(q))
         plan_turns(
-            self.timing,
-            self.joint_names,
-            self.read(),
-            dict(enumerate(q)),
-            0.0,
-            clamp=False,
-            skip_short=True,
+            self.timing, self.joint_names, self.read(), targets, 0.0, clamp=False, skip_short=True
         )
         order = safe_order(self.read(), q, self.timing.lengths, self.model.dh[0].d, table)
         report = MoveReport()
-        for j in order:
-            part = self._plan({j: float(q[j])}, clamp=False, skip_short=True)
-            report.notes += part.notes
+        planned = self._legs(order, q, table, report)
+        if planned:
+            self._warn_if_uncertain()
+        for j, target in planned:
+            part = self._plan({j: target}, clamp=False, skip_short=True)
             report.steps += self._run_steps(part.steps)
         return report
+
+    def _legs(
+        self, order: list[int], q: F64, table: bool, report: MoveReport
+    ) -> list[tuple[int, float]]:
+        """(joint, target [rad]) of every run of the move, in order (see :meth:`move_report`)."""
+        pose, out = self.read(), []
+        height = self.model.dh[0].d if table else None
+        for j in order:
+            name, target = self.joint_names[j], float(q[j])
+            steps = legs(self.timing, name, pose, j, target, self.state.motor_s, height)
+            if not steps:
+                report.notes.append(
+                    f"{name}: {math.degrees(target - pose[j]):+.2f} deg is within the "
+                    f"{math.degrees(RESOLUTION):.1f} deg resolution: left where it is"
+                )
+            out += [(j, t) for t in steps]
+            pose[j] = target if steps else pose[j]
+        return out
+
+    @property
+    def uncertainty(self) -> str | None:
+        """Why the estimated angles may be wrong (never homed, a move cut short, the
+        watchdog, the program died mid-move), or None when they are certain."""
+        return self.state.reason if self.state.uncertain else None
+
+    def _warn_if_uncertain(self) -> None:
+        if self.state.uncertain and not self._warned:
+            self._warned = True
+            self.warn(
+                f"the OWI-535's joint angles are an uncertain estimate ({self.state.reason}) "
+                "and this move starts from it; re-home the arm to know them again"
+            )
 
     def grip(self, width: float) -> None:
         """Open (``width`` [m] over half the gripper's range) or close the gripper."""
@@ -139,6 +198,7 @@ class TimedDriver:
         finally:
             self._guard.uninstall()
             self.motors.device.close()
+            self._lock.release()
 
     # -- joints that know their angle ------------------------------------
     @property
@@ -197,14 +257,12 @@ class TimedDriver:
         )
         run = Run({joint: (direction, worst)})
         before = self.state
-        self._save(before.with_(uncertain=True, reason=MOVING, pending=pending_of([step])))
-        try:
-            if wait is None:
-                self.motors.execute(run)
-            else:
-                self.motors.run_until(run, wait, 2 * worst + self.config.watchdog_margin_s)
-        finally:
-            self._save(after_run(before, [step], run, self.joint_names, at_limit=run.complete))
+        self._execute(
+            run,
+            before.with_(uncertain=True, reason=MOVING, pending=pending_of([step])),
+            lambda: after_run(before, [step], run, self.joint_names, at_limit=run.complete),
+            (wait, 2 * worst + self.config.watchdog_margin_s) if wait is not None else None,
+        )
         if not run.complete:
             raise ArmkitError(
                 f"the {joint} was stopped by the watchdog before anyone said it reached "
@@ -218,11 +276,14 @@ class TimedDriver:
         if self.state.gripper == wanted:
             return
         run = Run({"gripper": (1 if open_ else -1, self.timing.gripper_s)})
-        self._save(self.state.with_(gripper="unknown"))
-        try:
-            self.motors.execute(run)
-        finally:
-            self._save(self.state.with_(gripper=wanted if run.complete else "unknown"))
+        before = self.state
+
+        def done() -> ArmState:
+            moved = wanted if run.complete else "unknown"
+            return before.with_(gripper=moved if run.started else before.gripper)
+
+        self._execute(run, before.with_(gripper="unknown"), done)
+        _raise_if_watchdog(run)
 
     def set_light(self, on: bool) -> None:
         """Switch the light on or off (kept across stops)."""
@@ -252,16 +313,59 @@ class TimedDriver:
         names = self.joint_names
         run = Run({names[s.joint]: (s.direction, s.seconds) for s in steps})
         before = self.state
-        self._save(before.with_(uncertain=True, reason=MOVING, pending=pending_of(steps)))
-        try:
-            self.motors.execute(run)
-        finally:
-            self._save(after_run(before, steps, run, self.joint_names))
+        self._execute(
+            run,
+            before.with_(uncertain=True, reason=MOVING, pending=pending_of(steps)),
+            lambda: after_run(before, steps, run, self.joint_names),
+        )
+        _raise_if_watchdog(run)
         return steps
+
+    def _execute(
+        self,
+        run: Run,
+        pending: ArmState,
+        done: Callable[[], ArmState],
+        until: tuple[Callable[[], object], float] | None = None,
+    ) -> None:
+        """Save ``pending``, run the motors (``until``: (wait, watchdog timeout [s]) for a
+        run that ends when ``wait()`` returns), save ``done()``. A signal at any instant
+        leaves the file right: it can only cut short the waits, and it is delivered once
+        the final state is saved (SignalGate)."""
+        with SignalGate() as gate:
+            self._save(pending)
+            try:
+                gate.check()  # Ctrl-C during the save: no motor starts
+                if until is None:
+                    self.motors.execute(run, lambda s: gate.pause(self.clock.sleep, s))
+                else:
+                    self.motors.run_until(run, until[0], until[1], gate.wait)
+            finally:
+                self._save(done())
 
     def _save(self, state: ArmState) -> None:
         self.state = state
-        save(state, self.path, self.durable)
+        try:
+            save(state, self.path, self.durable)
+        except OSError as exc:
+            raise DeviceError(
+                f"cannot write the OWI state file {self.path}: {exc.strerror}; "
+                "set ARMKIT_CONFIG_DIR to a writable directory"
+            ) from None
+
+
+def _warn(message: str) -> None:
+    warnings.warn(message, UncertainEstimateWarning, stacklevel=4)
+
+
+def _raise_if_watchdog(run: Run) -> None:
+    """DeviceError after a run the watchdog had to stop (the state is already saved)."""
+    if run.watchdog_fired:
+        raise DeviceError(
+            "the watchdog stopped the arm: the program did not stop the motors in time; "
+            "the angles are estimated from the moment it stopped and are uncertain: "
+            "run 'rehome'"
+        )
 
 
 def _fresh_state(model: ArmModel, unit: str) -> ArmState:

@@ -60,7 +60,7 @@ def status_line(driver: TimedDriver) -> str:
     x, y, z = fk(driver.model, q)[:3, 3] * 1000
     st = driver.state
     flags = f"grip {st.gripper} light {'on' if st.light else 'off'}"
-    sure = "UNCERTAIN (rehome)" if st.uncertain else "certain"
+    sure = f"UNCERTAIN: {st.reason} (rehome)" if st.uncertain else "certain"
     return f"{angles} | xyz {x:4.0f} {y:4.0f} {z:4.0f} mm | {flags} | {sure}"
 
 
