@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 import time
-import warnings
 from collections.abc import Callable
 from pathlib import Path
 
@@ -19,23 +18,19 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..._clock import Clock
-from ..._errors import ArmkitError, DeviceError, InputError
+from ..._errors import ArmkitError, InputError
 from ..._lock import exclusive
 from ...model import ArmModel
 from ._config import OwiConfig, default_timing, owi_config
 from ._estimate import MOVING, after_run, pending_of, recovered
+from ._journal import Until, journaled_run, raise_if_watchdog, warn, write
 from ._motors import Device, Motors, Run
 from ._order import safe_order
 from ._plan import MoveReport, ShortMoveError, Step, plan_turns
-from ._safety import ExitGuard, SignalGate
-from ._short import RESOLUTION, legs
-from ._state import ArmState, load, save
+from ._safety import ExitGuard
+from ._short import plan_legs
+from ._state import ArmState, load
 from ._timing import TimingModel
-
-
-class UncertainEstimateWarning(UserWarning):
-    """A move starts from joint angles that are only an uncertain estimate."""
-
 
 F64 = NDArray[np.float64]
 
@@ -75,7 +70,7 @@ class TimedDriver:
             raise
 
     def _open(self, model: ArmModel, device: Device, clock: Clock, unit: str) -> None:
-        self.warn: Callable[[str], None] = _warn
+        self.warn: Callable[[str], None] = warn
         self._warned = False
         self.motors = Motors(
             device,
@@ -140,31 +135,22 @@ class TimedDriver:
         )
         order = safe_order(self.read(), q, self.timing.lengths, self.model.dh[0].d, table)
         report = MoveReport()
-        planned = self._legs(order, q, table, report)
+        height = self.model.dh[0].d if table else None
+        planned = plan_legs(
+            self.timing,
+            self.joint_names,
+            self.read(),
+            (order, q),
+            self.state.motor_s,
+            height,
+            report.notes,
+        )
         if planned:
             self._warn_if_uncertain()
         for j, target in planned:
             part = self._plan({j: target}, clamp=False, skip_short=True)
             report.steps += self._run_steps(part.steps)
         return report
-
-    def _legs(
-        self, order: list[int], q: F64, table: bool, report: MoveReport
-    ) -> list[tuple[int, float]]:
-        """(joint, target [rad]) of every run of the move, in order (see :meth:`move_report`)."""
-        pose, out = self.read(), []
-        height = self.model.dh[0].d if table else None
-        for j in order:
-            name, target = self.joint_names[j], float(q[j])
-            steps = legs(self.timing, name, pose, j, target, self.state.motor_s, height)
-            if not steps:
-                report.notes.append(
-                    f"{name}: {math.degrees(target - pose[j]):+.2f} deg is within the "
-                    f"{math.degrees(RESOLUTION):.1f} deg resolution: left where it is"
-                )
-            out += [(j, t) for t in steps]
-            pose[j] = target if steps else pose[j]
-        return out
 
     @property
     def uncertainty(self) -> str | None:
@@ -257,11 +243,12 @@ class TimedDriver:
         )
         run = Run({joint: (direction, worst)})
         before = self.state
+        until = None if wait is None else (wait, 2 * worst + self.config.watchdog_margin_s)
         self._execute(
             run,
             before.with_(uncertain=True, reason=MOVING, pending=pending_of([step])),
             lambda: after_run(before, [step], run, self.joint_names, at_limit=run.complete),
-            (wait, 2 * worst + self.config.watchdog_margin_s) if wait is not None else None,
+            until,
         )
         if not run.complete:
             raise ArmkitError(
@@ -283,7 +270,7 @@ class TimedDriver:
             return before.with_(gripper=moved if run.started else before.gripper)
 
         self._execute(run, before.with_(gripper="unknown"), done)
-        _raise_if_watchdog(run)
+        raise_if_watchdog(run)
 
     def set_light(self, on: bool) -> None:
         """Switch the light on or off (kept across stops)."""
@@ -296,15 +283,9 @@ class TimedDriver:
 
     # -- internals ---------------------------------------------------------
     def _plan(self, targets: dict[int, float], *, clamp: bool, skip_short: bool) -> MoveReport:
-        q = self.read()
+        q, motor_s = self.read(), self.state.motor_s
         return plan_turns(
-            self.timing,
-            self.joint_names,
-            q,
-            targets,
-            self.state.motor_s,
-            clamp=clamp,
-            skip_short=skip_short,
+            self.timing, self.joint_names, q, targets, motor_s, clamp=clamp, skip_short=skip_short
         )
 
     def _run_steps(self, steps: list[Step]) -> list[Step]:
@@ -318,54 +299,18 @@ class TimedDriver:
             before.with_(uncertain=True, reason=MOVING, pending=pending_of(steps)),
             lambda: after_run(before, steps, run, self.joint_names),
         )
-        _raise_if_watchdog(run)
+        raise_if_watchdog(run)
         return steps
 
     def _execute(
-        self,
-        run: Run,
-        pending: ArmState,
-        done: Callable[[], ArmState],
-        until: tuple[Callable[[], object], float] | None = None,
+        self, run: Run, pending: ArmState, done: Callable[[], ArmState], until: Until | None = None
     ) -> None:
-        """Save ``pending``, run the motors (``until``: (wait, watchdog timeout [s]) for a
-        run that ends when ``wait()`` returns), save ``done()``. A signal at any instant
-        leaves the file right: it can only cut short the waits, and it is delivered once
-        the final state is saved (SignalGate)."""
-        with SignalGate() as gate:
-            self._save(pending)
-            try:
-                gate.check()  # Ctrl-C during the save: no motor starts
-                if until is None:
-                    self.motors.execute(run, lambda s: gate.pause(self.clock.sleep, s))
-                else:
-                    self.motors.run_until(run, until[0], until[1], gate.wait)
-            finally:
-                self._save(done())
+        """Save ``pending``, run the motors, save ``done()`` (see ``journaled_run``)."""
+        journaled_run(self.motors, self.clock, run, self._save, pending, done, until)
 
     def _save(self, state: ArmState) -> None:
         self.state = state
-        try:
-            save(state, self.path, self.durable)
-        except OSError as exc:
-            raise DeviceError(
-                f"cannot write the OWI state file {self.path}: {exc.strerror}; "
-                "set ARMKIT_CONFIG_DIR to a writable directory"
-            ) from None
-
-
-def _warn(message: str) -> None:
-    warnings.warn(message, UncertainEstimateWarning, stacklevel=4)
-
-
-def _raise_if_watchdog(run: Run) -> None:
-    """DeviceError after a run the watchdog had to stop (the state is already saved)."""
-    if run.watchdog_fired:
-        raise DeviceError(
-            "the watchdog stopped the arm: the program did not stop the motors in time; "
-            "the angles are estimated from the moment it stopped and are uncertain: "
-            "run 'rehome'"
-        )
+        write(self.path, state, self.durable)
 
 
 def _fresh_state(model: ArmModel, unit: str) -> ArmState:

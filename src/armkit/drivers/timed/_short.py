@@ -100,3 +100,31 @@ def _fits(
         ):
             return False
     return True
+
+
+def plan_legs(
+    timing: TimingModel,
+    names: tuple[str, ...],
+    q0: F64,
+    move: tuple[list[int], F64],
+    motor_s: float,
+    shoulder_height: float | None,
+    notes: list[str],
+) -> list[tuple[int, float]]:
+    """(joint, target [rad]) of every run of a move from ``q0`` to ``q1`` turning the
+    joints in ``order`` (``move`` = (order, q1)), planned before any motor starts;
+    joints within RESOLUTION are noted in ``notes`` and left where they are."""
+    order, q1 = move
+    pose, out = np.array(q0, dtype=float), []
+    for j in order:
+        target = float(q1[j])
+        steps = legs(timing, names[j], pose, j, target, motor_s, shoulder_height)
+        if not steps:
+            notes.append(
+                f"{names[j]}: {math.degrees(target - pose[j]):+.2f} deg is within the "
+                f"{math.degrees(RESOLUTION):.1f} deg resolution: left where it is"
+            )
+            continue
+        out += [(j, t) for t in steps]
+        pose[j] = target
+    return out
