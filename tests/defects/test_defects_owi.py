@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-import armkit.drivers.timed._driver as driver_module
+import armkit.drivers.timed._journal as journal_module
 from armkit import DeviceError
 from armkit.devices.owi535 import open_device
 from armkit.drivers.timed import ShortMoveError, TimedDriver, load_state, state_path
@@ -82,14 +82,14 @@ def interrupted_move(
     driver, the sim, the events and how many commands were sent before the move."""
     sim = build_sim(owi, seed=5)
     events = Events(set())
-    real_save = driver_module.save
+    real_save = journal_module.save
 
     def save(*args: object, **kwargs: object) -> None:
         events("save")
         real_save(*args, **kwargs)  # type: ignore[arg-type]
         events("saved")
 
-    monkeypatch.setattr(driver_module, "save", save)
+    monkeypatch.setattr(journal_module, "save", save)
     d = TimedDriver(
         owi,
         EventDevice(open_device(sim.backend), events),
