@@ -99,8 +99,9 @@ class Arm:
         Raises:
             UnreachableError: the point (and pitch) is out of reach or the joint limits.
         """
-        pitch_rad = None if pitch is None else math.radians(pitch)
-        q = ik(self._kin, np.array([x, y, z]) / 1000.0, pitch_rad, self.driver.read()).q
+        pitch_rad = None if pitch is None else math.radians(float(_numbers(pitch, "pitch [deg]")))
+        target = _numbers([x, y, z], "x, y, z [mm]") / 1000.0
+        q = ik(self._kin, target, pitch_rad, self.driver.read()).q
         self._move(q, _Timing(speed, duration, wait, timeout))
 
     def move_joints(
@@ -129,6 +130,7 @@ class Arm:
         """Open the gripper to ``width_mm`` [mm] (the grip point moves with it on
         scissor grippers). A gripper that is only open or closed (the OWI's) takes
         its closed or its open width and nothing in between (InputError)."""
+        width_mm = float(_numbers(width_mm, "grip width [mm]"))
         g = self.model.gripper
         lo, hi = g.width_min * 1000.0, g.width_max * 1000.0
         if g.kind == "timed" and not (abs(width_mm - lo) < 1e-9 or abs(width_mm - hi) < 1e-9):
@@ -161,7 +163,7 @@ class Arm:
         """Draw through ``points_mm`` [mm], shape (N, 3), at ``pitch`` [deg]: the whole
         path is planned and checked first (PathError names the first bad point),
         then the arm moves to its start and ``streamer`` (default timed) runs it."""
-        pts = np.asarray(points_mm, dtype=np.float64) / 1000.0
+        pts = _numbers(points_mm, "points_mm [mm]") / 1000.0
         pitch_rad = None if pitch is None else math.radians(pitch)
         path = plan_path(self._kin, pts, pitch_rad, self.driver.read())
         follow(self.driver, self._kin, path, streamer or TimedStreaming(), self.clock)
@@ -204,7 +206,7 @@ class Arm:
             for name, deg in angles.items():
                 q[self.model.joint_index(name)] = deg
         else:
-            q = np.asarray(angles, dtype=np.float64)
+            q = _numbers(angles, "joint angles [deg]", finite=False)
             if q.shape != (self.model.dof,):
                 names = ", ".join(self.model.joint_names)
                 raise InputError(f"give {self.model.dof} angles ({names}), got {q.size}")
@@ -242,6 +244,18 @@ class Arm:
                 self.driver.stop()
                 raise DeviceError(f"the arm did not reach its target within {timeout} s; stopped")
             self.clock.sleep(0.005)
+
+
+def _numbers(values: object, what: str, *, finite: bool = True) -> F64:
+    """``values`` as a float array; InputError naming ``what`` if they are not numbers
+    (or, with ``finite``, not finite: None and NaN included)."""
+    try:
+        a = np.asarray(values, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError(f"{what} must be numbers, got {values!r}") from None
+    if finite and not np.all(np.isfinite(a)):
+        raise InputError(f"{what} must be finite numbers, got {values!r}")
+    return a
 
 
 def _check_timing(timing: _Timing) -> None:

@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import DeviceError, JointLimitError
+from .._errors import DeviceError, InputError, JointLimitError
 from ..devices import _xm430 as xm
 from ..devices.dynamixel import DynamixelBus
 from ..model import ArmModel, dynamixel_section
@@ -87,9 +87,9 @@ def ramp_for(total: float, distance: NDArray[np.float64], a_max: NDArray[np.floa
 def check_timing(duration: float | None, speed: float | None) -> None:
     """ValueError unless ``duration`` is 0..32.7 s and ``speed`` in (0, 1] (or None)."""
     if speed is not None and not 0.0 < speed <= 1.0:
-        raise ValueError(f"speed must be in (0, 1] (a fraction of max speed), got {speed}")
+        raise InputError(f"speed must be in (0, 1] (a fraction of max speed), got {speed}")
     if duration is not None and not 0.0 <= duration <= _MAX_PROFILE_MS / 1000:
-        raise ValueError(f"duration must be 0..{_MAX_PROFILE_MS / 1000} s, got {duration}")
+        raise InputError(f"duration must be 0..{_MAX_PROFILE_MS / 1000} s, got {duration}")
 
 
 class DynamixelDriver:
@@ -137,7 +137,7 @@ class DynamixelDriver:
         """``q`` [rad] as a (dof,) array; JointLimitError names the first joint outside."""
         q = np.asarray(q, dtype=np.float64)
         if q.shape != (self.model.dof,):
-            raise ValueError(f"expected {self.model.dof} joint angles, got shape {q.shape}")
+            raise InputError(f"expected {self.model.dof} joint angles, got shape {q.shape}")
         for joint, value in zip(self.model.joints, q, strict=True):
             if not joint.lower - 1e-9 <= value <= joint.upper + 1e-9:
                 raise JointLimitError(
@@ -161,7 +161,7 @@ class DynamixelDriver:
         fastest, _ = profile_times(goal - start, v_max, a_max)
         total_ms = max(1, math.ceil(1000.0 * max(fastest, duration or 0.0)))
         if total_ms > _MAX_PROFILE_MS:
-            raise ValueError(
+            raise InputError(
                 f"this move would take {total_ms / 1000:.1f} s at speed {speed}; a servo profile"
                 f" lasts at most {_MAX_PROFILE_MS / 1000} s: raise the speed or split the move"
             )
@@ -236,7 +236,7 @@ class DynamixelDriver:
         """Gripper goal tick for an opening ``width`` [m] (ValueError outside the model's range)."""
         g = self.model.gripper
         if not g.width_min - 1e-12 <= width <= g.width_max + 1e-12:
-            raise ValueError(
+            raise InputError(
                 f"grip width {width * 1000:.1f} mm is outside {self.model.name}'s range"
                 f" {g.width_min * 1000:.1f}..{g.width_max * 1000:.1f} mm"
             )

@@ -215,7 +215,7 @@ class TimedDriver:
         estimated by the timing model and clamped at the limits."""
         j = self.model.joint_index(joint)
         if direction not in (-1, 1):
-            raise ValueError(f"turn {joint} needs direction -1 or +1, got {direction}")
+            raise InputError(f"turn {joint} needs direction -1 or +1, got {direction}")
         if seconds < self.timing.min_move_s:
             raise ShortMoveError(
                 f"turn {joint} for {seconds * 1000:.0f} ms is under the "
