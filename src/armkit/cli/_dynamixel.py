@@ -6,7 +6,7 @@ import argparse
 import contextlib
 from typing import Any
 
-from .._errors import InputError
+from .._errors import DeviceError, InputError
 from ..devices import _xm430 as xm
 from ..devices.dynamixel import DynamixelBus
 from ._args import integer
@@ -59,11 +59,10 @@ def run_scan(args: argparse.Namespace) -> int:
         bus = stack.enter_context(DynamixelBus(port, args.baud, retries=0))
         rows = [_row(bus, sid, model) for sid, model in bus.scan(ids).items()]
     if not rows:
-        print(
+        raise DeviceError(
             f"no servo answered on {args.port} at {args.baud} baud (IDs {args.ids});"
             " check power, cable and baud (a new XM430 is ID 1 at 57600)"
         )
-        return 1
     print(table(["id", "model", "name", "mode", "torque", "hw error", "tick", "deg"], rows))
     return 0
 
