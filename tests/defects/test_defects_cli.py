@@ -138,6 +138,18 @@ def _epilogs() -> str:
     return "\n".join([EPILOG, *((p.epilog or "") for p in sub.choices.values())])  # type: ignore[attr-defined]
 
 
+def test_the_limits_note_names_a_command_that_works(cli, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    from importlib import resources
+
+    mine = tmp_path / "my_arm.toml"
+    text = (resources.files("armkit.model") / "arms" / "lynx6.toml").read_text()
+    mine.write_text(text.replace('name = "lynx6"', 'name = "my_arm"'))
+    got = cli("--arm", str(mine), "fk", "0", "0", "0", "0", "0")
+    assert got.code == 0
+    hint = re.search(r"see '(armkit [^']+)'", got.out)
+    assert hint is not None and cli(*hint.group(1).split()[1:]).code == 0
+
+
 def test_every_suggested_command_works(cli) -> None:  # type: ignore[no-untyped-def]
     demo = cli("demo", "-o", "demo.png")
     assert demo.code == 0

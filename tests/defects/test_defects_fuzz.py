@@ -85,6 +85,8 @@ COMMANDS: dict[str, tuple[int, list[str]]] = {  # command: (usual number of valu
     "nosuchcommand": (0, []),
 }
 TRIPLES = {"--center", "--corner"}
+# what an error line must never show: numpy reprs, arrays, 309-digit numbers, Python internals
+LEAKS = re.compile(r"np\.float64|array\(|\d{25,}|cannot convert|object has no attribute")
 
 
 def _state_files(config: Path) -> dict[str, bytes]:
@@ -119,6 +121,7 @@ def check(argv: list[str], config: Path) -> int:
     if code != 0:
         assert len(err.splitlines()) == 1, f"{shown}: exit {code} with stderr\n{err}"
         assert re.fullmatch(r"armkit: (error: .+|interrupted)", err.strip()), f"{shown}: {err}"
+        assert not LEAKS.search(err), f"{shown}: not in the user's terms: {err}"
         assert _state_files(config) == before, f"{shown} was refused but moved the arm"
     else:
         assert errors == [], f"{shown}: exit 0 with errors\n{err}"

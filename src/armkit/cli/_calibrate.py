@@ -7,8 +7,10 @@ import importlib
 from typing import Any
 
 from .._errors import ArmkitError, InputError
+from .._files import config_dir
 from ..drivers import open_driver
 from ..model import load_model
+from ._args import check_folder
 
 # driver name -> the module whose run_calibration(model, driver, ask, say) measures it
 CALIBRATORS = {
@@ -51,6 +53,7 @@ def _ask(prompt: str) -> str:
 
 def run_calibrate(args: argparse.Namespace) -> int:
     model = load_model(args.arm)
+    check_folder(config_dir(), "the config directory")  # where the calibration goes
     module = importlib.import_module(_module_for(model.name, args.driver))
     driver = open_driver(model, args.driver, args.port)
     ask = _ask

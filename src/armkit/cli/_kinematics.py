@@ -100,7 +100,7 @@ def run_fk(args: argparse.Namespace) -> int:
     print(f"position: x {pos[0]:.2f}  y {pos[1]:.2f}  z {pos[2]:.2f} mm   pitch {pitch:.2f} deg")
     if outside:
         print(
-            f"note: outside the joint limits: {', '.join(outside)} (see 'armkit --arm {m.name} show')"
+            f"note: outside the joint limits: {', '.join(outside)} (see 'armkit --arm {args.arm} show')"
         )
     return 0
 

@@ -9,7 +9,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .._errors import ArmkitError
-from ._args import coordinate, number
+from .._files import config_dir
+from ._args import check_folder, coordinate, number
 
 if TYPE_CHECKING:
     from ..drivers.timed import TimedDriver
@@ -55,6 +56,7 @@ def _open(args: argparse.Namespace) -> TimedDriver:
     from ..model import load_model
 
     model = load_model(args.arm)
+    check_folder(config_dir(), "the config directory")  # the unit's state file
     if "owi535" not in model.drivers:
         raise ArmkitError(
             f"'{args.command}' is for the OWI-535; add --arm owi535 (got {model.name})"

@@ -83,7 +83,7 @@ def load(path: Path) -> ArmState:
     except (OSError, ValueError, KeyError, TypeError) as exc:
         raise ArmkitError(
             f"OWI state file {path} is unreadable ({exc}); "
-            "delete it and run 'calibrate' or 'rehome'"
+            "delete it, then re-home the arm (rehome) or calibrate it"
         ) from None
 
 
