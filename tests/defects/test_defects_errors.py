@@ -84,6 +84,10 @@ def test_library_functions_refuse_with_input_errors() -> None:
 
     with pytest.raises(InputError, match="spacing must be > 0"):
         line(np.zeros(3), np.ones(3), 0.0)
+    with pytest.raises(InputError, match="at most 1000000: use a larger spacing"):
+        line(np.zeros(3), np.ones(3), 1e-9)
+    with pytest.raises(InputError, match="at most 1000000"):
+        line(np.zeros(3), [1e308, 1e308, 0], 0.002)
     with pytest.raises(InputError, match=r"start must be 3 numbers \[m\]"):
         line(["a", 0, 0], np.ones(3), 0.01)
     with pytest.raises(

@@ -18,6 +18,7 @@ from numpy.typing import ArrayLike, NDArray
 from .._errors import InputError
 
 F64 = NDArray[np.float64]
+MAX_POINTS = 1_000_000  # points in one path: beyond this a spacing or a size is a mistake
 
 
 def line(start: ArrayLike, end: ArrayLike, spacing: float) -> F64:
@@ -99,9 +100,16 @@ def corners(points: ArrayLike, angle: float = math.radians(20.0)) -> NDArray[np.
 
 
 def _count(length: float, spacing: float) -> int:
+    """Pieces of at most ``spacing`` [m] along ``length`` [m]; InputError beyond MAX_POINTS."""
     if not (math.isfinite(spacing) and spacing > 0):
         raise InputError(f"spacing must be > 0, got {spacing}")
-    return max(1, math.ceil(length / spacing - 1e-9))
+    pieces = length / spacing
+    if not pieces <= MAX_POINTS:
+        raise InputError(
+            f"{length * 1000:.6g} mm at {spacing * 1000:g} mm spacing would be {pieces:.3g} "
+            f"points; at most {MAX_POINTS}: use a larger spacing"
+        )
+    return max(1, math.ceil(pieces - 1e-9))
 
 
 def point3(p: ArrayLike, name: str) -> F64:
