@@ -99,10 +99,10 @@ class Arm:
         Raises:
             UnreachableError: the point (and pitch) is out of reach or the joint limits.
         """
-        pitch_rad = None if pitch is None else math.radians(float(_numbers(pitch, "pitch [deg]")))
+        pitch_rad = None if pitch is None else math.radians(_number(pitch, "pitch [deg]"))
         target = _numbers([x, y, z], "x, y, z [mm]") / 1000.0
         q = ik(self._kin, target, pitch_rad, self.driver.read()).q
-        self._move(q, _Timing(speed, duration, wait, timeout))
+        self._move(q, _timing(speed, duration, wait, timeout))
 
     def move_joints(
         self,
@@ -115,7 +115,7 @@ class Arm:
     ) -> None:
         """Move joints to ``angles`` [deg]: one per joint in order, or a dict by name
         (joints not named stay where they are). Options as ``move_to``."""
-        self._move(self._joint_target(angles), _Timing(speed, duration, wait, timeout))
+        self._move(self._joint_target(angles), _timing(speed, duration, wait, timeout))
 
     def turn_to(self, joint: str, deg: float, *, speed: float | None = None) -> None:
         """Turn one joint to ``deg`` [deg]; the others stay."""
@@ -130,7 +130,7 @@ class Arm:
         """Open the gripper to ``width_mm`` [mm] (the grip point moves with it on
         scissor grippers). A gripper that is only open or closed (the OWI's) takes
         its closed or its open width and nothing in between (InputError)."""
-        width_mm = float(_numbers(width_mm, "grip width [mm]"))
+        width_mm = _number(width_mm, "grip width [mm]")
         g = self.model.gripper
         lo, hi = g.width_min * 1000.0, g.width_max * 1000.0
         if g.kind == "timed" and not (abs(width_mm - lo) < 1e-9 or abs(width_mm - hi) < 1e-9):
@@ -256,6 +256,25 @@ def _numbers(values: object, what: str, *, finite: bool = True) -> F64:
     if finite and not np.all(np.isfinite(a)):
         raise InputError(f"{what} must be finite numbers, got {values!r}")
     return a
+
+
+def _timing(
+    speed: float | None, duration: float | None, wait: bool, timeout: float | None
+) -> _Timing:
+    """The timing options as floats (InputError naming the one that is not a number)."""
+    values = [
+        None if v is None else _number(v, name, finite=False)
+        for v, name in ((speed, "speed"), (duration, "duration [s]"), (timeout, "timeout [s]"))
+    ]
+    return _Timing(values[0], values[1], bool(wait), values[2])
+
+
+def _number(value: object, what: str, *, finite: bool = True) -> float:
+    """``value`` as one float (InputError naming ``what`` otherwise)."""
+    a = _numbers(value, what, finite=finite)
+    if a.shape != ():
+        raise InputError(f"{what} must be one number, got {value!r}")
+    return float(a)
 
 
 def _check_timing(timing: _Timing) -> None:
