@@ -47,3 +47,14 @@ class DeviceError(ArmkitError):
 
 class ScriptError(ArmkitError):
     """A command-language script is wrong."""
+
+
+class InputError(ArmkitError, ValueError):
+    """A value someone gave (an argument, an option, a parameter) is not allowed:
+    not a number, out of its range, or the wrong count. The message names the
+    argument, what is allowed and what was given, in the units it was given in."""
+
+
+class ReplyError(DeviceError, ValueError):
+    """A device answered something that cannot be: a reply of the wrong length or an
+    impossible value (a bus fault, a wrong baud rate, another device on the port)."""

@@ -17,7 +17,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._errors import DeviceError, JointLimitError, UnreachableError
+from ._errors import DeviceError, InputError, JointLimitError, UnreachableError
 from .drivers._driver import Driver
 from .drivers._registry import open_driver
 from .kinematics import fk, ik, pitch_of
@@ -38,6 +38,7 @@ from .scene import Scene, check_clear, joint_sweep
 
 F64 = NDArray[np.float64]
 REACHED = math.radians(0.2)  # a move with a timeout is done when every joint is this close
+MAX_MOVE_S = 30.0  # longest single move [s] (a Dynamixel time-based profile allows 32.7 s)
 
 
 class Position(NamedTuple):
@@ -104,9 +105,10 @@ class Arm:
         Raises:
             UnreachableError: the point (and pitch) is out of reach or the joint limits.
         """
-        pitch_rad = None if pitch is None else math.radians(pitch)
-        q = ik(self._kin, np.array([x, y, z]) / 1000.0, pitch_rad, self.driver.read()).q
-        self._move(q, _Timing(speed, duration, wait, timeout))
+        pitch_rad = None if pitch is None else math.radians(_number(pitch, "pitch [deg]"))
+        target = _numbers([x, y, z], "x, y, z [mm]") / 1000.0
+        q = ik(self._kin, target, pitch_rad, self.driver.read()).q
+        self._move(q, _timing(speed, duration, wait, timeout))
 
     def move_joints(
         self,
@@ -119,7 +121,7 @@ class Arm:
     ) -> None:
         """Move joints to ``angles`` [deg]: one per joint in order, or a dict by name
         (joints not named stay where they are). Options as ``move_to``."""
-        self._move(self._joint_target(angles), _Timing(speed, duration, wait, timeout))
+        self._move(self._joint_target(angles), _timing(speed, duration, wait, timeout))
 
     def turn_to(self, joint: str, deg: float, *, speed: float | None = None) -> None:
         """Turn one joint to ``deg`` [deg]; the others stay."""
@@ -132,7 +134,16 @@ class Arm:
 
     def grip(self, width_mm: float) -> None:
         """Open the gripper to ``width_mm`` [mm] (the grip point moves with it on
-        scissor grippers)."""
+        scissor grippers). A gripper that is only open or closed (the OWI's) takes
+        its closed or its open width and nothing in between (InputError)."""
+        width_mm = _number(width_mm, "grip width [mm]")
+        g = self.model.gripper
+        lo, hi = g.width_min * 1000.0, g.width_max * 1000.0
+        if g.kind == "timed" and not (abs(width_mm - lo) < 1e-9 or abs(width_mm - hi) < 1e-9):
+            raise InputError(
+                f"{self.model.name}'s gripper is only open or closed: grip {lo:g} closes it, "
+                f"grip {hi:g} opens it; got {width_mm:g} mm"
+            )
         kin = self.model.with_grip_width(width_mm / 1000.0)
         self.driver.grip(width_mm / 1000.0)
         self._kin = kin
@@ -158,7 +169,7 @@ class Arm:
         """Draw through ``points_mm`` [mm], shape (N, 3), at ``pitch`` [deg]: the whole
         path is planned and checked first (PathError names the first bad point),
         then the arm moves to its start and ``streamer`` (default timed) runs it."""
-        pts = np.asarray(points_mm, dtype=np.float64) / 1000.0
+        pts = _numbers(points_mm, "points_mm [mm]") / 1000.0
         pitch_rad = None if pitch is None else math.radians(pitch)
         path = plan_path(self._kin, pts, pitch_rad, self.driver.read())
         self._check_clear(path.q)
@@ -202,20 +213,27 @@ class Arm:
             for name, deg in angles.items():
                 q[self.model.joint_index(name)] = deg
         else:
-            q = np.asarray(angles, dtype=np.float64)
+            q = _numbers(angles, "joint angles [deg]", finite=False)
             if q.shape != (self.model.dof,):
                 names = ", ".join(self.model.joint_names)
-                raise ValueError(f"give {self.model.dof} angles ({names}), got {len(q)}")
+                raise InputError(f"give {self.model.dof} angles ({names}), got {q.size}")
         if not np.all(np.isfinite(q)):
-            raise ValueError(f"joint angles must be finite, got {list(q)}")
+            shown = ", ".join(f"{v:g}" for v in q)
+            raise InputError(f"joint angles must be finite numbers of degrees, got {shown}")
         return np.radians(q)
 
     def _move(self, q: F64, timing: _Timing) -> None:
         """Check limits and timing, then send; with a timeout, poll until there."""
         _check_limits(self.model, q)
+        _check_timing(timing)
         self._check_clear(q[None, :])
         speed = 1.0 if timing.speed is None else timing.speed
-        trapezoid(self.model, self.driver.read(), q, speed, timing.duration)  # raises if too fast
+        profile = trapezoid(self.model, self.driver.read(), q, speed, timing.duration)
+        if profile.duration > MAX_MOVE_S:  # a tiny speed: refuse rather than crawl
+            raise InputError(
+                f"this move would take {profile.duration:.0f} s at speed {speed:g}; a move may "
+                f"take at most {MAX_MOVE_S:g} s: raise the speed"
+            )
         wait = timing.wait and timing.timeout is None
         self.driver.move(q, duration=timing.duration, speed=timing.speed, wait=wait)
         if timing.wait and timing.timeout is not None:
@@ -249,6 +267,52 @@ class Arm:
                 self.driver.stop()
                 raise DeviceError(f"the arm did not reach its target within {timeout} s; stopped")
             self.clock.sleep(0.005)
+
+
+def _numbers(values: object, what: str, *, finite: bool = True) -> F64:
+    """``values`` as a float array; InputError naming ``what`` if they are not numbers
+    (or, with ``finite``, not finite: None and NaN included)."""
+    try:
+        a = np.asarray(values, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError(f"{what} must be numbers, got {values!r}") from None
+    if finite and not np.all(np.isfinite(a)):
+        raise InputError(f"{what} must be finite numbers, got {values!r}")
+    return a
+
+
+def _timing(
+    speed: float | None, duration: float | None, wait: bool, timeout: float | None
+) -> _Timing:
+    """The timing options as floats (InputError naming the one that is not a number)."""
+    values = [
+        None if v is None else _number(v, name, finite=False)
+        for v, name in ((speed, "speed"), (duration, "duration [s]"), (timeout, "timeout [s]"))
+    ]
+    return _Timing(values[0], values[1], bool(wait), values[2])
+
+
+def _number(value: object, what: str, *, finite: bool = True) -> float:
+    """``value`` as one float (InputError naming ``what`` otherwise)."""
+    a = _numbers(value, what, finite=finite)
+    if a.shape != ():
+        raise InputError(f"{what} must be one number, got {value!r}")
+    return float(a)
+
+
+def _check_timing(timing: _Timing) -> None:
+    """InputError unless speed is in (0, 1] and duration in 0..MAX_MOVE_S [s] (or None)."""
+    if timing.speed is not None and not (math.isfinite(timing.speed) and 0 < timing.speed <= 1):
+        raise InputError(f"speed must be a fraction of the maximum in (0, 1], got {timing.speed:g}")
+    if timing.duration is not None and not (
+        math.isfinite(timing.duration) and 0 <= timing.duration <= MAX_MOVE_S
+    ):
+        raise InputError(
+            f"duration must be 0..{MAX_MOVE_S:g} s, got {timing.duration:g} s; "
+            "split a longer motion into several moves"
+        )
+    if timing.timeout is not None and not (math.isfinite(timing.timeout) and timing.timeout > 0):
+        raise InputError(f"timeout must be a number of seconds > 0, got {timing.timeout:g}")
 
 
 def _check_limits(model: ArmModel, q: F64) -> None:

@@ -127,4 +127,4 @@ def test_record_needs_the_simulator(capsys: pytest.CaptureFixture[str]) -> None:
         "x.csv",
     ]
     assert main(argv) == 2
-    assert "--record needs the simulated servo arm" in capsys.readouterr().err
+    assert "--record needs a simulated servo arm" in capsys.readouterr().err

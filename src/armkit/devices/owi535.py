@@ -12,7 +12,7 @@ import sys
 import threading
 from typing import Any
 
-from .._errors import DeviceError
+from .._errors import DeviceError, InputError
 
 VENDOR_ID = 0x1267
 PRODUCT_IDS = (0x0000, 0x0001)
@@ -40,7 +40,7 @@ class OwiDevice:
             DeviceError: the transfer failed (unplugged, batteries, permissions).
         """
         if len(data) != 3:
-            raise ValueError(f"an OWI-535 command has 3 bytes, got {len(data)}")
+            raise InputError(f"an OWI-535 command has 3 bytes, got {len(data)}")
         with self._lock:
             if self._closed:
                 raise DeviceError("the OWI-535 device is closed; open the driver again")

@@ -9,7 +9,7 @@ from __future__ import annotations
 import importlib
 from typing import Protocol
 
-from .._errors import DeviceError
+from .._errors import DeviceError, InputError
 from ..model import ArmModel
 from ._driver import Driver
 
@@ -53,7 +53,7 @@ def open_driver(model: ArmModel, name: str, port: str | None = None) -> Driver:
         DeviceError: the driver exists but is not available or the device is not there.
     """
     if name not in DRIVERS:
-        raise ValueError(f"unknown driver {name!r}; drivers are {', '.join(DRIVERS)}")
+        raise InputError(f"unknown driver {name!r}; drivers are {', '.join(DRIVERS)}")
     module_name, func_name, _ = DRIVERS[name]
     try:
         module = importlib.import_module(module_name)

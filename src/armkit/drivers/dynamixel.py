@@ -28,10 +28,10 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import DeviceError, JointLimitError
+from .._errors import DeviceError, InputError, JointLimitError
 from ..devices import _xm430 as xm
 from ..devices.dynamixel import DynamixelBus
-from ..model import ArmModel
+from ..model import ArmModel, dynamixel_section
 
 _MAX_PROFILE_MS = 32737  # time-based Profile Velocity limit
 _POLL_S = 0.01
@@ -42,21 +42,20 @@ def open_driver(model: ArmModel, port: str | None) -> DynamixelDriver:
     """Open the arm's servos on ``port`` (a device path, or ``"emu"`` for an emulator).
 
     Raises:
-        DeviceError: no port, no ``[drivers.dynamixel]`` table, or the servos do not answer.
+        ModelError: no or a wrong ``[drivers.dynamixel]`` table.
+        DeviceError: no port, or the servos do not answer.
     """
-    cfg = model.drivers.get("dynamixel")
-    if cfg is None:
-        raise DeviceError(f"{model.name} has no [drivers.dynamixel] table; not a Dynamixel arm")
+    cfg = dynamixel_section(model)
     if not port:
         raise DeviceError("the dynamixel driver needs a port: /dev/ttyUSB0 (say) or 'emu'")
     emulator = None
     if port == "emu":
         from ..sim.dynamixel_emulator import DynamixelEmulator
 
-        emulator = DynamixelEmulator([*cfg["ids"], cfg["gripper_id"]])
+        emulator = DynamixelEmulator([*cfg.ids, cfg.gripper_id])
         port = emulator.port
     try:
-        bus = DynamixelBus(port, int(cfg.get("baudrate", 1_000_000)))
+        bus = DynamixelBus(port, cfg.baudrate)
     except DeviceError:
         if emulator is not None:
             emulator.close()
@@ -88,26 +87,25 @@ def ramp_for(total: float, distance: NDArray[np.float64], a_max: NDArray[np.floa
 def check_timing(duration: float | None, speed: float | None) -> None:
     """ValueError unless ``duration`` is 0..32.7 s and ``speed`` in (0, 1] (or None)."""
     if speed is not None and not 0.0 < speed <= 1.0:
-        raise ValueError(f"speed must be in (0, 1] (a fraction of max speed), got {speed}")
+        raise InputError(f"speed must be in (0, 1] (a fraction of max speed), got {speed}")
     if duration is not None and not 0.0 <= duration <= _MAX_PROFILE_MS / 1000:
-        raise ValueError(f"duration must be 0..{_MAX_PROFILE_MS / 1000} s, got {duration}")
+        raise InputError(f"duration must be 0..{_MAX_PROFILE_MS / 1000} s, got {duration}")
 
 
 class DynamixelDriver:
     """Driver (see ``drivers._driver``) for a Dynamixel arm described by ``model``."""
 
     def __init__(self, model: ArmModel, bus: DynamixelBus, *, emulator: Any = None) -> None:
-        cfg = model.drivers["dynamixel"]
+        cfg = dynamixel_section(model)
         self.model, self.bus, self._emulator = model, bus, emulator
-        self.ids = [int(i) for i in cfg["ids"]]
-        self.gripper_id = int(cfg["gripper_id"])
-        self._ticks_per_rad = float(cfg.get("ticks_per_turn", 4096)) / (2.0 * math.pi)
-        self._center = float(cfg.get("center_tick", 2048))
-        closed, opened = cfg.get("gripper_ticks", (1500, 2600))
-        self._grip_ticks = (int(closed), int(opened))
-        self._tolerance = int(cfg.get("position_tolerance_ticks", 30))
+        self.ids = list(cfg.ids)
+        self.gripper_id = cfg.gripper_id
+        self._ticks_per_rad = cfg.ticks_per_turn / (2.0 * math.pi)
+        self._center = cfg.center_tick
+        self._grip_ticks = cfg.gripper_ticks
+        self._tolerance = cfg.position_tolerance_ticks
         try:
-            self._setup(int(cfg.get("gripper_current", 300)))
+            self._setup(cfg.gripper_current)
         except DeviceError:
             self.close()
             raise
@@ -139,7 +137,7 @@ class DynamixelDriver:
         """``q`` [rad] as a (dof,) array; JointLimitError names the first joint outside."""
         q = np.asarray(q, dtype=np.float64)
         if q.shape != (self.model.dof,):
-            raise ValueError(f"expected {self.model.dof} joint angles, got shape {q.shape}")
+            raise InputError(f"expected {self.model.dof} joint angles, got shape {q.shape}")
         for joint, value in zip(self.model.joints, q, strict=True):
             if not joint.lower - 1e-9 <= value <= joint.upper + 1e-9:
                 raise JointLimitError(
@@ -163,7 +161,7 @@ class DynamixelDriver:
         fastest, _ = profile_times(goal - start, v_max, a_max)
         total_ms = max(1, math.ceil(1000.0 * max(fastest, duration or 0.0)))
         if total_ms > _MAX_PROFILE_MS:
-            raise ValueError(
+            raise InputError(
                 f"this move would take {total_ms / 1000:.1f} s at speed {speed}; a servo profile"
                 f" lasts at most {_MAX_PROFILE_MS / 1000} s: raise the speed or split the move"
             )
@@ -238,7 +236,7 @@ class DynamixelDriver:
         """Gripper goal tick for an opening ``width`` [m] (ValueError outside the model's range)."""
         g = self.model.gripper
         if not g.width_min - 1e-12 <= width <= g.width_max + 1e-12:
-            raise ValueError(
+            raise InputError(
                 f"grip width {width * 1000:.1f} mm is outside {self.model.name}'s range"
                 f" {g.width_min * 1000:.1f}..{g.width_max * 1000:.1f} mm"
             )

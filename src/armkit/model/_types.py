@@ -10,6 +10,8 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import NDArray
 
+from .._errors import InputError
+
 Convention = Literal["standard", "modified"]
 
 
@@ -153,7 +155,7 @@ class ArmModel:
         """Index of the joint called ``name``; ValueError lists the valid names."""
         names = self.joint_names
         if name not in names:
-            raise ValueError(
+            raise InputError(
                 f"unknown joint {name!r} for {self.name}; joints are {', '.join(names)}"
             )
         return names.index(name)
@@ -176,7 +178,7 @@ class ArmModel:
         (002's grip-length polynomial); unchanged for grippers of fixed length."""
         g = self.gripper
         if not g.width_min - 1e-12 <= width <= g.width_max + 1e-12:
-            raise ValueError(
+            raise InputError(
                 f"grip width {width * 1000:.1f} mm is outside {self.name}'s range "
                 f"{g.width_min * 1000:.1f}..{g.width_max * 1000:.1f} mm"
             )

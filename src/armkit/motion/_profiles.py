@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .._errors import InputError
 from ..model import ArmModel
 
 F64 = NDArray[np.float64]
@@ -133,7 +134,7 @@ def _limits(
 ) -> tuple[F64, F64, F64, F64]:
     """Validated start, end [rad] and the velocity and acceleration limits, shape (dof,) each."""
     if not 0.0 < speed <= 1.0:
-        raise ValueError(f"speed must be a fraction of the maximum in (0, 1], got {speed}")
+        raise InputError(f"speed must be a fraction of the maximum in (0, 1], got {speed}")
     start = np.asarray(q0, dtype=np.float64).reshape(model.dof)
     end = np.asarray(q1, dtype=np.float64).reshape(model.dof)
     vmax = speed * np.array([j.max_velocity for j in model.joints])
@@ -145,9 +146,9 @@ def _checked_duration(fastest: float, duration: float | None) -> float:
     if duration is None:
         return fastest
     if not np.isfinite(duration) or duration < 0:
-        raise ValueError(f"duration must be a time >= 0 s, got {duration}")
+        raise InputError(f"duration must be a time >= 0 s, got {duration}")
     if duration < fastest - 1e-9:
-        raise ValueError(
+        raise InputError(
             f"duration {duration:.3f} s is too short: the joint limits need {fastest:.3f} s or more"
         )
     return duration

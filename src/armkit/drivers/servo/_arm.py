@@ -15,7 +15,7 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import NDArray
 
-from ..._errors import DeviceError
+from ..._errors import DeviceError, InputError
 from ...model import ArmModel
 from ._bus import ServoBus
 from ._table import PULSE_MAX_US, PULSE_MIN_US, ServoCalibration
@@ -92,7 +92,7 @@ class ServoArmDriver:
     def _check_q(self, q: NDArray[np.float64]) -> NDArray[np.float64]:
         q = np.asarray(q, dtype=np.float64)
         if q.shape != (self.model.dof,):
-            raise ValueError(
+            raise InputError(
                 f"{self.model.name} needs {self.model.dof} joint angles "
                 f"({', '.join(self.joint_names)}), got shape {q.shape}"
             )
@@ -102,7 +102,7 @@ class ServoArmDriver:
         """Group time [ms]: the slowest servo's time at ``speed`` x its maximum, at least
         ``duration``; rounded up, so no servo exceeds its limit."""
         if duration is not None and not (math.isfinite(duration) and duration >= 0):
-            raise ValueError(f"duration {duration!r} s must be a number >= 0")
+            raise InputError(f"duration must be a number of seconds >= 0, got {duration}")
         starts, pad = self._starts()
         needed = [duration or 0.0]
         for table, joint in zip(self.joints, self.model.joints, strict=True):
@@ -113,7 +113,7 @@ class ServoArmDriver:
                 needed.append(travel * rate / (joint.max_velocity * speed))
         time_ms = math.ceil(max(needed) * 1000.0 - 1e-9)
         if time_ms > self.bus.max_time_ms:
-            raise ValueError(
+            raise InputError(
                 f"this move would take {time_ms / 1000:.1f} s; the {self.bus.name} allows at most "
                 f"{self.bus.max_time_ms / 1000:.1f} s per move; move in smaller steps or faster"
             )
@@ -141,7 +141,7 @@ class ServoArmDriver:
         (calibration; the gripper moves at once). Other servos hold."""
         table = self._table(name)
         if not PULSE_MIN_US <= pulse_us <= PULSE_MAX_US:
-            raise ValueError(f"pulse {pulse_us} µs for {name} is outside 500..2500 µs")
+            raise InputError(f"pulse {pulse_us} µs for {name} is outside 500..2500 µs")
         pulses = {table.channel: float(pulse_us)}
         time_ms = 0 if table is self.grip_table else self._move_time_ms(pulses, None, speed)
         self._send(pulses, time_ms, wait)
@@ -150,7 +150,7 @@ class ServoArmDriver:
         for table in self.tables:
             if table.name == name:
                 return table
-        raise ValueError(f"no servo {name!r}; servos are {', '.join(t.name for t in self.tables)}")
+        raise InputError(f"no servo {name!r}; servos are {', '.join(t.name for t in self.tables)}")
 
     def read(self) -> NDArray[np.float64]:
         """Joint angles [rad], shape (dof,), from the pulses the controller reports.
@@ -196,5 +196,5 @@ def _check_speed(speed: float | None) -> float:
     if speed is None:
         return 1.0
     if not (math.isfinite(speed) and 0.0 < speed <= 1.0):
-        raise ValueError(f"speed {speed!r} must be a fraction of the maximum in (0, 1]")
+        raise InputError(f"speed must be a fraction of the maximum in (0, 1], got {speed}")
     return float(speed)

@@ -1,0 +1,157 @@
+"""Every console command and Python snippet in README.md runs as written.
+
+Console blocks run in order in a scratch directory that holds the repository's
+files (``src``, ``benchmarks``, ``examples``, the Makefile, the virtual
+environment) through symlinks, with a fresh ``ARMKIT_CONFIG_DIR``. ``armkit``
+lines run in-process through ``armkit.cli.main``; a ``$`` line's output shown
+below it must be what the command prints (stdout and stderr). Other lines run
+in a shell. ``make`` targets are checked with ``make --dry-run`` (running them
+would rebuild this environment), and what they run is run directly.
+
+Nothing is skipped silently: the commands that are not run are listed in
+NOT_RUN with the reason, and each must still be in the README.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import math
+import os
+import re
+import shlex
+import subprocess
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pytest
+
+from armkit.cli import main
+
+ROOT = Path(__file__).resolve().parents[1]
+README = ROOT / "README.md"
+LINKED = ("src", "benchmarks", "examples", "Makefile", "pyproject.toml", ".venv")
+
+NOT_RUN = {  # command (as in the README) -> why this test does not run it
+    "make test": "it is this test suite: `make --dry-run test` is checked instead",
+    "make demo": "it installs into .venv: `make --dry-run demo` is checked and `armkit demo` run",
+    "armkit --arm openmanipulator_x compare-ik --n 1000 --seed 0 --repeats 3":
+        "a timing run of about a minute; compare-ik itself is run with --n 20 below",
+    ".venv/bin/python benchmarks/kinematics.py": "a benchmark (make bench)",
+    ".venv/bin/python benchmarks/ik_peers.py --n 1000 --seed 0 --repeats 3":
+        "a benchmark that installs its peers from the package index (network)",
+    ".venv/bin/python benchmarks/paths.py": "a benchmark (make bench)",
+    ".venv/bin/python benchmarks/bus.py": "a benchmark (make bench)",
+    ".venv/bin/python benchmarks/owi_drift.py": "a benchmark (make bench)",
+}  # fmt: skip
+INSTEAD = {
+    "make test": ["make --dry-run test"],
+    "make demo": ["make --dry-run demo", "armkit demo"],
+    "armkit --arm openmanipulator_x compare-ik --n 1000 --seed 0 --repeats 3": [
+        "armkit --arm openmanipulator_x compare-ik --n 20 --seed 0"
+    ],
+}
+
+
+@dataclass
+class Command:
+    line: str
+    expected: list[str] | None = None  # the output shown under a '$' line
+
+
+@dataclass
+class Block:
+    kind: str
+    start: int
+    commands: list[Command] = field(default_factory=list)
+    code: str = ""
+
+
+def blocks() -> list[Block]:
+    """The README's console and python blocks, in order."""
+    found, current, lines = [], None, README.read_text().splitlines()
+    for n, text in enumerate(lines, 1):
+        fence = re.match(r"^```(\w*)\s*$", text)
+        if fence and current is None:
+            current = Block(fence.group(1), n)
+        elif fence and current is not None:
+            if current.kind in ("console", "python"):
+                found.append(current)
+            current = None
+        elif current is not None and current.kind == "python":
+            current.code += text + "\n"
+        elif current is not None and current.kind == "console":
+            _add_console_line(current, text)
+    return found
+
+
+def _add_console_line(block: Block, text: str) -> None:
+    prompt = any(c.expected is not None for c in block.commands) or text.startswith("$ ")
+    if text.startswith("$ "):
+        block.commands.append(Command(text[2:].strip(), []))
+    elif prompt and block.commands:
+        expected = block.commands[-1].expected
+        assert expected is not None
+        expected.append(text)
+    elif text.strip():
+        block.commands.append(Command(" ".join(shlex.split(text, comments=True))))
+
+
+@pytest.fixture
+def scratch(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    for name in LINKED:
+        (tmp_path / name).symlink_to(ROOT / name)
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path / "config"))
+    return tmp_path
+
+
+def run(line: str, scratch: Path) -> tuple[int, str]:
+    """Run one README line; (exit status, what it printed)."""
+    words = shlex.split(line)
+    if words[0] == "armkit":
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+            code = main(words[1:])
+        return code, out.getvalue()
+    env = dict(os.environ, PATH=f"{ROOT / '.venv' / 'bin'}{os.pathsep}{os.environ['PATH']}")
+    done = subprocess.run(
+        line, shell=True, cwd=scratch, env=env, capture_output=True, text=True, timeout=600
+    )
+    return done.returncode, done.stdout + done.stderr
+
+
+def test_every_console_command_runs_as_written(scratch: Path) -> None:
+    ran, skipped = 0, set()
+    for block in [b for b in blocks() if b.kind == "console"]:
+        for command in block.commands:
+            if command.line in NOT_RUN:
+                skipped.add(command.line)
+                lines = INSTEAD.get(command.line, [])
+            else:
+                lines = [command.line]
+            for line in lines:
+                code, printed = run(line, scratch)
+                where = f"README.md line {block.start}: {line}\n{printed}"
+                expected = command.expected if line == command.line else None
+                if expected and expected[0].startswith("armkit: error:"):
+                    assert code == 2, where
+                else:
+                    assert code == 0, where
+                if expected:
+                    assert printed.rstrip("\n").splitlines() == expected, where
+                ran += 1
+    assert skipped == set(NOT_RUN), f"NOT_RUN lists commands the README no longer has: {set(NOT_RUN) - skipped}"  # fmt: skip
+    assert ran >= 30
+
+
+def test_every_python_snippet_runs_as_written(scratch: Path) -> None:
+    snippets = [b for b in blocks() if b.kind == "python"]
+    assert len(snippets) >= 2
+    for block in snippets:
+        namespace: dict[str, object] = {"__name__": "__readme__"}
+        try:
+            exec(compile(block.code, f"README.md:{block.start}", "exec"), namespace)
+        except Exception as exc:
+            pytest.fail(f"README.md line {block.start}: {type(exc).__name__}: {exc}")
+    assert math.pi  # (math is what the first snippet imports; keep the import honest)
