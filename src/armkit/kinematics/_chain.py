@@ -19,6 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..model import ArmModel
+from ._closed_fast import FixedSolver, fixed_solver
 from ._family import PlanarFamily, detect
 from ._planar import wrist_range
 from ._pose import pitch_scalar
@@ -46,6 +47,8 @@ class Chain:
         home_pitch: the tool's pitch at home [rad].
         wrist_reach: (min, max) distance [m] from the first planar joint to the end of
             link 2 that the elbow's limits allow (family arms; else (0, 0)).
+        fixed: the closed form at one pitch with this chain's constants bound
+            (``_closed_fast``), or None.
     """
 
     name: str
@@ -67,6 +70,7 @@ class Chain:
     why_not: str
     home_pitch: float
     wrist_reach: tuple[float, float]
+    fixed: FixedSolver | None
 
 
 _CHAINS: dict[int, Chain] = {}
@@ -118,4 +122,5 @@ def compile_chain(model: ArmModel) -> Chain:
         why_not="" if isinstance(family, PlanarFamily) else f"{model.name} {family}",
         home_pitch=pitch_scalar(at_home.R[0], at_home.p),
         wrist_reach=wrist_range(fam, lower[j2], upper[j2]) if fam is not None else (0.0, 0.0),
+        fixed=fixed_solver(fam, lower, upper) if fam is not None else None,
     )

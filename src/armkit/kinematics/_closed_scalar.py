@@ -13,28 +13,17 @@ Tests pin this path to the vectorised solver, which is the reference.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
 import numpy as np
 
 from .._errors import Reason, UnreachableError
 from ._chain import Chain
+from ._closed_fast import Found, Misses, Q, wrap_into
 from ._family import PlanarFamily
 from ._pitch_range import candidates
-from ._planar import annulus_arcs, phi_for_pitch, pitch_for_phi, planes
+from ._planar import annulus_arcs, pitch_for_phi, planes
 
-Q = tuple[float, ...]
-Found = list[tuple[float, Q]]  # (squared joint distance to the seed, solution)
 _TWO_PI = 2.0 * math.pi
-_SLACK = 1e-9
-
-
-@dataclass
-class Misses:
-    """Why candidates failed: reasons, and (excess [rad], joint, value [rad]) per limit miss."""
-
-    reasons: list[Reason] = field(default_factory=list)
-    violations: list[tuple[float, int, float]] = field(default_factory=list)
 
 
 def solve(chain: Chain, fam: PlanarFamily, p: Q, pitch: float | None, seed: Q) -> Found:
@@ -46,6 +35,8 @@ def solve(chain: Chain, fam: PlanarFamily, p: Q, pitch: float | None, seed: Q) -
             limit when only the limits are in the way.
     """
     x, y, z = p
+    fixed = chain.fixed
+    assert fixed is not None
     if abs(x) > 1e6 or abs(y) > 1e6 or abs(z) > 1e6:
         raise UnreachableError(
             f"{chain.name} cannot reach {where(p, pitch)}: " + EXPLAIN["too_far"], reason="too_far"
@@ -53,12 +44,12 @@ def solve(chain: Chain, fam: PlanarFamily, p: Q, pitch: float | None, seed: Q) -
     if pitch is None and len(fam.planar) == 3:
         found = _free(chain, fam, x, y, z, seed)
     else:
-        found = fixed(chain, fam, x, y, z, pitch, seed, None)
+        found = fixed(x, y, z, pitch, seed, None)
     if not found:
         if pitch is None and len(fam.planar) == 3:
             pitch = preferred(chain, seed)
         misses = Misses()
-        fixed(chain, fam, x, y, z, pitch, seed, misses)
+        fixed(x, y, z, pitch, seed, misses)
         raise unreachable(chain, p, pitch, misses)
     return found
 
@@ -70,85 +61,6 @@ def preferred(chain: Chain, seed: Q) -> float:
     rho = math.hypot(px, py)
     h = (ax * px + ay * py) / rho if rho >= 1e-9 else math.hypot(ax, ay)
     return math.atan2(az, h)
-
-
-def fixed(
-    chain: Chain, fam: PlanarFamily, x: float, y: float, z: float, pitch: float | None,
-    seed: Q, misses: Misses | None,
-) -> Found:  # fmt: skip
-    """Every solution at ``pitch`` (None: 2 planar joints, the pitch follows)."""
-    found: Found = []
-    branches = planes(fam, x, y, z, seed[fam.base] if fam.base is not None else 0.0)
-    if isinstance(branches, str):
-        if misses is not None:
-            misses.reasons.append("off_plane" if branches == "off_plane" else "too_close")
-        return found
-    three, (c1x, c1z), l1, l2 = len(fam.planar) == 3, fam.c1, fam.l1, fam.l2
-    for r, rho, q0 in branches:
-        turn = 0.0
-        wx, wz = r - c1x, z - c1z
-        if three:
-            if rho < 1e-12 and abs(pitch or 0.0) > math.pi / 2 + 1e-12:
-                if misses is not None:
-                    misses.reasons.append("pitch")  # on the base axis pitch is within +-90 deg
-                continue
-            turn = phi_for_pitch(pitch or 0.0, r, rho) - fam.phi0
-            (v3x, v3z), c, s = fam.links[2], math.cos(turn), math.sin(turn)
-            wx, wz = wx - (c * v3x - s * v3z), wz - (s * v3x + c * v3z)
-        cg = (wx * wx + wz * wz - l1 * l1 - l2 * l2) / (2.0 * l1 * l2)
-        if not -1.0 - 1e-12 <= cg <= 1.0 + 1e-12:
-            if misses is not None:
-                misses.reasons.append("too_far" if cg > 0 else "too_close")
-            continue
-        g = math.acos(min(1.0, max(-1.0, cg)))
-        t = math.atan2(l2 * math.sin(g), l1 + l2 * math.cos(g))
-        aim = math.atan2(wz, wx) - fam.ang1
-        for e in (1.0, -1.0) if g > 1e-12 else (1.0,):
-            a1, a2 = aim - e * t, e * g - fam.bend
-            if not three and pitch is not None:
-                got = pitch_for_phi(fam.phi0 + a1 + a2, r, rho)
-                if abs(math.remainder(got - pitch, _TWO_PI)) > 1e-7:
-                    if misses is not None:
-                        misses.reasons.append("pitch")
-                    continue
-            alphas = (a1, a2, turn - a1 - a2) if three else (a1, a2)
-            _keep(chain, fam, q0, alphas, seed, found, misses)
-    return found
-
-
-def _keep(
-    chain: Chain, fam: PlanarFamily, q0: float, alphas: tuple[float, ...], seed: Q,
-    found: Found, misses: Misses | None,
-) -> None:  # fmt: skip
-    """Write the base and planar angles into the seed, wrapped into the limits; keep q if all fit."""
-    q = list(seed)
-    joints = [fam.base] if fam.base is not None else []
-    values = [q0] if fam.base is not None else []
-    joints += fam.planar
-    values += [s * a for s, a in zip(fam.sigma, alphas, strict=True)]
-    for i, v in zip(joints, values, strict=True):
-        lo, hi = chain.lower[i], chain.upper[i]
-        w = wrap_into(v, lo, hi)
-        if w is None:
-            if misses is not None:
-                mid = 0.5 * (lo + hi)
-                nearest = mid + math.remainder(v - mid, _TWO_PI)
-                misses.violations.append((max(lo - nearest, nearest - hi), i, nearest))
-            return
-        q[i] = w
-    found.append((sum((a - b) * (a - b) for a, b in zip(q, seed, strict=True)), tuple(q)))
-
-
-def wrap_into(angle: float, lower: float, upper: float) -> float | None:
-    """``angle`` plus a whole number of turns inside [lower, upper] [rad], or None."""
-    if lower - _SLACK <= angle <= upper + _SLACK:
-        return min(max(angle, lower), upper)
-    wrapped = lower + (angle - lower) % _TWO_PI
-    if wrapped <= upper + _SLACK:
-        return min(wrapped, upper)
-    if wrapped - _TWO_PI >= lower - _SLACK:
-        return max(wrapped - _TWO_PI, lower)
-    return None
 
 
 def _free(chain: Chain, fam: PlanarFamily, x: float, y: float, z: float, seed: Q) -> Found:
@@ -171,12 +83,13 @@ def _free(chain: Chain, fam: PlanarFamily, x: float, y: float, z: float, seed: Q
                 best, best_d = pitch, d
     if best_d == math.inf:
         return []
-    found = fixed(chain, fam, x, y, z, best, seed, None)
+    assert chain.fixed is not None
+    found = chain.fixed(x, y, z, best, seed, None)
     if found:
         return found
     pitches = candidates(chain, fam, np.array([[x, y, z]]), np.array([seed]), np.array([want]))[0]
     for pitch in pitches[np.isfinite(pitches)].tolist():
-        found = fixed(chain, fam, x, y, z, pitch, seed, None)
+        found = chain.fixed(x, y, z, pitch, seed, None)
         if found:
             return found
     return []

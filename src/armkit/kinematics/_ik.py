@@ -75,7 +75,9 @@ def ik(
         fam = chain.family
         if fam is not None and (method == "auto" or method == "analytic"):
             found = _closed_scalar.solve(chain, fam, p, pitch, seed)
-            return _closed_result(chain, found, Goal(p, pitch, None))
+            return IKResult.of(
+                tuple(found), "analytic", tuple.__new__(Goal, (p, pitch, None)), chain
+            )
     use = _numeric_method(chain, method, orientation)
     R = None if orientation is None else rotation(orientation, "orientation")
     if R is not None and pitch is not None:
@@ -107,21 +109,6 @@ def _numeric_method(
             f"method 'analytic' does not apply: {why}; use a numeric method such as 'lm'"
         )
     return "lm" if name == "auto" else name  # type: ignore[return-value]
-
-
-def _closed_result(
-    chain: Chain, found: list[tuple[float, tuple[float, ...]]], goal: Goal
-) -> IKResult:
-    if len(found) > 1:
-        found.sort(key=lambda pair: pair[0])
-        unique = [found[0][1]]
-        for _, q in found[1:]:
-            if all(max(abs(a - b) for a, b in zip(q, u, strict=True)) > 1e-9 for u in unique):
-                unique.append(q)
-        sols = np.array(unique)
-        return IKResult(sols[0], sols, "analytic", 0, 0, goal, chain)
-    one = np.array(found[0][1])
-    return IKResult(one, one[None, :], "analytic", 0, 0, goal, chain)
 
 
 def ik_batch(

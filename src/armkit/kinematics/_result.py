@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import cached_property
 from typing import Literal
 
 import numpy as np
@@ -22,43 +21,67 @@ class IKResult:
     """What an IK solver found.
 
     Attributes:
-        q: the best solution, joint angles [rad], shape (dof,).
-        solutions: every solution found, best first, shape (k, dof), k >= 1.
-            Best = nearest to the seed (or to home) in joint space.
+        ranked: every solution found as (squared joint distance to the seed [rad^2],
+            joint angles [rad]) pairs, in any order (see ``solutions``).
         method: the solver that produced it.
         iterations: solver iterations (0 for the closed form).
         restarts: restarts from new seeds (0 for the closed form).
         goal: the target as solved (position [m], pitch [rad] or None, rotation or None).
-        position_error: distance from the tool point of ``q`` to the target [m],
-            measured by forward kinematics when first read.
-        angle_error: pitch or orientation error of ``q`` [rad] (0 when none was asked for).
+        chain: the arm's compiled chain, to measure the errors.
+
+    The arrays and the errors are derived from these fields when read (``q``,
+    ``solutions``, ``position_error``, ``angle_error``), so a closed-form call
+    stays within microseconds; reading ``q`` costs about half a microsecond.
     """
 
-    q: F64
-    solutions: F64
+    ranked: tuple[tuple[float, tuple[float, ...]], ...]
     method: Method
     iterations: int
     restarts: int
     goal: Goal
     chain: Chain = field(repr=False)
 
-    @cached_property
-    def _errors(self) -> tuple[float, float]:
-        return errors(self.goal, self.chain.state(self.q.tolist()))
+    @classmethod
+    def of(
+        cls, ranked: tuple[tuple[float, tuple[float, ...]], ...], method: Method, goal: Goal,
+        chain: Chain, iterations: int = 0, restarts: int = 0,
+    ) -> IKResult:  # fmt: skip
+        """The same as the constructor, without the frozen dataclass's per-field
+        ``object.__setattr__`` (0.5 us of a 4 us closed-form call)."""
+        self = object.__new__(cls)
+        self.__dict__.update(
+            ranked=ranked, method=method, iterations=iterations, restarts=restarts,
+            goal=goal, chain=chain,
+        )  # fmt: skip
+        return self
+
+    @property
+    def q(self) -> F64:
+        """The best solution (nearest the seed), joint angles [rad], shape (dof,)."""
+        return np.array(min(self.ranked)[1])
+
+    @property
+    def solutions(self) -> F64:
+        """Every solution [rad], nearest the seed first, repeats dropped, shape (k, dof)."""
+        unique: list[tuple[float, ...]] = []
+        for _, q in sorted(self.ranked):
+            if all(max(abs(a - b) for a, b in zip(q, u, strict=True)) > 1e-9 for u in unique):
+                unique.append(q)
+        return np.array(unique)
 
     @property
     def position_error(self) -> float:
-        """Distance from the tool point of ``q`` to the target [m]."""
-        return self._errors[0]
+        """Distance from the tool point of ``q`` to the target [m], by forward kinematics."""
+        return errors(self.goal, self.chain.state(list(min(self.ranked)[1])))[0]
 
     @property
     def angle_error(self) -> float:
-        """Pitch or orientation error of ``q`` [rad]."""
-        return self._errors[1]
+        """Pitch or orientation error of ``q`` [rad] (0 when none was asked for)."""
+        return errors(self.goal, self.chain.state(list(min(self.ranked)[1])))[1]
 
     def __repr__(self) -> str:
         q = np.round(np.degrees(self.q), 3).tolist()
-        return f"IKResult(q_deg={q}, solutions={len(self.solutions)}, method={self.method!r})"
+        return f"IKResult(q_deg={q}, solutions={len(self.ranked)}, method={self.method!r})"
 
 
 @dataclass(frozen=True, slots=True)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 from numpy.typing import ArrayLike
 
@@ -38,8 +38,7 @@ class Target:
         return "position" if self.pitch is None else "position+pitch"
 
 
-@dataclass(frozen=True, slots=True)
-class Goal:
+class Goal(NamedTuple):
     """A checked single target in plain floats: p [m], pitch [rad] or None, R row-major or None."""
 
     p: tuple[float, float, float]

@@ -51,9 +51,9 @@ def finish(chain: Chain, method: Method, task: Task, attempt: Attempt) -> IKResu
     """
     res = attempt.residual
     if attempt.converged:  # q's arrays are built when read (see IKResult)
-        q = np.array(attempt.q)
         goal = Goal(task.p, task.pitch, task.R)
-        return IKResult(q, q[None, :], method, attempt.iterations, attempt.restarts, goal, chain)
+        ranked = ((0.0, tuple(attempt.q)),)
+        return IKResult(ranked, method, attempt.iterations, attempt.restarts, goal, chain)
     q = np.array(attempt.q)
     miss = f"{res.position_error * 1000:.3f} mm, {math.degrees(res.angle_error):.3f} deg"
     if beyond_reach(chain, task):
