@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..model import ArmModel
-from ._closed_fast import FixedSolver, fixed_solver
+from ._closed_fast import FixedSolver, NearestPitch, fixed_solver, nearest_pitch_solver
 from ._family import PlanarFamily, detect
 from ._planar import wrist_range
 from ._pose import pitch_scalar
@@ -49,6 +49,8 @@ class Chain:
             link 2 that the elbow's limits allow (family arms; else (0, 0)).
         fixed: the closed form at one pitch with this chain's constants bound
             (``_closed_fast``), or None.
+        nearest: the pitch nearest a wanted one at which the wrist is within reach
+            (``_closed_fast``), or None where the general path is used.
     """
 
     name: str
@@ -71,6 +73,7 @@ class Chain:
     home_pitch: float
     wrist_reach: tuple[float, float]
     fixed: FixedSolver | None
+    nearest: NearestPitch | None
 
 
 _CHAINS: dict[int, Chain] = {}
@@ -123,4 +126,9 @@ def compile_chain(model: ArmModel) -> Chain:
         home_pitch=pitch_scalar(at_home.R[0], at_home.p),
         wrist_reach=wrist_range(fam, lower[j2], upper[j2]) if fam is not None else (0.0, 0.0),
         fixed=fixed_solver(fam, lower, upper) if fam is not None else None,
+        nearest=None
+        if fam is None or fam.base is None
+        else nearest_pitch_solver(
+            fam, wrist_range(fam, lower[j2], upper[j2]), (lower[fam.base], upper[fam.base])
+        ),
     )

@@ -159,12 +159,13 @@ def _fill(chain: Chain, fam: PlanarFamily, q0: F64, alphas: list[F64], out: F64)
     ]
     ok = np.ones(len(q0), dtype=bool)
     for j, v in zip(cols, values, strict=True):
-        lo, hi = chain.lower[j], chain.upper[j]
-        inside = (v >= lo - _SLACK) & (v <= hi + _SLACK)
-        w = lo + np.remainder(v - lo, _TWO_PI)
-        w = np.where(inside, v, np.where(w <= hi + _SLACK, w, w - _TWO_PI))
-        inside = (w >= lo - _SLACK) & (w <= hi + _SLACK)
-        out[:, j] = np.clip(w, lo, hi)
+        lo, hi = chain.lower[j] - _SLACK, chain.upper[j] + _SLACK
+        w = v - _TWO_PI * np.round(v / _TWO_PI)  # the turn in [-pi, pi], then one more if needed
+        w += np.where(w < lo, _TWO_PI, np.where(w > hi, -_TWO_PI, 0.0))
+        if lo < -np.pi or hi > np.pi:  # a range wider than that: keep an angle already inside
+            w = np.where((v >= lo) & (v <= hi), v, w)
+        inside = (w >= lo) & (w <= hi)
+        out[:, j] = np.clip(w, chain.lower[j], chain.upper[j])
         ok &= inside
     return ok
 

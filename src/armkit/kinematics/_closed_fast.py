@@ -195,3 +195,77 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
         return found
 
     return solve
+
+
+NearestPitch = Callable[[float, float, float, float, float], "float | None"]
+
+
+def nearest_pitch_solver(
+    fam: PlanarFamily, reach: tuple[float, float], base_range: tuple[float, float]
+) -> NearestPitch | None:
+    """nearest(x, y, z, want, seed0): the pitch [rad] nearest ``want`` at which the wrist point
+    is within ``reach`` = (d_min, d_max) [m] of the first planar joint (None: nowhere), for a
+    base yaw + 3 planar joints with no lateral offset (else None: use the general path).
+
+    There the pitch is the plane turn plus a constant (minus it, reaching back), and the wrist
+    point's distance d from the shoulder follows d^2 = D^2 + L3^2 - 2 D L3 cos(turn - shift):
+    the turns within reach are |turn - shift| in [u_in, u_out], so the nearest is a clamp.
+    """
+    if fam.base is None or len(fam.planar) != 3 or fam.lateral != 0.0:
+        return None
+    (c1x, c1z), (v3x, v3z) = fam.c1, fam.links[2]
+    l3, ang3, phi0, az, bs = (
+        math.hypot(v3x, v3z),
+        math.atan2(v3z, v3x),
+        fam.phi0,
+        fam.azimuth_r,
+        fam.base_sign,
+    )
+    lo2, hi2 = reach[0] ** 2, reach[1] ** 2
+    lo0, hi0 = base_range
+    pi, tp, cos, acos, atan2, rem = (
+        math.pi,
+        _TWO_PI,
+        math.cos,
+        math.acos,
+        math.atan2,
+        math.remainder,
+    )
+
+    def nearest(x: float, y: float, z: float, want: float, seed0: float) -> float | None:
+        r = math.hypot(x, y)
+        if r < 1e-9:
+            return want  # on the base axis: the solvers decide
+        heading = atan2(y, x) - az
+        best, gap = None, math.inf
+        for rr, sign, q0 in ((r, 1.0, bs * heading), (-r, -1.0, bs * (heading + pi))):
+            if not (
+                lo0 - 1e-9 <= rem(q0 - 0.5 * (lo0 + hi0), tp) + 0.5 * (lo0 + hi0) <= hi0 + 1e-9
+            ):
+                continue  # the base cannot face this way
+            tx, tz = rr - c1x, z - c1z
+            big2 = tx * tx + tz * tz
+            k = 2.0 * math.sqrt(big2) * l3
+            shift = atan2(tz, tx) - ang3
+            u0 = rem(
+                (want if sign > 0 else pi - want) - phi0 - shift, tp
+            )  # turn of want, less shift
+            if k < 1e-15:
+                if lo2 - 1e-12 <= big2 + l3 * l3 <= hi2 + 1e-12:
+                    return want
+                continue
+            c_lo, c_hi = (big2 + l3 * l3 - hi2) / k, (big2 + l3 * l3 - lo2) / k
+            if c_lo > 1.0 + 1e-12 or c_hi < -1.0 - 1e-12:
+                continue
+            c0 = cos(u0)
+            if c_lo <= c0 <= c_hi:
+                return want
+            u_in, u_out = acos(min(1.0, c_hi)), acos(max(-1.0, c_lo))
+            u = min(max(abs(u0), u_in), u_out)
+            u = u if u0 >= 0.0 else -u
+            if abs(u - u0) < gap:
+                turn = u + shift + phi0
+                best, gap = rem(turn if sign > 0 else pi - turn, tp), abs(u - u0)
+        return best
+
+    return nearest

@@ -66,6 +66,12 @@ def preferred(chain: Chain, seed: Q) -> float:
 def _free(chain: Chain, fam: PlanarFamily, x: float, y: float, z: float, seed: Q) -> Found:
     """Position only: the solutions at the pitch nearest the seed's at which the arm fits."""
     want = chain.home_pitch if seed is chain.home else preferred(chain, seed)
+    assert chain.fixed is not None
+    if chain.nearest is not None and len(seed) > 0:
+        at = chain.nearest(x, y, z, want, seed[0])
+        if at is None:  # the wrist point is out of reach at every pitch
+            return []
+        return chain.fixed(x, y, z, at, seed, None) or _exact(chain, fam, x, y, z, seed, want)
     branches = planes(fam, x, y, z, seed[fam.base] if fam.base is not None else 0.0)
     if isinstance(branches, str):
         return []
@@ -83,10 +89,15 @@ def _free(chain: Chain, fam: PlanarFamily, x: float, y: float, z: float, seed: Q
                 best, best_d = pitch, d
     if best_d == math.inf:
         return []
-    assert chain.fixed is not None
     found = chain.fixed(x, y, z, best, seed, None)
-    if found:
-        return found
+    return found or _exact(chain, fam, x, y, z, seed, want)
+
+
+def _exact(
+    chain: Chain, fam: PlanarFamily, x: float, y: float, z: float, seed: Q, want: float
+) -> Found:
+    """The nearest fitting pitch among those where the fit can change (see ``_pitch_range``)."""
+    assert chain.fixed is not None
     pitches = candidates(chain, fam, np.array([[x, y, z]]), np.array([seed]), np.array([want]))[0]
     for pitch in pitches[np.isfinite(pitches)].tolist():
         found = chain.fixed(x, y, z, pitch, seed, None)

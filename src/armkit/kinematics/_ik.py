@@ -164,16 +164,17 @@ def _closed_batch(chain: Chain, fam: Any, P: F64, pitch: F64 | None, seed: F64) 
     """The vectorised closed form over cache-sized chunks of targets, with reasons."""
     q, ok = np.full((len(P), chain.dof), np.nan), np.zeros(len(P), dtype=bool)
     reason = np.full(len(P), "", dtype="<U11")
+    free = pitch is None and len(fam.planar) == 3
+    if free:  # whole batch at once: its rounds over the few hard targets cost per round
+        q, ok = free_batch(chain, fam, P, seed)
     for s in range(0, len(P), CHUNK):
         part, sd = P[s : s + CHUNK], seed[s : s + CHUNK]
         at = None if pitch is None else pitch[s : s + CHUNK]
-        free = at is None and len(fam.planar) == 3
-        if free:
-            qq, good = free_batch(chain, fam, part, sd)
-        else:
-            qq, good = _closed.best(_closed.solve(chain, fam, part, at, sd), sd)
-        q[s : s + CHUNK], ok[s : s + CHUNK] = qq, good
-        bad = np.flatnonzero(~good)
+        if not free:
+            q[s : s + CHUNK], ok[s : s + CHUNK] = _closed.best(
+                _closed.solve(chain, fam, part, at, sd), sd
+            )
+        bad = np.flatnonzero(~ok[s : s + CHUNK])
         if bad.size:  # why not: the candidates at the asked (or the seed's) pitch
             at = preferred(chain, sd[bad]) if free else (None if at is None else at[bad])
             reason[s + bad] = _closed.reasons(

@@ -61,6 +61,8 @@ def preferred(chain: Chain, seed: F64) -> F64:
 def _to_pitch(fam: PlanarFamily, turn: F64, r: F64, rho: F64) -> F64:
     """Pitch [rad] of plane turns (see ``_planar.pitch_for_phi``), broadcast."""
     phi = fam.phi0 + turn
+    if fam.lateral == 0.0 and not (rho < 1e-12).any():  # pitch = phi, or pi - phi reaching back
+        return np.asarray(np.remainder(np.where(r >= 0, phi, np.pi - phi) + np.pi, _TWO_PI) - np.pi)
     c = np.cos(phi)
     axis = (np.abs(r) < 1e-12) | (rho < 1e-12)
     along = np.where(axis, np.abs(c), c * r / np.where(axis, 1.0, rho))
@@ -118,7 +120,8 @@ def candidates(chain: Chain, fam: PlanarFamily, P: F64, seed: F64, want: F64) ->
         np.hypot(l1 + l2 * np.cos(s2 * a + fam.bend), l2 * np.sin(s2 * a + fam.bend))
         for a in (chain.lower[j2], chain.upper[j2])
     ]
-    radii = [abs(l1 - l2), l1 + l2, *elbow, *chain.wrist_reach]
+    lo_d, hi_d = chain.wrist_reach  # the annulus; inside it the elbow's limits
+    radii = sorted({lo_d, hi_d, *(d for d in elbow if lo_d < d < hi_d)})
     out = []
     for r, q0 in zip(b.r, b.q0, strict=True):
         tx, tz = r - fam.c1[0], P[:, 2] - fam.c1[1]
