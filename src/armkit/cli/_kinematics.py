@@ -106,7 +106,10 @@ def run_ik(args: argparse.Namespace) -> int:
     m = load_model(args.arm)
     target = [float(args.x), float(args.y), float(args.z)]
     if not all(math.isfinite(v) for v in target):
-        raise ValueError(f"target must be finite numbers in mm, got {target}")
+        shown = ", ".join(f"{v:.6g}" for v in target)
+        raise ValueError(f"X Y Z must be finite numbers in mm, got {shown}")
+    if args.pitch is not None and not (math.isfinite(args.pitch) and abs(args.pitch) <= 180.0):
+        raise ValueError(f"--pitch must be an angle from -180 to 180 deg, got {args.pitch:.6g}")
     pitch = None if args.pitch is None else math.radians(args.pitch)
     result = ik(m, np.array(target) / 1000.0, pitch, method=args.method)
     sols = result.solutions if args.all else result.solutions[:1]

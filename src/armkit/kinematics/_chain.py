@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from .._errors import ModelError
 from ..model import ArmModel
 from ._closed_fast import FixedSolver, NearestPitch, fixed_solver, nearest_pitch_solver
 from ._family import PlanarFamily, detect
@@ -41,7 +42,8 @@ class Chain:
         lower_a, upper_a, home_a: the same as arrays, shape (dof,).
         joint_names: the joints' names.
         default_pitch: the model's pitch when none is given [rad], or None.
-        reach: upper bound on the tool point's distance from the world origin [m].
+        reach: upper bound on the tool point's distance from the world origin [m];
+            reach2: its square (plus a nanometre) [m^2].
         weight: metres per radian for the numeric solvers' angle rows [m/rad].
         family: the closed-form geometry, or None; why_not: why not ('' if it applies).
         home_pitch: the tool's pitch at home [rad].
@@ -67,6 +69,7 @@ class Chain:
     joint_names: tuple[str, ...]
     default_pitch: float | None
     reach: float
+    reach2: float
     weight: float
     family: PlanarFamily | None
     why_not: str
@@ -89,16 +92,28 @@ def chain_of(model: ArmModel) -> Chain:
     return chain
 
 
+MAX_REACH = 1e4  # [m]: beyond it float arithmetic on the chain loses its metres
+
+
 def compile_chain(model: ArmModel) -> Chain:
-    """Build the ``Chain`` of a model (use ``chain_of``, which keeps it)."""
+    """Build the ``Chain`` of a model (use ``chain_of``, which keeps it).
+
+    Raises:
+        ModelError: the chain is not finite or reaches beyond ``MAX_REACH``.
+    """
     steps, tool = steps_of(model)
+    reach = sum(math.hypot(*s.before.T[:3, 3]) for s in steps) + math.hypot(*tool.T[:3, 3])
+    if not reach <= MAX_REACH:
+        raise ModelError(
+            f"{model.name}: the links add up to {reach:.3g} m; armkit's kinematics takes arms "
+            f"up to {MAX_REACH / 1000:g} km (check the model's lengths are in mm)"
+        )
     state = compile_state(steps, tool)
     at_zero = state([0.0] * model.dof)
     T0 = np.eye(4)
     T0[:3, :3] = np.array(at_zero.R).T
     T0[:3, 3] = at_zero.p
     family = detect(at_zero.jw, at_zero.origins, T0)
-    reach = sum(math.hypot(*s.before.T[:3, 3]) for s in steps) + math.hypot(*tool.T[:3, 3])
     lower = tuple(float(j.lower) for j in model.joints)
     upper = tuple(float(j.upper) for j in model.joints)
     home = tuple(float(j.home) for j in model.joints)
@@ -120,6 +135,7 @@ def compile_chain(model: ArmModel) -> Chain:
         joint_names=model.joint_names,
         default_pitch=model.default_pitch,
         reach=reach,
+        reach2=(reach + 1e-9) * (reach + 1e-9),
         weight=0.5 * reach,
         family=fam,
         why_not="" if isinstance(family, PlanarFamily) else f"{model.name} {family}",

@@ -37,10 +37,6 @@ def solve(chain: Chain, fam: PlanarFamily, p: Q, pitch: float | None, seed: Q) -
     x, y, z = p
     fixed = chain.fixed
     assert fixed is not None
-    if abs(x) > 1e6 or abs(y) > 1e6 or abs(z) > 1e6:
-        raise UnreachableError(
-            f"{chain.name} cannot reach {where(p, pitch)}: " + EXPLAIN["too_far"], reason="too_far"
-        )
     if pitch is None and len(fam.planar) == 3:
         found = _free(chain, fam, x, y, z, seed)
     else:
@@ -122,14 +118,25 @@ def _nearest_on_arc(
     return (lo + span, to_hi) if to_hi < to_lo else (lo, to_lo)
 
 
+def _num(v: float) -> str:
+    """A number for a message: one decimal, or 3 significant digits when huge."""
+    return f"{v:.1f}" if abs(v) < 1e6 else f"{v:.3g}"
+
+
 def where(p: Q, pitch: float | None) -> str:
     """The target in the user's units, briefly: '(x, y, z) mm at pitch P deg'."""
-    text = (
-        "("
-        + ", ".join(f"{v * 1000:.1f}" if abs(v) < 1e6 else f"{v * 1000:.3g}" for v in p)
-        + ") mm"
+    if max(abs(v) for v in p) < 1e6:
+        text = "(" + ", ".join(_num(v * 1000) for v in p) + ") mm"
+    else:  # astronomically far: metres, 3 digits
+        text = "(" + ", ".join(f"{v:.3g}" for v in p) + ") m"
+    return text if pitch is None else text + f" at pitch {_num(math.degrees(pitch))} deg"
+
+
+def too_far(chain: Chain, p: Q, pitch: float | None) -> UnreachableError:
+    """The error for a target beyond every pose's reach."""
+    return UnreachableError(
+        f"{chain.name} cannot reach {where(p, pitch)}: {EXPLAIN['too_far']}", reason="too_far"
     )
-    return text if pitch is None else text + f" at pitch {math.degrees(pitch):.1f} deg"
 
 
 def unreachable(chain: Chain, p: Q, pitch: float | None, misses: Misses) -> UnreachableError:

@@ -10,8 +10,10 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError
 from ..model import ArmModel
-from . import _closed, _closed_scalar
 from ._chain import Chain, chain_of
+from ._closed import best, reasons, solve
+from ._closed_scalar import solve as solve_one_closed
+from ._closed_scalar import too_far
 from ._forward import CHUNK
 from ._numeric import solve_many, solve_one
 from ._pitch_range import free_batch, preferred
@@ -66,6 +68,8 @@ def ik(
         position, pitch, orientation = _unpack(position, pitch, orientation)
     p = point(position)
     pitch = angle(pitch, "pitch")
+    if p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > chain.reach2:
+        raise too_far(chain, p, pitch)
     seed = (
         chain.home if q_seed is None else tuple(joints(q_seed, chain.dof, "q_seed", False).tolist())
     )
@@ -74,7 +78,7 @@ def ik(
             pitch = chain.default_pitch
         fam = chain.family
         if fam is not None and (method == "auto" or method == "analytic"):
-            found = _closed_scalar.solve(chain, fam, p, pitch, seed)
+            found = solve_one_closed(chain, fam, p, pitch, seed)
             return IKResult.of(
                 tuple(found), "analytic", tuple.__new__(Goal, (p, pitch, None)), chain
             )
@@ -142,6 +146,17 @@ def ik_batch(
         positions, pitches, orientations = _unpack(positions, pitches, orientations)
     P = array(positions, "positions", ((None, 3),), "m")  # type: ignore[arg-type]
     n = len(P)
+    with np.errstate(over="ignore"):
+        far = ~(np.einsum("ni,ni->n", P, P) <= chain.reach2)  # overflow counts as far
+    if far.any():  # solve the others; the far ones are refused as such
+        out = ik_batch(
+            model, np.where(far[:, None], 0.0, P), pitches, q_seed, orientations=orientations,
+            method=method, tol_m=tol_m, tol_rad=tol_rad,
+        )  # fmt: skip
+        out.q[far], out.ok[far] = np.nan, False
+        reason = out.reason.astype("<U14")
+        reason[far] = "too_far"
+        return IKBatchResult(out.q, out.ok, reason, out.method)
     seed = _batch_seed(chain, q_seed, n)
     pitch = _batch_pitch(chain, pitches, n)
     name = choice(method, "method", METHOD_NAMES)
@@ -171,15 +186,11 @@ def _closed_batch(chain: Chain, fam: Any, P: F64, pitch: F64 | None, seed: F64) 
         part, sd = P[s : s + CHUNK], seed[s : s + CHUNK]
         at = None if pitch is None else pitch[s : s + CHUNK]
         if not free:
-            q[s : s + CHUNK], ok[s : s + CHUNK] = _closed.best(
-                _closed.solve(chain, fam, part, at, sd), sd
-            )
+            q[s : s + CHUNK], ok[s : s + CHUNK] = best(solve(chain, fam, part, at, sd), sd)
         bad = np.flatnonzero(~ok[s : s + CHUNK])
         if bad.size:  # why not: the candidates at the asked (or the seed's) pitch
             at = preferred(chain, sd[bad]) if free else (None if at is None else at[bad])
-            reason[s + bad] = _closed.reasons(
-                fam, _closed.solve(chain, fam, part[bad], at, sd[bad])
-            )
+            reason[s + bad] = reasons(fam, solve(chain, fam, part[bad], at, sd[bad]))
     return IKBatchResult(q=q, ok=ok, reason=reason, method="analytic")
 
 

@@ -73,7 +73,11 @@ def point(value: Any, name: str = "position") -> tuple[float, float, float]:
         x, y, z = value.tolist()
         if x - x == 0.0 and y - y == 0.0 and z - z == 0.0:
             return x, y, z
-    if not isinstance(value, (tuple, list, np.ndarray)) or np.shape(value) != (3,):
+    numbers = isinstance(value, np.ndarray) or (
+        isinstance(value, (tuple, list))
+        and all(isinstance(v, (int, float, np.number)) and not isinstance(v, bool) for v in value)
+    )
+    if not numbers or np.shape(value) != (3,):
         raise InputError(f"{name} must be three numbers (x, y, z) [m], got {shown(value)}")
     a = array(value, name, ((3,),), "m")
     return float(a[0]), float(a[1]), float(a[2])
