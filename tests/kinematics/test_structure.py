@@ -46,10 +46,9 @@ def _imports_of(source: str, me: str, is_package: bool) -> set[str]:
             continue
         for t in targets:
             if (
-                (t.startswith(PACKAGE)
-                and (ROOT / Path(*t.split(".")[2:])).with_suffix(".py").exists())
-                or (t.startswith(PACKAGE) and _is_package(t))
-            ):
+                t.startswith(PACKAGE)
+                and (ROOT / Path(*t.split(".")[2:])).with_suffix(".py").exists()
+            ) or (t.startswith(PACKAGE) and _is_package(t)):
                 found.add(t)
     ancestors = {".".join(me.split(".")[:k]) for k in range(2, len(me.split(".")) + 1)}
     return found - ancestors  # a package is initialised before its modules run
