@@ -22,6 +22,7 @@ COMMAND_MODULES = (
     "armkit.cli._calibrate",
     "armkit.cli._compare",
     "armkit.cli._dynamixel",
+    "armkit.cli._urdf",
 )
 
 EPILOG = """\

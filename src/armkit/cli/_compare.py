@@ -6,14 +6,14 @@ import argparse
 import math
 from typing import Any
 
-from ..kinematics._compare import (
+from ..model import load_model
+from ._compare_methods import (
     TASKS,
     MethodScore,
     compare_methods,
     default_task,
     reachable_targets,
 )
-from ..model import load_model
 from ._table import table
 
 

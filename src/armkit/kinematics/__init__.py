@@ -1,5 +1,6 @@
 """Pure kinematics on an ArmModel: FK, frames, Jacobian, closed-form and numeric IK (SI units)."""
 
+from ._chain import joint_frames as joint_frames
 from ._forward import fk as fk
 from ._forward import fk_frames as fk_frames
 from ._forward import jacobian as jacobian

@@ -19,13 +19,13 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import ModelError
-from ..model import ArmModel
+from ..model import ArmModel, JointFrame
 from ._closed_fast import FixedSolver, NearestPitch, fixed_solver, nearest_pitch_solver
 from ._family import PlanarFamily, detect
 from ._planar import wrist_range
 from ._pose import pitch_scalar
 from ._scalar import State, compile_state
-from ._steps import Fixed, Step, steps_of
+from ._steps import Fixed, Step, frames_of, steps_of
 
 F64 = NDArray[np.float64]
 
@@ -93,6 +93,13 @@ def chain_of(model: ArmModel) -> Chain:
 
 
 MAX_REACH = 1e4  # [m]: beyond it float arithmetic on the chain loses its metres
+
+
+def joint_frames(model: ArmModel) -> tuple[tuple[JointFrame, ...], F64]:
+    """The chain as URDF describes it: per joint its frame (origin from the previous joint's
+    frame, axis), and the tool frame in the last joint's frame, shape (4, 4) [m]."""
+    chain = chain_of(model)
+    return frames_of(chain.steps), chain.tool.T
 
 
 def compile_chain(model: ArmModel) -> Chain:

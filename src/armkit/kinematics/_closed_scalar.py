@@ -18,10 +18,9 @@ import numpy as np
 
 from .._errors import Reason, UnreachableError
 from ._chain import Chain
-from ._closed_fast import Found, Misses, Q, wrap_into
+from ._closed_fast import Found, Misses, Q
 from ._family import PlanarFamily
 from ._pitch_range import candidates
-from ._planar import annulus_arcs, pitch_for_phi, planes
 
 _TWO_PI = 2.0 * math.pi
 
@@ -63,30 +62,12 @@ def _free(chain: Chain, fam: PlanarFamily, x: float, y: float, z: float, seed: Q
     """Position only: the solutions at the pitch nearest the seed's at which the arm fits."""
     want = chain.home_pitch if seed is chain.home else preferred(chain, seed)
     assert chain.fixed is not None
-    if chain.nearest is not None and len(seed) > 0:
+    at: float | None = want
+    if chain.nearest is not None:  # the nearest pitch with the wrist point within reach
         at = chain.nearest(x, y, z, want, seed[0])
-        if at is None:  # the wrist point is out of reach at every pitch
+        if at is None:  # out of reach at every pitch
             return []
-        return chain.fixed(x, y, z, at, seed, None) or _exact(chain, fam, x, y, z, seed, want)
-    branches = planes(fam, x, y, z, seed[fam.base] if fam.base is not None else 0.0)
-    if isinstance(branches, str):
-        return []
-    best, best_d = want, math.inf
-    for r, rho, q0 in branches:
-        if fam.base is not None and wrap_into(q0, chain.lower[0], chain.upper[0]) is None:
-            continue
-        arcs = annulus_arcs(fam, r, z, chain.wrist_reach)
-        if arcs is None:
-            best, best_d = want, 0.0
-            break
-        for start, length in arcs:
-            pitch, d = _nearest_on_arc(fam, start, length, r, rho, want)
-            if d < best_d:
-                best, best_d = pitch, d
-    if best_d == math.inf:
-        return []
-    found = chain.fixed(x, y, z, best, seed, None)
-    return found or _exact(chain, fam, x, y, z, seed, want)
+    return chain.fixed(x, y, z, at, seed, None) or _exact(chain, fam, x, y, z, seed, want)
 
 
 def _exact(
@@ -100,22 +81,6 @@ def _exact(
         if found:
             return found
     return []
-
-
-def _nearest_on_arc(
-    fam: PlanarFamily, start: float, length: float, r: float, rho: float, want: float
-) -> tuple[float, float]:
-    """The pitch [rad] nearest ``want`` among those of the plane turns [start, start +
-    length], and its distance [rad]."""
-    a = pitch_for_phi(fam.phi0 + start, r, rho)
-    b = pitch_for_phi(fam.phi0 + start + length, r, rho)
-    lo, hi = (a, b) if r >= 0.0 else (b, a)
-    span = (hi - lo) % _TWO_PI if length < _TWO_PI - 1e-12 else _TWO_PI
-    d = (want - lo) % _TWO_PI
-    if d <= span:
-        return want, 0.0
-    to_hi, to_lo = d - span, _TWO_PI - d
-    return (lo + span, to_hi) if to_hi < to_lo else (lo, to_lo)
 
 
 def _num(v: float) -> str:

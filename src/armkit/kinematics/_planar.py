@@ -70,30 +70,3 @@ def pitch_for_phi(phi: float, r: float, rho: float) -> float:
     if abs(r) < 1e-12 or rho < 1e-12:
         return math.atan2(math.sin(phi), abs(c))
     return math.atan2(math.sin(phi), c * r / rho)
-
-
-def annulus_arcs(
-    fam: PlanarFamily, r: float, z: float, reach: tuple[float, float]
-) -> list[tuple[float, float]] | None:
-    """Plane turns [rad] (alpha_1 + alpha_2 + alpha_3) at which the end of link 2 is
-    between ``reach`` = (d_min, d_max) [m] from the first planar joint, as (start, length)
-    arcs; None: every turn."""
-    tx, tz = r - fam.c1[0], z - fam.c1[1]
-    v3x, v3z = fam.links[2]
-    big_d, l3 = math.hypot(tx, tz), math.hypot(v3x, v3z)
-    k, lo, hi = 2.0 * big_d * l3, reach[0], reach[1]
-    if k < 1e-15:  # the wrist circle is centred on the shoulder
-        return None if lo - 1e-12 <= l3 <= hi + 1e-12 else []
-    base = big_d * big_d + l3 * l3
-    c_lo, c_hi = (base - hi * hi) / k, (base - lo * lo) / k
-    if c_lo > 1.0 + 1e-12 or c_hi < -1.0 - 1e-12:
-        return []
-    u_in, u_out = math.acos(min(1.0, c_hi)), math.acos(max(-1.0, c_lo))
-    shift = math.atan2(tz, tx) - math.atan2(v3z, v3x)
-    if u_in <= 0.0 and u_out >= math.pi:
-        return None
-    if u_in <= 0.0:
-        return [(shift - u_out, 2 * u_out)]
-    if u_out >= math.pi:
-        return [(shift + u_in, _TWO_PI - 2 * u_in)]
-    return [(shift + u_in, u_out - u_in), (shift - u_out, u_out - u_in)]

@@ -13,6 +13,7 @@ from numpy.typing import NDArray
 
 from .._errors import ModelError
 from ._types import ArmModel, DHRow, Gripper, Joint
+from ._urdf import is_urdf, load_urdf
 
 _NUM = (int, float)
 _TOP = {
@@ -61,6 +62,8 @@ def load_model(name_or_path: str | Path) -> ArmModel:
         ModelError: the file is missing, is not TOML, or a field is wrong; the
             message names the file, the field and what is allowed.
     """
+    if is_urdf(name_or_path):  # a URDF file: FILE.urdf or FILE.urdf#TIP_LINK
+        return load_urdf(name_or_path)
     path = _resolve(name_or_path)
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))

@@ -19,11 +19,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError, UnreachableError
+from ..kinematics import IKBatchResult, fk, ik, ik_batch, pitch_of, why_no_closed_form
 from ..model import ArmModel
-from ._forward import fk
-from ._ik import ik, ik_batch, why_no_closed_form
-from ._pose import pitch_of
-from ._result import IKBatchResult
 
 F64 = NDArray[np.float64]
 TASKS = ("position", "position+pitch", "pose")
