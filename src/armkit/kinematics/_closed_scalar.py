@@ -36,10 +36,10 @@ def solve(chain: Chain, fam: PlanarFamily, p: Q, pitch: float | None, seed: Q) -
     x, y, z = p
     fixed = chain.fixed
     assert fixed is not None
-    if pitch is None and len(fam.planar) == 3:
-        found = _free(chain, fam, x, y, z, seed)
-    else:
+    if pitch is not None or len(fam.planar) == 2:
         found = fixed(x, y, z, pitch, seed, None)
+    else:
+        found = _free(chain, fam, x, y, z, seed)
     if not found:
         if pitch is None and len(fam.planar) == 3:
             pitch = preferred(chain, seed)

@@ -67,21 +67,24 @@ def ik(
     if isinstance(position, Target):
         position, pitch, orientation = _unpack(position, pitch, orientation)
     p = point(position)
-    pitch = angle(pitch, "pitch")
+    if not (type(pitch) is float and pitch - pitch == 0.0):  # else: a finite float already
+        pitch = angle(pitch, "pitch")
     if p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > chain.reach2:
         raise too_far(chain, p, pitch)
     seed = (
         chain.home if q_seed is None else tuple(joints(q_seed, chain.dof, "q_seed", False).tolist())
     )
-    if orientation is None:
+    if orientation is None and (method == "auto" or method == "analytic"):
+        fam = chain.family
         if pitch is None:
             pitch = chain.default_pitch
-        fam = chain.family
-        if fam is not None and (method == "auto" or method == "analytic"):
+        if fam is not None:
             found = solve_one_closed(chain, fam, p, pitch, seed)
             return IKResult.of(
                 tuple(found), "analytic", tuple.__new__(Goal, (p, pitch, None)), chain
             )
+    elif orientation is None and pitch is None:
+        pitch = chain.default_pitch
     use = _numeric_method(chain, method, orientation)
     R = None if orientation is None else rotation(orientation, "orientation")
     if R is not None and pitch is not None:
