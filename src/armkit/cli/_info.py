@@ -47,11 +47,16 @@ def run_show(args: argparse.Namespace) -> int:
         )
     )
     print()
-    print(
-        f"DH convention: {m.convention}"
-        + (" (Craig: alpha, a of row i-1)" if m.convention == "modified" else "")
-    )
-    print(table(["joint", "a mm", "alpha deg", "d mm", "theta offset deg", "sign"], _dh_rows(m)))
+    if m.convention == "frames":  # a URDF model: joint frames, no DH rows
+        print(f"chain: {m.dof} joint frames (origin and axis per joint, as URDF gives them)")
+    else:
+        print(
+            f"DH convention: {m.convention}"
+            + (" (Craig: alpha, a of row i-1)" if m.convention == "modified" else "")
+        )
+        print(
+            table(["joint", "a mm", "alpha deg", "d mm", "theta offset deg", "sign"], _dh_rows(m))
+        )
     print()
     print(_tool_line(m))
     g = m.gripper

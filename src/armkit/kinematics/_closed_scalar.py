@@ -90,9 +90,10 @@ def _num(v: float) -> str:
 
 def where(p: Q, pitch: float | None) -> str:
     """The target in the user's units, briefly: '(x, y, z) mm at pitch P deg'."""
-    if max(abs(v) for v in p) < 1e6:
-        text = "(" + ", ".join(_num(v * 1000) for v in p) + ") mm"
-    else:  # astronomically far: metres, 3 digits
+    mm = [v * 1000.0 for v in p]
+    if all(math.isfinite(v) for v in mm):
+        text = "(" + ", ".join(_num(v) for v in mm) + ") mm"
+    else:  # too far for millimetres in a float: metres
         text = "(" + ", ".join(f"{v:.3g}" for v in p) + ") m"
     return text if pitch is None else text + f" at pitch {_num(math.degrees(pitch))} deg"
 
