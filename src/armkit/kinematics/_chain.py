@@ -39,7 +39,8 @@ class Chain:
         steps, tool: the chain (see ``_steps``).
         state: the scalar forward kinematics, q (dof floats) [rad] -> ``ChainState``.
         lower, upper, home: joint limits and home [rad] as Python floats;
-        lower_a, upper_a, home_a: the same as arrays, shape (dof,).
+        lower_a, upper_a, home_a: the same as arrays, shape (dof,); signs, offsets: each
+            step's sign and angle offset [rad], shape (dof,).
         joint_names: the joints' names.
         default_pitch: the model's pitch when none is given [rad], or None.
         reach: upper bound on the tool point's distance from the world origin [m];
@@ -66,6 +67,8 @@ class Chain:
     lower_a: F64
     upper_a: F64
     home_a: F64
+    signs: F64
+    offsets: F64
     joint_names: tuple[str, ...]
     default_pitch: float | None
     reach: float
@@ -139,6 +142,8 @@ def compile_chain(model: ArmModel) -> Chain:
         lower_a=np.array(lower),
         upper_a=np.array(upper),
         home_a=np.array(home),
+        signs=np.array([s.sign for s in steps]),
+        offsets=np.array([s.offset for s in steps]),
         joint_names=model.joint_names,
         default_pitch=model.default_pitch,
         reach=reach,

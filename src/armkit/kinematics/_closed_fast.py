@@ -64,8 +64,10 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
     cos, sin, acos, atan2 = math.cos, math.sin, math.acos, math.atan2
 
     lat, az, bs, c0, s0 = fam.lateral, fam.azimuth_r, fam.base_sign, math.cos(phi0), math.sin(phi0)
+    ux, uy, uz = fam.u
     rem, tp, sqrt, pi = math.remainder, _TWO_PI, math.sqrt, math.pi
     simple, rest = base == 0 and fam.planar == (1, 2, 3), len(lower) > 4
+    pair = base is None and fam.planar == (0, 1) and len(lower) == 2
     # ranges within (-pi, pi] + a turn: an angle inside them has no other turn inside
     narrow1, narrow2, narrow3 = (
         -pi <= lo and hi <= pi for lo, hi in ((lo1, hi1), (lo2, hi2), (lo3, hi3))
@@ -100,7 +102,15 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
         found: Found = []
         rho2 = x * x + y * y
         r2 = rho2 - lat * lat
-        if base is not None and three and r2 > 1e-24:  # facing the target, and over the shoulder
+        if base is None and not three and pitch is None:  # a planar pair in a fixed plane
+            if abs(x * ux + y * uy + z * uz - lat) > 1e-9:
+                if misses is not None:
+                    misses.reasons.append("off_plane")
+                return found
+            branches: list[tuple[float, float, float, float, float, float]] | str = [
+                (-uy * x + ux * y, sqrt(rho2), 0.0, 1.0, 0.0, 0.0)
+            ]
+        elif base is not None and three and r2 > 1e-24:  # facing the target, and over the shoulder
             rr, rho = sqrt(r2), sqrt(rho2)
             heading = atan2(y, x) - az
             sp, cp = sin(pitch or 0.0), cos(pitch or 0.0)
@@ -113,7 +123,7 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
                 qa, qb = bs * heading, bs * (heading + pi)
             ca, sa = cp * c0 + sp * s0, sp * c0 - cp * s0
             cb, sb = -cp * c0 + sp * s0, sp * c0 + cp * s0
-            branches: list[tuple[float, float, float, float, float, float]] | str = [
+            branches = [
                 (rr, rho, qa, ca, sa, atan2(sa, ca)),
                 (-rr, rho, qb, cb, sb, atan2(sb, cb)),
             ]
@@ -183,6 +193,10 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
                         sol = (q0, v1, v2, v3, *seed[4:]) if rest else (q0, v1, v2, v3)
                         found.append((d0 * d0 + d1 * d1 + d2 * d2 + d3 * d3, sol))
                         continue
+                elif pair:  # a planar pair alone: the 2-joint arm
+                    d1, d2 = v1 - seed[0], v2 - seed[1]
+                    found.append((d1 * d1 + d2 * d2, (v1, v2)))
+                    continue
                 q = list(seed)
                 q[j1], q[j2] = v1, v2
                 if three:

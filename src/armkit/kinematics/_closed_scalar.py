@@ -60,7 +60,7 @@ def preferred(chain: Chain, seed: Q) -> float:
 
 def _free(chain: Chain, fam: PlanarFamily, x: float, y: float, z: float, seed: Q) -> Found:
     """Position only: the solutions at the pitch nearest the seed's at which the arm fits."""
-    want = chain.home_pitch if seed is chain.home else preferred(chain, seed)
+    want = chain.home_pitch if seed == chain.home else preferred(chain, seed)
     assert chain.fixed is not None
     at: float | None = want
     if chain.nearest is not None:  # the nearest pitch with the wrist point within reach

@@ -127,7 +127,7 @@ def _geometry(
         c1=centres[0],
         links=links,
         phi0=math.atan2(approach[1], approach[0]),
-        lateral=float(tool[:3, 3] @ u),
+        lateral=lateral if abs(lateral := float(tool[:3, 3] @ u)) > 1e-12 else 0.0,
         azimuth_r=math.atan2(e_r[1], e_r[0]),
         u=(float(u[0]), float(u[1]), float(u[2])),
         l1=l1,

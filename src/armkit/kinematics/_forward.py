@@ -108,7 +108,7 @@ def sweep(chain: Chain, q: F64, *, jacobian: bool = False, frames: bool = False)
     n = q.shape[0]
     if q.shape[1:] != (chain.dof,):
         raise InputError(f"q must have shape (N, {chain.dof}), got shape {q.shape}")
-    theta = (q * np.array([s.sign for s in chain.steps]) + [s.offset for s in chain.steps]).T
+    theta = (q * chain.signs + chain.offsets).T
     c, s = np.cos(theta), np.sin(theta)
     cols: Cols = [np.zeros((3, n)) for _ in range(3)]
     cols[0][0], cols[1][1], cols[2][2] = 1.0, 1.0, 1.0

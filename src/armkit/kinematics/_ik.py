@@ -71,9 +71,14 @@ def ik(
         pitch = angle(pitch, "pitch")
     if p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > chain.reach2:
         raise too_far(chain, p, pitch)
-    seed = (
-        chain.home if q_seed is None else tuple(joints(q_seed, chain.dof, "q_seed", False).tolist())
-    )
+    if q_seed is None:
+        seed = chain.home
+    elif isinstance(q_seed, np.ndarray) and q_seed.shape == (chain.dof,) and q_seed.dtype == float:
+        seed = tuple(q_seed.tolist())  # the common case, checked without a new array
+        if not all(v - v == 0.0 for v in seed):
+            raise InputError("q_seed must be finite [rad], got NaN or infinity")
+    else:
+        seed = tuple(joints(q_seed, chain.dof, "q_seed", False).tolist())
     if orientation is None and (method == "auto" or method == "analytic"):
         fam = chain.family
         if pitch is None:
