@@ -246,24 +246,33 @@ def nearest_pitch_solver(
         math.remainder,
     )
 
+    full = hi0 - lo0 >= tp - 1e-9  # the base turns all the way: both branches always face
+    c_k, s_k = math.cos(phi0 - ang3), math.sin(phi0 - ang3)
+
+    def faces(q0: float) -> bool:
+        return (
+            full or lo0 - 1e-9 <= rem(q0 - 0.5 * (lo0 + hi0), tp) + 0.5 * (lo0 + hi0) <= hi0 + 1e-9
+        )
+
     def nearest(x: float, y: float, z: float, want: float, seed0: float) -> float | None:
         r = math.hypot(x, y)
         if r < 1e-9:
             return want  # on the base axis: the solvers decide
         heading = atan2(y, x) - az
-        best, gap = None, math.inf
-        for rr, sign, q0 in ((r, 1.0, bs * heading), (-r, -1.0, bs * (heading + pi))):
-            if not (
-                lo0 - 1e-9 <= rem(q0 - 0.5 * (lo0 + hi0), tp) + 0.5 * (lo0 + hi0) <= hi0 + 1e-9
-            ):
+        cw, sw = cos(want), math.sin(want)
+        # cos and sin of want's turn less the wrist link's angle, facing (+) and reaching back (-)
+        ways = (
+            (r, 1.0, bs * heading, cw * c_k + sw * s_k, sw * c_k - cw * s_k),
+            (-r, -1.0, bs * (heading + pi), -(cw * c_k - sw * s_k), sw * c_k + cw * s_k),
+        )
+        todo = []
+        for rr, sign, q0, ca, sa in ways:
+            if not faces(q0):
                 continue  # the base cannot face this way
             tx, tz = rr - c1x, z - c1z
             big2 = tx * tx + tz * tz
-            k = 2.0 * math.sqrt(big2) * l3
-            shift = atan2(tz, tx) - ang3
-            u0 = rem(
-                (want if sign > 0 else pi - want) - phi0 - shift, tp
-            )  # turn of want, less shift
+            big = math.sqrt(big2)
+            k = 2.0 * big * l3
             if k < 1e-15:
                 if lo2 - 1e-12 <= big2 + l3 * l3 <= hi2 + 1e-12:
                     return want
@@ -271,9 +280,13 @@ def nearest_pitch_solver(
             c_lo, c_hi = (big2 + l3 * l3 - hi2) / k, (big2 + l3 * l3 - lo2) / k
             if c_lo > 1.0 + 1e-12 or c_hi < -1.0 - 1e-12:
                 continue
-            c0 = cos(u0)
-            if c_lo <= c0 <= c_hi:
+            if c_lo <= (ca * tx + sa * tz) / big <= c_hi:  # the wrist within reach at want
                 return want
+            todo.append((sign, tx, tz, c_lo, c_hi))
+        best, gap = None, math.inf
+        for sign, tx, tz, c_lo, c_hi in todo:  # the nearest turn within reach: a clamp
+            shift = atan2(tz, tx) - ang3
+            u0 = rem((want if sign > 0 else pi - want) - phi0 - shift, tp)
             u_in, u_out = acos(min(1.0, c_hi)), acos(max(-1.0, c_lo))
             u = min(max(abs(u0), u_in), u_out)
             u = u if u0 >= 0.0 else -u

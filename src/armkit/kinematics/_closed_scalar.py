@@ -14,39 +14,26 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from .._errors import Reason, UnreachableError
 from ._chain import Chain
-from ._closed_fast import Found, Misses, Q
+from ._closed_fast import Found, Misses, Q, wrap_into
 from ._family import PlanarFamily
-from ._pitch_range import candidates
+from ._planar import pitch_for_phi, planes
 
 _TWO_PI = 2.0 * math.pi
 
 
-def solve(chain: Chain, fam: PlanarFamily, p: Q, pitch: float | None, seed: Q) -> Found:
-    """Every solution for tool point ``p`` [m] and ``pitch`` [rad] (None: the nearest
-    the seed's that fits, with 3 planar joints), unsorted.
-
-    Raises:
-        UnreachableError: none; ``reason`` says why, the message names the joint and
-            limit when only the limits are in the way.
-    """
-    x, y, z = p
-    fixed = chain.fixed
-    assert fixed is not None
-    if pitch is not None or len(fam.planar) == 2:
-        found = fixed(x, y, z, pitch, seed, None)
-    else:
-        found = _free(chain, fam, x, y, z, seed)
-    if not found:
-        if pitch is None and len(fam.planar) == 3:
-            pitch = preferred(chain, seed)
-        misses = Misses()
-        fixed(x, y, z, pitch, seed, misses)
-        raise unreachable(chain, p, pitch, misses)
-    return found
+def refusal(
+    chain: Chain, fam: PlanarFamily, p: Q, pitch: float | None, seed: Q
+) -> UnreachableError:
+    """Why no solution fits ``p`` [m] at ``pitch`` [rad] (None: at the seed's pitch):
+    the joint and limit when only the limits are in the way, else the reason."""
+    assert chain.fixed is not None
+    if pitch is None and len(fam.planar) == 3:
+        pitch = preferred(chain, seed)
+    misses = Misses()
+    chain.fixed(p[0], p[1], p[2], pitch, seed, misses)
+    return unreachable(chain, p, pitch, misses)
 
 
 def preferred(chain: Chain, seed: Q) -> float:
@@ -58,8 +45,9 @@ def preferred(chain: Chain, seed: Q) -> float:
     return math.atan2(az, h)
 
 
-def _free(chain: Chain, fam: PlanarFamily, x: float, y: float, z: float, seed: Q) -> Found:
-    """Position only: the solutions at the pitch nearest the seed's at which the arm fits."""
+def free(chain: Chain, fam: PlanarFamily, x: float, y: float, z: float, seed: Q) -> Found:
+    """Position only (3 planar joints): every solution at the pitch nearest the seed's at
+    which the arm fits, unsorted; [] if none."""
     want = chain.home_pitch if seed == chain.home else preferred(chain, seed)
     assert chain.fixed is not None
     at: float | None = want
@@ -73,14 +61,56 @@ def _free(chain: Chain, fam: PlanarFamily, x: float, y: float, z: float, seed: Q
 def _exact(
     chain: Chain, fam: PlanarFamily, x: float, y: float, z: float, seed: Q, want: float
 ) -> Found:
-    """The nearest fitting pitch among those where the fit can change (see ``_pitch_range``)."""
+    """The nearest fitting pitch among those where the fit can change: the scalar form of
+    ``_pitch_range.candidates`` (see there), tried nearest ``want`` first."""
     assert chain.fixed is not None
-    pitches = candidates(chain, fam, np.array([[x, y, z]]), np.array([seed]), np.array([want]))[0]
-    for pitch in pitches[np.isfinite(pitches)].tolist():
+    branches = planes(fam, x, y, z, seed[fam.base] if fam.base is not None else 0.0)
+    if isinstance(branches, str):
+        return []
+    (v1x, v1z), (v2x, v2z), (v3x, v3z) = fam.links
+    l1, l2, l3, ang3 = fam.l1, fam.l2, math.hypot(v3x, v3z), math.atan2(v3z, v3x)
+    (s1, s2, s3), (j1, j2, j3) = fam.sigma, fam.planar
+    lo_d, hi_d = chain.wrist_reach
+    elbow = [
+        math.hypot(l1 + l2 * math.cos(s2 * a + fam.bend), l2 * math.sin(s2 * a + fam.bend))
+        for a in (chain.lower[j2], chain.upper[j2])
+    ]
+    radii = sorted({lo_d, hi_d, *(d for d in elbow if lo_d < d < hi_d)})
+    pitches = []
+    for r, rho, q0 in branches:
+        if (
+            fam.base is not None
+            and wrap_into(q0, chain.lower[fam.base], chain.upper[fam.base]) is None
+        ):
+            continue
+        tx, tz = r - fam.c1[0], z - fam.c1[1]
+        turns = [t for d in radii for t in _circles(tx, tz, l3, ang3, d)]
+        for a in (chain.lower[j1], chain.upper[j1]):  # shoulder at a limit
+            c, s = math.cos(s1 * a), math.sin(s1 * a)
+            turns += _circles(tx - (c * v1x - s * v1z), tz - (s * v1x + c * v1z), l3, ang3, l2)
+        for a in (chain.lower[j3], chain.upper[j3]):  # wrist at a limit
+            c, s = math.cos(s3 * a), math.sin(s3 * a)
+            ux, uz = v2x + c * v3x - s * v3z, v2z + s * v3x + c * v3z
+            turns += [
+                t + s3 * a for t in _circles(tx, tz, math.hypot(ux, uz), math.atan2(uz, ux), l1)
+            ]
+        pitches += [pitch_for_phi(fam.phi0 + t, r, rho) for t in turns]
+    pitches.sort(key=lambda p: abs(math.remainder(p - want, _TWO_PI)))
+    for pitch in pitches:
         found = chain.fixed(x, y, z, pitch, seed, None)
         if found:
             return found
     return []
+
+
+def _circles(tx: float, tz: float, length: float, angle: float, radius: float) -> list[float]:
+    """Turns t [rad] with |T - R(t) v| = radius, T = (tx, tz), v of ``length`` at ``angle``."""
+    big = math.hypot(tx, tz)
+    c = (big * big + length * length - radius * radius) / max(2.0 * big * length, 1e-300)
+    if abs(c) > 1.0 + 1e-12:
+        return []
+    u, base = math.acos(min(1.0, max(-1.0, c))), math.atan2(tz, tx) - angle
+    return [base + u, base - u]
 
 
 def _num(v: float) -> str:

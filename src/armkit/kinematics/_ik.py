@@ -12,8 +12,7 @@ from .._errors import InputError
 from ..model import ArmModel
 from ._chain import Chain, chain_of
 from ._closed import best, reasons, solve
-from ._closed_scalar import solve as solve_one_closed
-from ._closed_scalar import too_far
+from ._closed_scalar import free, refusal, too_far
 from ._forward import CHUNK
 from ._numeric import solve_many, solve_one
 from ._pitch_range import free_batch, preferred
@@ -83,8 +82,13 @@ def ik(
         fam = chain.family
         if pitch is None:
             pitch = chain.default_pitch
-        if fam is not None:
-            found = solve_one_closed(chain, fam, p, pitch, seed)
+        if fam is not None and chain.fixed is not None:
+            if pitch is not None or len(fam.planar) == 2:
+                found = chain.fixed(p[0], p[1], p[2], pitch, seed, None)
+            else:
+                found = free(chain, fam, p[0], p[1], p[2], seed)
+            if not found:
+                raise refusal(chain, fam, p, pitch, seed)
             return IKResult.of(
                 tuple(found), "analytic", tuple.__new__(Goal, (p, pitch, None)), chain
             )
