@@ -139,3 +139,19 @@ def test_zero_length_link_in_the_planar_pair() -> None:
     dh[2] = DHRow(a=0.0, alpha=0.0, d=0.0, theta_offset=dh[2].theta_offset)
     m = replace(OMX, dh=tuple(dh))
     assert "planar link 1" in why_no_closed_form(m)  # joints 2 and 3 coincide
+
+
+def test_one_target_type_for_ik_and_ik_batch() -> None:
+    q = np.radians([10.0, 5.0, 10.0, 20.0])
+    T = fk(OMX, q)
+    pitch = float(np.arctan2(T[2, 0], np.hypot(T[0, 0], T[1, 0])))
+    one = ik(OMX, Target(T[:3, 3], pitch), q_seed=q)
+    assert np.allclose(one.q, q, atol=1e-9)
+    many = ik_batch(OMX, Target(np.array([T[:3, 3]] * 3), pitch), q_seed=q)
+    assert many.ok.all() and np.allclose(many.q, q, atol=1e-9)
+    puma = load_model("puma560")
+    Tp = fk(puma, np.radians([30.0, 100.0, -150.0, 20.0, 40.0, 10.0]))
+    pose = ik(puma, Target(Tp[:3, 3], orientation=Tp[:3, :3]), method="lm")
+    assert pose.method == "lm" and pose.position_error < 1e-5
+    with pytest.raises(InputError, match="not both"):
+        ik_batch(OMX, Target(np.zeros((1, 3)), 0.1), 0.2)
