@@ -7,11 +7,39 @@ and what to do.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Literal
+
+Reason = Literal[
+    "too_far",
+    "too_close",
+    "joint_limit",
+    "off_plane",
+    "pitch",
+    "no_convergence",
+    "table",
+    "discontinuous",
+    "unreachable",
+]
+"""Why a target or path cannot be reached (``UnreachableError.reason``):
+
+- ``"too_far"``: beyond the links' reach; ``"too_close"``: inside the links' inner reach.
+- ``"joint_limit"``: reachable only with a joint outside its limits (the message names it).
+- ``"off_plane"``: outside the plane of a planar arm; ``"pitch"``: not at that pitch.
+- ``"no_convergence"``: a numeric solver stopped without meeting its tolerance.
+- ``"table"``: the pose or path puts the arm into the table.
+- ``"discontinuous"``: a path's joint angles jump between two neighbouring points.
+- ``"unreachable"``: none of the above is known (a path planner's fallback).
+"""
 
 
 class ArmkitError(Exception):
     """Base class of every error armkit raises on purpose."""
+
+
+class InputError(ArmkitError, ValueError):
+    """A value passed in is malformed or out of range (shape, NaN, unknown name).
+
+    Also a ``ValueError``, so code that catches that keeps working."""
 
 
 class ModelError(ArmkitError):
@@ -22,14 +50,15 @@ class UnreachableError(ArmkitError):
     """No joint angles put the tool at the target within the joint limits.
 
     Attributes:
-        reason: one of ``"too_far"``, ``"too_close"``, ``"joint_limit"``,
-            ``"off_plane"``, ``"pitch"``, ``"no_convergence"``.
+        reason: why, a ``Reason`` (see there).
         closest: the closest joint vector found [rad], shape (dof,), or None.
     """
 
-    def __init__(self, message: str, *, reason: str = "", closest: Any = None) -> None:
+    def __init__(
+        self, message: str, *, reason: Reason = "unreachable", closest: Any = None
+    ) -> None:
         super().__init__(message)
-        self.reason = reason
+        self.reason: Reason = reason
         self.closest = closest
 
 

@@ -60,7 +60,10 @@ def test_ik_json_round_trips_through_fk(capsys: pytest.CaptureFixture[str]) -> N
         (["--arm", "planar2", "ik", "500", "100", "500"], "outside the arm's plane"),
         (["ik", "200", "0", "50", "--method", "newton"], "invalid choice: 'newton'"),
         (["--arm", "puma560", "ik", "400", "100", "300", "--method", "analytic"], "use a numeric"),
-        (["--arm", "al5d", "ik", "900", "0", "0", "--method", "lm"], "out of al5d's reach"),
+        (
+            ["--arm", "al5d", "ik", "900", "0", "0", "--method", "lm"],
+            "al5d cannot reach (900.0, 0.0, 0.0) mm: too far",
+        ),
     ],
 )
 def test_bad_input_is_one_line(

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from armkit.cli import main
-from armkit.kinematics._compare import (
+from armkit.cli._compare_methods import (
     applicable_methods,
     compare_methods,
     reachable_targets,

@@ -26,6 +26,7 @@ COMMAND_MODULES = (
     "armkit.cli._script",
     "armkit.cli._scene",
     "armkit.cli._tasks",
+    "armkit.cli._urdf",
 )
 
 EPILOG = """\

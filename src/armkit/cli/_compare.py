@@ -7,15 +7,15 @@ import math
 from typing import Any
 
 from .._errors import ArmkitError
-from ..kinematics._compare import (
+from ..model import load_model
+from ._args import check_output, integer
+from ._compare_methods import (
     TASKS,
     MethodScore,
     compare_methods,
     default_task,
     reachable_targets,
 )
-from ..model import load_model
-from ._args import check_output, integer
 from ._table import table
 
 

@@ -109,8 +109,10 @@ def run_ik(args: argparse.Namespace) -> int:
     m = load_model(args.arm)
     target = [float(args.x), float(args.y), float(args.z)]
     if not all(math.isfinite(v) for v in target):
-        shown = ", ".join(f"{v:g}" for v in target)
-        raise InputError(f"the target must be finite numbers of mm, got {shown}")
+        shown = ", ".join(f"{v:.6g}" for v in target)
+        raise InputError(f"X Y Z must be finite numbers in mm, got {shown}")
+    if args.pitch is not None and not (math.isfinite(args.pitch) and abs(args.pitch) <= 180.0):
+        raise InputError(f"--pitch must be an angle from -180 to 180 deg, got {args.pitch:.6g}")
     pitch = None if args.pitch is None else math.radians(args.pitch)
     result = ik(m, np.array(target) / 1000.0, pitch, method=args.method)
     sols = result.solutions if args.all else result.solutions[:1]

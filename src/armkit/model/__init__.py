@@ -10,3 +10,4 @@ from ._types import ArmModel as ArmModel
 from ._types import DHRow as DHRow
 from ._types import Gripper as Gripper
 from ._types import Joint as Joint
+from ._types import JointFrame as JointFrame

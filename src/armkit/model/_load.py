@@ -17,6 +17,7 @@ from ._check import NUM as _NUM
 from ._check import Checker as _Checker
 from ._sections import check_driver_sections
 from ._types import ArmModel, DHRow, Gripper, Joint
+from ._urdf import is_urdf, load_urdf
 
 _TOP = {
     "name": str,
@@ -75,6 +76,8 @@ def load_model(name_or_path: str | Path) -> ArmModel:
         ModelError: the file is missing, is not TOML, or a field is wrong; the
             message names the file, the field and what is allowed.
     """
+    if is_urdf(name_or_path):  # a URDF file: FILE.urdf or FILE.urdf#TIP_LINK
+        return load_urdf(name_or_path)
     path = _resolve(name_or_path)
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))

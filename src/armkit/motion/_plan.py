@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._errors import InputError, UnreachableError
+from .._errors import InputError, Reason, UnreachableError
 from ..kinematics import fk, ik
 from ..model import ArmModel
 
@@ -40,7 +40,7 @@ class JointPath:
 class PathError(UnreachableError):
     """A path cannot be followed; ``index`` is the first point that fails."""
 
-    def __init__(self, message: str, *, reason: str, index: int) -> None:
+    def __init__(self, message: str, *, reason: Reason, index: int) -> None:
         super().__init__(message, reason=reason)
         self.index = index
 

@@ -18,14 +18,9 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import UnreachableError
+from .._errors import InputError, UnreachableError
+from ..kinematics import IKBatchResult, fk, ik, ik_batch, pitch_of, why_no_closed_form
 from ..model import ArmModel
-from ._family import family_of
-from ._fk import fk
-from ._ik import ik
-from ._numeric import solve_batch
-from ._pose import pitch_of
-from ._result import IKBatchResult
 
 F64 = NDArray[np.float64]
 TASKS = ("position", "position+pitch", "pose")
@@ -70,16 +65,16 @@ def default_task(model: ArmModel) -> str:
 def reachable_targets(model: ArmModel, n: int, seed: int, task: str) -> Targets:
     """n targets made by FK of joint vectors drawn uniformly inside the limits."""
     if task not in TASKS:
-        raise ValueError(f"task must be one of {', '.join(TASKS)}, got {task!r}")
+        raise InputError(f"task must be one of {', '.join(TASKS)}, got {task!r}")
     if n < 1:
-        raise ValueError(f"n must be at least 1, got {n}")
+        raise InputError(f"n must be at least 1, got {n}")
     q = np.random.default_rng(seed).uniform(model.lower, model.upper, size=(n, model.dof))
     return Targets(q, fk(model, q), task)
 
 
 def applicable_methods(model: ArmModel, task: str) -> tuple[str, ...]:
     """The methods that apply: the closed form only for its family, without orientation."""
-    closed = family_of(model) is not None and task != "pose"
+    closed = not why_no_closed_form(model) and task != "pose"
     return tuple(m for m in METHODS if m != "analytic" or closed)
 
 
@@ -90,11 +85,11 @@ def compare_methods(
     call (or batch) runs ``repeats`` times and the fastest time counts (a busy machine
     only ever adds time)."""
     if repeats < 1:
-        raise ValueError(f"repeats must be at least 1, got {repeats}")
+        raise InputError(f"repeats must be at least 1, got {repeats}")
     methods = applicable_methods(model, targets.task) if methods is None else methods
     for m in methods:
         if m not in METHODS:
-            raise ValueError(f"method must be one of {', '.join(METHODS)}, got {m!r}")
+            raise InputError(f"method must be one of {', '.join(METHODS)}, got {m!r}")
     return [
         _score_batch(model, targets, repeats)
         if m == "lm-batch"
@@ -128,9 +123,9 @@ def _one_call(model: ArmModel, targets: Targets, method: str) -> Callable[[int],
 
     def call(i: int) -> object:
         if targets.task == "pose":
-            return ik(model, P[i], None, home, orientation=R[i], method=method)
+            return ik(model, P[i], None, home, orientation=R[i], method=method)  # type: ignore[arg-type]
         p = float(pitch[i]) if targets.task == "position+pitch" else None
-        return ik(model, P[i], p, home, method=method)
+        return ik(model, P[i], p, home, method=method)  # type: ignore[arg-type]
 
     return call
 
@@ -163,7 +158,7 @@ def _score_batch(model: ArmModel, targets: Targets, repeats: int) -> MethodScore
     def run(k: slice) -> IKBatchResult:
         angle = None if pitch is None else pitch[k]
         R = T[k, :3, :3] if pose else None
-        return solve_batch(model, T[k, :3, 3], angle, R, model.home, 1e-5, math.radians(0.01))
+        return ik_batch(model, T[k, :3, 3], angle, model.home, orientations=R, method="lm")
 
     run(slice(0, 10))  # numpy's first calls (lapack, einsum) are slow, once per process
     per = math.inf
