@@ -17,6 +17,7 @@ Reason = Literal[
     "pitch",
     "no_convergence",
     "table",
+    "collision",
     "discontinuous",
     "unreachable",
 ]
@@ -27,6 +28,7 @@ Reason = Literal[
 - ``"off_plane"``: outside the plane of a planar arm; ``"pitch"``: not at that pitch.
 - ``"no_convergence"``: a numeric solver stopped without meeting its tolerance.
 - ``"table"``: the pose or path puts the arm into the table.
+- ``"collision"``: the pose or path puts a link (or the held object) into an object of the scene.
 - ``"discontinuous"``: a path's joint angles jump between two neighbouring points.
 - ``"unreachable"``: none of the above is known (a path planner's fallback).
 """
@@ -34,12 +36,6 @@ Reason = Literal[
 
 class ArmkitError(Exception):
     """Base class of every error armkit raises on purpose."""
-
-
-class InputError(ArmkitError, ValueError):
-    """A value passed in is malformed or out of range (shape, NaN, unknown name).
-
-    Also a ``ValueError``, so code that catches that keeps working."""
 
 
 class ModelError(ArmkitError):
@@ -81,7 +77,8 @@ class ScriptError(ArmkitError):
 class InputError(ArmkitError, ValueError):
     """A value someone gave (an argument, an option, a parameter) is not allowed:
     not a number, out of its range, or the wrong count. The message names the
-    argument, what is allowed and what was given, in the units it was given in."""
+    argument, what is allowed and what was given, in the units it was given in.
+    Also a ``ValueError``, so code that catches that keeps working."""
 
 
 class ReplyError(DeviceError, ValueError):

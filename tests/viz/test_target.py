@@ -37,7 +37,7 @@ def test_table_clearance_ignores_the_base_column_and_sees_a_raised_table() -> No
     assert table_clearance(OMX, OMX.home) is None
     from dataclasses import replace
 
-    raised = replace(OMX, table_z=0.3, _cache={})
+    raised = replace(OMX, table_z=0.3)
     assert "table" in (table_clearance(raised, OMX.home) or "")
 
 

@@ -12,7 +12,7 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from .._errors import ArmkitError
+from .._errors import ArmkitError, InputError
 from .._files import config_dir
 from ._motion import _open as open_arm
 
@@ -95,7 +95,7 @@ def _run(args: argparse.Namespace) -> int:
     from ..script import check_source, run_checked
 
     if args.repeat < 1:
-        raise ValueError(f"--repeat must be 1 or more, got {args.repeat}")
+        raise InputError(f"--repeat must be 1 or more, got {args.repeat}")
     source, setup = _read(args.file)
     with _open(args, setup, source) as arm:
         result = check_source(
@@ -152,7 +152,7 @@ def _choose(args: argparse.Namespace, what: str, header: Header | None, source: 
         value = str(local) if local.exists() else value
     if option in (DEFAULTS[what], value, Path(value).stem):
         return value
-    raise ValueError(
+    raise InputError(
         f"{source.name}:{header.loc.line}: the script chooses {what} {header.value} but "
         f"--{what} says {option}; drop the option or change the script"
     )

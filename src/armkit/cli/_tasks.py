@@ -9,7 +9,7 @@ import argparse
 import math
 from typing import Any
 
-from .._errors import ArmkitError
+from .._errors import ArmkitError, InputError
 
 EPILOG = (
     "Needs --scene FILE|NAME before the command (see 'armkit scene list'). The whole task "
@@ -116,7 +116,7 @@ def _plan(
     if args.command == "place":
         return tasks.place(arm, scene, args.cube, to, pitch=args.pitch, **options)
     if not (math.isfinite(args.lift) and 0 <= args.lift <= 500):
-        raise ValueError(f"--lift must be 0..500 mm, got {args.lift}")
+        raise InputError(f"--lift must be 0..500 mm, got {args.lift}")
     return tasks.move_item(arm, scene, args.cube, to, lift=args.lift, pitch=args.pitch, **options)
 
 

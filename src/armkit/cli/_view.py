@@ -14,7 +14,7 @@ from typing import Any
 
 import numpy as np
 
-from .._errors import ArmkitError
+from .._errors import ArmkitError, InputError
 
 EPILOG = """\
 The page is served from this computer (no network needed): open the printed URL.
@@ -157,10 +157,10 @@ def _poses(given: list[list[float]] | None, model: Any) -> list[Any]:
     for angles in given or []:
         if len(angles) != model.dof or not all(math.isfinite(a) for a in angles):
             names = ", ".join(model.joint_names)
-            raise ValueError(f"--pose needs {model.dof} angles in degrees ({names}), got {angles}")
+            raise InputError(f"--pose needs {model.dof} angles in degrees ({names}), got {angles}")
         q = np.radians(angles)
         if not model.within_limits(q):
-            raise ValueError(
+            raise InputError(
                 f"--pose {angles} deg is outside {model.name}'s joint limits; see 'armkit show'"
             )
         poses.append(q)
@@ -170,26 +170,26 @@ def _poses(given: list[list[float]] | None, model: Any) -> list[Any]:
 def _target(args: argparse.Namespace) -> tuple[Any, float | None] | None:
     if args.target is None:
         if args.pitch is not None:
-            raise ValueError("--pitch needs --target X Y Z [mm]")
+            raise InputError("--pitch needs --target X Y Z [mm]")
         return None
     if not all(math.isfinite(v) for v in args.target):
-        raise ValueError(f"--target must be 3 finite numbers [mm], got {args.target}")
+        raise InputError(f"--target must be 3 finite numbers [mm], got {args.target}")
     return np.array(args.target) / 1000.0, args.pitch
 
 
 def _outputs(args: argparse.Namespace) -> list[Path]:
     """Every output file checked before anything moves: suffix, folder, writable."""
     if not 1 <= args.rate <= 240:
-        raise ValueError(f"--rate must be 1..240 Hz, got {args.rate}")
+        raise InputError(f"--rate must be 1..240 Hz, got {args.rate}")
     if not 0 <= args.http_port <= 65535:
-        raise ValueError(f"--port must be 0..65535, got {args.http_port}")
+        raise InputError(f"--port must be 0..65535, got {args.http_port}")
     if args.screenshot and args.gif:
-        raise ValueError("give --screenshot or --gif, not both")
+        raise InputError("give --screenshot or --gif, not both")
     w, h = args.size
     if not (64 <= w <= 4096 and 64 <= h <= 4096):
-        raise ValueError(f"--size must be 64..4096 px each, got {w} {h}")
+        raise InputError(f"--size must be 64..4096 px each, got {w} {h}")
     if not 1 <= args.fps <= 60:
-        raise ValueError(f"--fps must be 1..60, got {args.fps}")
+        raise InputError(f"--fps must be 1..60, got {args.fps}")
     out = []
     for given, suffix, flag in (
         (args.screenshot, ".png", "--screenshot"),
@@ -203,16 +203,16 @@ def _outputs(args: argparse.Namespace) -> list[Path]:
 def check_output(path: Path, suffix: str, flag: str) -> Path:
     """``path`` if it can be written as a ``suffix`` file, else ValueError saying why."""
     if path.suffix.lower() != suffix:
-        raise ValueError(f"{flag} {path}: the file name must end in {suffix}")
+        raise InputError(f"{flag} {path}: the file name must end in {suffix}")
     folder = path.parent if str(path.parent) else Path(".")
     if not folder.is_dir():
-        raise ValueError(f"{flag} {path}: folder {folder} does not exist; create it first")
+        raise InputError(f"{flag} {path}: folder {folder} does not exist; create it first")
     if (
         path.is_dir()
         or not os.access(folder, os.W_OK)
         or (path.exists() and not os.access(path, os.W_OK))
     ):
-        raise ValueError(f"{flag} {path}: cannot write there; choose another file")
+        raise InputError(f"{flag} {path}: cannot write there; choose another file")
     return path
 
 

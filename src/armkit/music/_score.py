@@ -10,7 +10,7 @@ import math
 import re
 from dataclasses import dataclass, replace
 
-from .._errors import ArmkitError
+from .._errors import ArmkitError, InputError
 
 NAMES = ("C", "C#", "D", "D#", "E", "F", "F#", "G", "G#", "A", "A#", "B")
 _STEPS = {"C": 0, "D": 2, "E": 4, "F": 5, "G": 7, "A": 9, "B": 11}
@@ -95,7 +95,7 @@ class Score:
         """The piece played ``factor`` times as fast (2.0 = twice the tempo): every
         onset and length divided by ``factor``. ValueError unless 0.1 <= factor <= 10."""
         if not (math.isfinite(factor) and 0.1 <= factor <= 10.0):
-            raise ValueError(f"tempo factor must be 0.1..10 (1 = as written), got {factor}")
+            raise InputError(f"tempo factor must be 0.1..10 (1 = as written), got {factor}")
         return Score(
             tuple(
                 replace(n, onset=n.onset / factor, duration=n.duration / factor) for n in self.notes

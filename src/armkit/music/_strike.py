@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from .._errors import InputError
 from ..kinematics import fk, ik, pitch_of
 from ..model import ArmModel
 from ._predict import JointProfile
@@ -60,20 +61,20 @@ class StrikeParams:
 
     def __post_init__(self) -> None:
         if not 0.0 < self.min_hover <= self.hover <= 0.5:
-            raise ValueError(
+            raise InputError(
                 f"hover heights need 0 < min_hover <= hover <= 500 mm, got {self.min_hover}, {self.hover} m"
             )
         if not 0.0 < self.depth <= 0.05 or self.levels < 1:
-            raise ValueError(
+            raise InputError(
                 f"depth must be 0..50 mm and levels >= 1, got {self.depth} m, {self.levels}"
             )
         for name in ("soft", "loud", "travel_speed"):
             if not 0.0 < getattr(self, name) <= 1.0:
-                raise ValueError(
+                raise InputError(
                     f"{name} is a fraction of the maximum speed in (0, 1], got {getattr(self, name)}"
                 )
         if self.settle < 0 or self.rebound_delay < 0 or self.clearance < 0:
-            raise ValueError("settle, rebound_delay and clearance must be >= 0")
+            raise InputError("settle, rebound_delay and clearance must be >= 0")
 
     def heights(self, velocity: int) -> F64:
         """Hover heights to try [m] for a MIDI ``velocity`` 1..127, highest first,

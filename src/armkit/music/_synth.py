@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import ArmkitError
+from .._errors import ArmkitError, InputError
 from ._onsets import Contact
 
 F64 = NDArray[np.float64]
@@ -56,7 +56,7 @@ def render(contacts: Sequence[Contact], rate: int = RATE, decay: float = 0.4, se
     time, loudness ``min(speed / 0.5 m/s, 1)``, bars ringing with time constant
     ``decay`` [s], drums as a short pitched noise burst (seeded, so repeatable)."""
     if rate < 8000 or not 0.01 <= decay <= 5.0:
-        raise ValueError(f"rate must be >= 8000 Hz and decay 0.01..5 s, got {rate}, {decay}")
+        raise InputError(f"rate must be >= 8000 Hz and decay 0.01..5 s, got {rate}, {decay}")
     end = max((c.time for c in contacts), default=0.0) + 4.0 * decay + 0.2
     out = np.zeros(round(end * rate) + 1)
     rng = np.random.default_rng(seed)

@@ -7,6 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from .._errors import InputError
+
 F64 = NDArray[np.float64]
 NOTE_NAMES = ("C", "C#", "D", "D#", "E", "F", "F#", "G", "G#", "A", "A#", "B")
 
@@ -48,7 +50,7 @@ class Xylophone:
         """
         if note not in self.notes:
             lo, hi = note_name(self.notes[0]), note_name(self.notes[-1])
-            raise ValueError(
+            raise InputError(
                 f"{self.name} has no note {note} ({note_name(note)}); it plays {lo}..{hi} "
                 f"(MIDI {self.notes[0]}..{self.notes[-1]})"
             )

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from .._errors import InputError
 from ._rotations import face_up, pose, rot_z, yaw_and_face
 
 F64 = NDArray[np.float64]
@@ -53,7 +54,7 @@ class Board:
             ValueError: the row or column is outside the grid.
         """
         if not (0 <= row < self.rows and 0 <= col < self.cols):
-            raise ValueError(
+            raise InputError(
                 f"board {self.name!r} has sockets rows 0..{self.rows - 1}, "
                 f"cols 0..{self.cols - 1}; got ({row}, {col})"
             )

@@ -8,6 +8,7 @@ from typing import Any
 
 import numpy as np
 
+from .._errors import InputError
 from ..kinematics import fk_frames
 from ..model import ArmModel
 from ._instruments import Drum, Xylophone
@@ -27,12 +28,12 @@ def check_output(path: Path) -> None:
     import os
 
     if path.suffix.lower() not in FORMATS:
-        raise ValueError(f"picture {path}: give a file ending in {', '.join(FORMATS)}")
+        raise InputError(f"picture {path}: give a file ending in {', '.join(FORMATS)}")
     folder = path.parent if str(path.parent) else Path(".")
     if not folder.is_dir():
-        raise ValueError(f"picture {path}: folder {folder} does not exist")
+        raise InputError(f"picture {path}: folder {folder} does not exist")
     if not os.access(folder, os.W_OK) or (path.exists() and not os.access(path, os.W_OK)):
-        raise ValueError(f"picture {path}: cannot write there")
+        raise InputError(f"picture {path}: cannot write there")
 
 
 def top_view(scene: Scene, path: Path, model: ArmModel | None = None) -> None:
@@ -43,7 +44,7 @@ def top_view(scene: Scene, path: Path, model: ArmModel | None = None) -> None:
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
-        raise ValueError("the picture needs matplotlib: pip install 'armkit[plot]'") from None
+        raise InputError("the picture needs matplotlib: pip install 'armkit[plot]'") from None
     fig, ax = plt.subplots(figsize=(7, 7))
     try:
         _draw(ax, scene, model)

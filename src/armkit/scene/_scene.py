@@ -10,6 +10,7 @@ from typing import TypeVar
 import numpy as np
 from numpy.typing import NDArray
 
+from .._errors import InputError
 from ._instruments import Instrument
 from ._objects import Board, Container, Cube, Pen, PenStand, Place
 from ._surfaces import Sheet
@@ -113,4 +114,4 @@ def _find(items: tuple[_Named, ...], name: str, kind: str, scene: str) -> _Named
         if item.name == name:
             return item
     known = ", ".join(i.name for i in items) or "none"
-    raise ValueError(f"scene {scene!r} has no {kind} {name!r}; its {kind}s: {known}")
+    raise InputError(f"scene {scene!r} has no {kind} {name!r}; its {kind}s: {known}")

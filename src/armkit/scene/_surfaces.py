@@ -7,6 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .._errors import InputError
+
 F64 = NDArray[np.float64]
 
 # ISO 216 sizes, portrait (width, height) [m].
@@ -55,7 +57,7 @@ class Sheet:
         """
         a = np.asarray(uv, dtype=np.float64)
         if a.ndim != 2 or a.shape[1] != 2 or not np.all(np.isfinite(a)):
-            raise ValueError(f"uv must be finite, shape (N, 2), got shape {a.shape}")
+            raise InputError(f"uv must be finite, shape (N, 2), got shape {a.shape}")
         world: F64 = self.origin + a[:, :1] * self.u + a[:, 1:] * self.v
         return world
 

@@ -45,7 +45,7 @@ class Shell:
     def prompt(self) -> str:
         """``armkit x 180 y 0 z 80 p -90> ``: where the gripper is [mm, deg]."""
         x, y, z, pitch = self.session.arm.position()
-        return f"armkit x {x:.0f} y {y:.0f} z {z:.0f} p {pitch:.0f}> "
+        return f"armkit x {round(x)} y {round(y)} z {round(z)} p {round(pitch)}> "
 
     def loop(self) -> int:
         """Read, check, run, until ``quit`` or end of input."""

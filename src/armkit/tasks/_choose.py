@@ -8,6 +8,7 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
+from .._errors import InputError
 from ._grasping import SIDE, TOP, how, pick, place, side_shift
 from ._plan import TaskError
 from ._state import Context, State
@@ -93,7 +94,7 @@ def rotate(ctx: Context, st: State, name: str, direction: str) -> State:
     backward = pick from the top, put down from the side. The grasp point is
     chosen so that the side grasp is shifted up clear of the holders."""
     if direction not in ("forward", "backward"):
-        raise ValueError(f"direction must be 'forward' or 'backward', got {direction!r}")
+        raise InputError(f"direction must be 'forward' or 'backward', got {direction!r}")
     cube = st.scene.cube(name)
     shift = side_shift(ctx, st, cube)
     first, second = (SIDE, TOP) if direction == "forward" else (TOP, SIDE)

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .._errors import InputError
 from ..kinematics import fk
 from ..scene import Cube, Scene
 from ._calibration import Calibration, calibration_for
@@ -55,7 +56,7 @@ def plan_task(
         ValueError: a bad argument.
     """
     if not (math.isfinite(clearance) and 30.0 <= clearance <= 500.0):
-        raise ValueError(f"clearance must be 30..500 mm (001: at least 30), got {clearance}")
+        raise InputError(f"clearance must be 30..500 mm (001: at least 30), got {clearance}")
     if isinstance(calibration, Calibration):
         cal = calibration
     else:
@@ -88,7 +89,7 @@ def _deg(pitch: float | None) -> float | None:
     if pitch is None:
         return None
     if not (math.isfinite(pitch) and -90.0 <= pitch <= 90.0):
-        raise ValueError(f"pitch must be -90..90 deg, got {pitch}")
+        raise InputError(f"pitch must be -90..90 deg, got {pitch}")
     return math.radians(pitch)
 
 
@@ -218,7 +219,7 @@ def stack(
     higher than the last."""
     names = list(cubes)
     if len(names) < 2 or len(set(names)) != len(names):
-        raise ValueError(f"stack needs two or more different cubes, got {names}")
+        raise InputError(f"stack needs two or more different cubes, got {names}")
 
     def body(c: Context, s: State) -> State:
         for name in names if rotate_first else ():

@@ -10,6 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from .._errors import InputError
 from ..scene import Scene
 
 F64 = NDArray[np.float64]
@@ -36,7 +37,7 @@ def resolve(scene: Scene, to: str | Sequence[float]) -> Target:
     if not isinstance(to, str):
         p = np.asarray(to, dtype=np.float64)
         if p.shape != (3,) or not np.all(np.isfinite(p)) or np.any(np.abs(p) > 10_000):
-            raise ValueError(f"a target point is 3 finite coordinates in mm, got {to!r}")
+            raise InputError(f"a target point is 3 finite coordinates in mm, got {to!r}")
         return Target(p / 1000.0, "at ({:.1f}, {:.1f}, {:.1f}) mm".format(*p))
     socket = _SOCKET.match(to)
     if socket:
@@ -52,7 +53,7 @@ def resolve(scene: Scene, to: str | Sequence[float]) -> Target:
     for box in scene.containers:
         if box.name == to:
             return Target(np.array([*box.position[:2], box.floor_z]), f"in {to}")
-    raise ValueError(
+    raise InputError(
         f"scene {scene.name!r} has no place, cube or container {to!r} "
         f"(and it is not board[row, col]); it has: {', '.join(scene.names()) or 'nothing'}"
     )

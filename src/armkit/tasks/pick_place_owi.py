@@ -11,6 +11,7 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .._errors import InputError
 from ..arm import Arm
 from ..drivers.timed import TimedDriver
 from ..model import ArmModel
@@ -41,7 +42,7 @@ def pick_place(
     arm = Arm(model, driver)
     lift = lift_m * 1000.0
     if not 30.0 <= lift <= 500.0:
-        raise ValueError(f"lift must be 30..500 mm (001: at least 30 above A and B), got {lift:g}")
+        raise InputError(f"lift must be 30..500 mm (001: at least 30 above A and B), got {lift:g}")
     plan = move_item(
         arm, Scene("table"), tuple(a), tuple(b), lift=lift, clearance=lift, dry_run=True
     )

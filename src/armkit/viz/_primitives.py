@@ -15,6 +15,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .._errors import InputError
+
 F64 = NDArray[np.float64]
 RGB = tuple[int, int, int]
 
@@ -171,7 +173,7 @@ def segment_frame(p0: ArrayLike, p1: ArrayLike) -> tuple[F64, float]:
 def _vec3(value: ArrayLike, what: str) -> F64:
     v = np.asarray(value, dtype=np.float64)
     if v.shape != (3,) or not np.all(np.isfinite(v)):
-        raise ValueError(f"{what} must be 3 finite numbers [m], got {value!r}")
+        raise InputError(f"{what} must be 3 finite numbers [m], got {value!r}")
     return v
 
 
@@ -180,5 +182,5 @@ def _array(value: ArrayLike, shape: tuple[int, ...], what: str) -> F64:
     a = np.asarray(value, dtype=np.float64)
     ok = a.ndim == len(shape) and all(w in (-1, n) for w, n in zip(shape, a.shape, strict=True))
     if not ok or not np.all(np.isfinite(a)):
-        raise ValueError(f"{what} must be finite numbers of shape {shape}, got {value!r}")
+        raise InputError(f"{what} must be finite numbers of shape {shape}, got {value!r}")
     return a

@@ -15,6 +15,7 @@ from typing import Protocol, runtime_checkable
 import numpy as np
 from numpy.typing import NDArray
 
+from .._errors import InputError
 from ..drivers._driver import Driver
 from ..model import ArmModel
 
@@ -93,7 +94,7 @@ class DriverSource:
         """The driver's joint angles now (``t`` other than None is refused: a live
         driver has no history)."""
         if t is not None:
-            raise ValueError("a driver can only be read now; give t=None")
+            raise InputError("a driver can only be read now; give t=None")
         q = np.asarray(self.driver.read(), dtype=np.float64)
         width = getattr(self.driver, "grip_width", None)
         grip = float(width) if isinstance(width, float) else self._grip

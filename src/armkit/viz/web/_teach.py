@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from ..._errors import InputError
 from ...arm import Arm, Position
 from ...kinematics import fk
 from .._mover import Goal, Mover
@@ -74,7 +75,7 @@ class Teach:
     def record(self, name: str) -> TaughtPose:
         """Keep the arm's pose now under ``name`` (letters, digits, _ and -)."""
         if not NAME.match(name):
-            raise ValueError(
+            raise InputError(
                 f"pose name {name!r}: use letters, digits, _ and -, starting with a letter"
             )
         state = self.view.source.state()

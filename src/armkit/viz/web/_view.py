@@ -20,7 +20,7 @@ import numpy as np
 import viser
 from numpy.typing import ArrayLike, NDArray
 
-from ..._errors import ArmkitError
+from ..._errors import ArmkitError, InputError
 from .._arm_shapes import TRAIL_COLOUR, arm_primitives, reach_of, table_primitive
 from .._primitives import Label, Polyline, Primitive, Sphere
 from .._state import ArmState, StateSource
@@ -67,7 +67,7 @@ class View:
         trail: int = 600,
     ) -> None:
         if not 0 < rate_hz <= 1000:
-            raise ValueError(f"rate must be in (0, 1000] Hz, got {rate_hz}")
+            raise InputError(f"rate must be in (0, 1000] Hz, got {rate_hz}")
         self.source = source
         self.model = source.model
         self.rate_hz = rate_hz
@@ -220,7 +220,7 @@ class View:
 
 def _serve(host: str, port: int) -> viser.ViserServer:
     if not 0 <= port <= 65535:
-        raise ValueError(f"port must be 0..65535, got {port}")
+        raise InputError(f"port must be 0..65535, got {port}")
     try:
         with contextlib.redirect_stdout(io.StringIO()):  # viser's banner: we print our own URL
             return viser.ViserServer(host=host, port=port, verbose=False)
