@@ -155,9 +155,8 @@ def run(line: str, scratch: Path) -> tuple[int, str]:
     if words[0] == "armkit":
         out = io.StringIO()
         typed = io.StringIO("where\nquit\n")  # what a person types into `armkit shell`
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
-            with _stdin(typed):
-                code = main(words[1:])
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out), _stdin(typed):
+            code = main(words[1:])
         return code, out.getvalue()
     env = dict(os.environ, PATH=f"{ROOT / '.venv' / 'bin'}{os.pathsep}{os.environ['PATH']}")
     done = subprocess.run(
