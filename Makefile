@@ -36,6 +36,9 @@ bench: $(DEVSTAMP)
 	$(BIN)/python benchmarks/bus.py
 	$(BIN)/python benchmarks/owi_drift.py
 	$(BIN)/python benchmarks/sim.py
+	$(BIN)/python benchmarks/view.py
+	$(BIN)/python benchmarks/shell.py
+	$(BIN)/python benchmarks/drawing.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info src/*.egg-info .pytest_cache .mypy_cache .ruff_cache

@@ -218,8 +218,8 @@ def _spec(model, targets, task: str, repeats: int) -> dict:  # type: ignore[no-u
 
 def _armkit_runs(model, targets, repeats: int) -> dict:  # type: ignore[no-untyped-def]
     """armkit's rows: {name: (q (N, dof), seconds (N,), iterations (N,))}."""
-    from armkit.kinematics._compare import _one_call, applicable_methods
-    from armkit.kinematics._numeric import solve_batch
+    from armkit.cli._compare_methods import _one_call, applicable_methods
+    from armkit.kinematics import ik_batch
 
     runs = {}
     for method in ("analytic", "lm"):
@@ -229,19 +229,18 @@ def _armkit_runs(model, targets, repeats: int) -> dict:  # type: ignore[no-untyp
         runs[f"armkit {method}"] = _time_calls(call, len(targets.q), model.dof, repeats)
     R = targets.T[:, :3, :3] if targets.task == "pose" else None
     P = targets.T[:, :3, 3]
-    solve_batch(
+    ik_batch(
         model,
         P[:WARMUP],
         None,
-        None if R is None else R[:WARMUP],
         model.home,
-        1e-5,
-        math.radians(0.01),
+        orientations=None if R is None else R[:WARMUP],
+        method="lm",
     )
     per = math.inf
     for _ in range(repeats):
         t0 = time.perf_counter()
-        out = solve_batch(model, P, None, R, model.home, 1e-5, math.radians(0.01))
+        out = ik_batch(model, P, None, model.home, orientations=R, method="lm")
         per = min(per, (time.perf_counter() - t0) / len(P))
     runs["armkit lm batch (per target)"] = (out.q, np.full(len(P), per), np.full(len(P), np.nan))
     return runs
@@ -268,8 +267,8 @@ def _time_calls(call, n: int, dof: int, repeats: int) -> tuple:  # type: ignore[
 
 
 def _row(model, targets, name: str, q, secs, its, import_s: float) -> list[str]:  # type: ignore[no-untyped-def]
+    from armkit.cli._compare_methods import verified
     from armkit.kinematics import fk
-    from armkit.kinematics._compare import verified
 
     q = np.asarray(q, dtype=float)
     ok = verified(model, targets, q)
@@ -322,8 +321,8 @@ def main() -> int:
 
 def _arm_table(python: Path, model, n: int, seed: int, repeats: int, imports: dict) -> str:  # type: ignore[no-untyped-def]
     """The table of one arm: armkit's rows, then the peers', all verified by armkit's FK."""
+    from armkit.cli._compare_methods import reachable_targets
     from armkit.cli._table import table
-    from armkit.kinematics._compare import reachable_targets
 
     targets = reachable_targets(model, n, seed, ARM_TASKS[model.name])
     runs = _armkit_runs(model, targets, repeats)

@@ -3,8 +3,11 @@
 Run:  .venv/bin/python benchmarks/kinematics.py [--n 1000] [--batch 100000] [--seed 0]
 
 Targets are FK of random joint vectors inside the limits (fixed seed), with the
-pitch of that pose (none for planar2). "ok %" = solved, within 1 mm and inside
-the limits (checked by FK). Times are medians over targets, each timed over
+pitch of that pose (none for planar2); the "position only" rows give no pitch
+(the solver picks the one nearest the home pose's that fits). "ok %" = solved,
+within 1 mm (and the pitch within 0.01 deg where one was given) and inside
+the limits (checked by FK). Only the public API is used, so the same script
+times any version of armkit (PYTHONPATH=old/src). Times are medians over targets, each timed over
 repeated calls; batch times are the best of 3 runs divided by N. Quoted peer
 numbers (peers.md, same kind of machine) are printed for scale below the table;
 benchmarks/ik_peers.py measures the peers side by side in one run.
@@ -21,9 +24,9 @@ from collections.abc import Callable
 import numpy as np
 
 from armkit import fk, ik, ik_batch, load_model, pitch_of
-from armkit.kinematics._family import family_of
 
 ARMS = ["owi535", "openmanipulator_x", "lynx6", "planar2"]
+POSITION_ONLY = ["openmanipulator_x", "lynx6"]
 PEERS = """for scale (../shared/reference/peers.md, a 2-core machine like this one, OpenManipulator-X):
   RTB DHRobot.fkine (Python) 37 us/call; RTB C++ ets().eval 4.7 us/call, 0.5-0.75 us/pose batched
   ikpy forward_kinematics 15-17 us; RTB C++ ik_LM 18 us median; a plain-Python closed form 4.8 us"""
@@ -46,14 +49,13 @@ def best_of(fn: Callable[[], object], runs: int = 3) -> float:
     return min(times)
 
 
-def measure(name: str, n: int, batch: int, seed: int) -> list[str]:
+def measure(name: str, n: int, batch: int, seed: int, position_only: bool = False) -> list[str]:
     m = load_model(name)
     rng = np.random.default_rng(seed)
     q = rng.uniform(m.lower, m.upper, (max(n, batch), m.dof))
     T = fk(m, q)
     P = T[:, :3, 3]
-    fam = family_of(m)
-    free = fam is not None and len(fam.planar) == 2  # planar2: the pitch follows from the position
+    free = m.dof == 2 or position_only  # planar2: the pitch follows from the position
     pitch = None if free else np.asarray(pitch_of(T))
     targets = [(tuple(P[i].tolist()), None if pitch is None else float(pitch[i])) for i in range(n)]
     fk_us = statistics.median(per_call(lambda i=i: fk(m, q[i])) for i in range(min(n, 300))) * 1e6
@@ -66,9 +68,9 @@ def measure(name: str, n: int, batch: int, seed: int) -> list[str]:
     )
     ok = verify(m, targets)
     return [
-        name,
-        f"{fk_us:.2f}",
-        f"{fk_ns:.0f}",
+        f"{name}, position only" if position_only else name,
+        "-" if position_only else f"{fk_us:.2f}",
+        "-" if position_only else f"{fk_ns:.0f}",
         f"{ik_us:.2f}",
         f"{ikb_ns:.0f}",
         f"{1e9 / ikb_ns / 1e6:.2f}",
@@ -110,6 +112,7 @@ def main() -> None:
         "ok %",
     ]
     rows = [measure(name, args.n, args.batch, args.seed) for name in ARMS]
+    rows += [measure(name, args.n, args.batch, args.seed, True) for name in POSITION_ONLY]
     widths = [max(len(h), *(len(r[i]) for r in rows)) for i, h in enumerate(headers)]
     print("  ".join(h.rjust(w) for h, w in zip(headers, widths, strict=True)))
     for r in rows:

@@ -1,9 +1,11 @@
 """The floors of the house, read from the code's own imports (every import statement,
 those inside functions and under TYPE_CHECKING included).
 
-drivers never import sim; sim never imports drivers, motion, Arm, the factory or the
-CLI; devices import neither; one factory (``armkit.connect``) is the only place that
-imports both drivers and sim; the pure floors (model, kinematics) import nothing above.
+drivers never import sim; sim never imports drivers, motion, Arm, the factory, the CLI
+or the packages above (tasks, script, viz, music, drawing); devices import neither; one
+factory (``armkit.connect``) is the only place that imports both drivers and sim; the
+pure floors (model, kinematics, scene, music, drawing) import nothing above, and the
+packages above reach the simulator through Arm and the factory.
 """
 
 from __future__ import annotations
@@ -79,6 +81,23 @@ def test_the_import_reader_sees_relative_and_nested_imports() -> None:
         ("armkit.kinematics", "armkit.drivers"),
         ("armkit.kinematics", "armkit.sim"),
         ("armkit.motion", "armkit.sim"),
+        # the packages above the stack reach the simulator through Arm and the factory
+        ("armkit.sim", "armkit.tasks"),
+        ("armkit.sim", "armkit.script"),
+        ("armkit.sim", "armkit.viz"),
+        ("armkit.sim", "armkit.music"),
+        ("armkit.sim", "armkit.drawing"),
+        ("armkit.scene", "armkit.sim"),  # ScenePhysics is a World observer by protocol
+        ("armkit.scene", "armkit.drivers"),
+        ("armkit.scene", "armkit.arm"),
+        ("armkit.scene", "armkit.tasks"),
+        ("armkit.tasks", "armkit.sim"),
+        ("armkit.script", "armkit.sim"),
+        ("armkit.viz", "armkit.sim"),
+        ("armkit.music", "armkit.sim"),
+        ("armkit.music", "armkit.drivers"),
+        ("armkit.drawing", "armkit.sim"),
+        ("armkit.drawing", "armkit.drivers"),
     ],
 )
 def test_a_floor_does_not_import_what_stands_above_or_beside_it(floor: str, forbidden: str) -> None:

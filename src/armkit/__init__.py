@@ -5,15 +5,18 @@ The core is SI (metres, radians); ``Arm`` and the CLI speak millimetres and degr
 
 from ._errors import ArmkitError as ArmkitError
 from ._errors import DeviceError as DeviceError
+from ._errors import InputError as InputError
 from ._errors import JointLimitError as JointLimitError
 from ._errors import ModelError as ModelError
 from ._errors import NoSolutionError as NoSolutionError
+from ._errors import Reason as Reason
 from ._errors import ScriptError as ScriptError
 from ._errors import UnreachableError as UnreachableError
 from .arm import Arm as Arm
 from .arm import Position as Position
 from .kinematics import IKBatchResult as IKBatchResult
 from .kinematics import IKResult as IKResult
+from .kinematics import Target as Target
 from .kinematics import fk as fk
 from .kinematics import fk_frames as fk_frames
 from .kinematics import ik as ik

@@ -7,7 +7,31 @@ and what to do.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Literal
+
+Reason = Literal[
+    "too_far",
+    "too_close",
+    "joint_limit",
+    "off_plane",
+    "pitch",
+    "no_convergence",
+    "table",
+    "collision",
+    "discontinuous",
+    "unreachable",
+]
+"""Why a target or path cannot be reached (``UnreachableError.reason``):
+
+- ``"too_far"``: beyond the links' reach; ``"too_close"``: inside the links' inner reach.
+- ``"joint_limit"``: reachable only with a joint outside its limits (the message names it).
+- ``"off_plane"``: outside the plane of a planar arm; ``"pitch"``: not at that pitch.
+- ``"no_convergence"``: a numeric solver stopped without meeting its tolerance.
+- ``"table"``: the pose or path puts the arm into the table.
+- ``"collision"``: the pose or path puts a link (or the held object) into an object of the scene.
+- ``"discontinuous"``: a path's joint angles jump between two neighbouring points.
+- ``"unreachable"``: none of the above is known (a path planner's fallback).
+"""
 
 
 class ArmkitError(Exception):
@@ -22,14 +46,15 @@ class UnreachableError(ArmkitError):
     """No joint angles put the tool at the target within the joint limits.
 
     Attributes:
-        reason: one of ``"too_far"``, ``"too_close"``, ``"joint_limit"``,
-            ``"off_plane"``, ``"pitch"``, ``"no_convergence"``.
+        reason: why, a ``Reason`` (see there).
         closest: the closest joint vector found [rad], shape (dof,), or None.
     """
 
-    def __init__(self, message: str, *, reason: str = "", closest: Any = None) -> None:
+    def __init__(
+        self, message: str, *, reason: Reason = "unreachable", closest: Any = None
+    ) -> None:
         super().__init__(message)
-        self.reason = reason
+        self.reason: Reason = reason
         self.closest = closest
 
 
@@ -47,3 +72,15 @@ class DeviceError(ArmkitError):
 
 class ScriptError(ArmkitError):
     """A command-language script is wrong."""
+
+
+class InputError(ArmkitError, ValueError):
+    """A value someone gave (an argument, an option, a parameter) is not allowed:
+    not a number, out of its range, or the wrong count. The message names the
+    argument, what is allowed and what was given, in the units it was given in.
+    Also a ``ValueError``, so code that catches that keeps working."""
+
+
+class ReplyError(DeviceError, ValueError):
+    """A device answered something that cannot be: a reply of the wrong length or an
+    impossible value (a bus fault, a wrong baud rate, another device on the port)."""

@@ -17,11 +17,12 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._errors import DeviceError
+from ._errors import DeviceError, InputError, UnreachableError
 from .connect import World, open_driver, world_of
 from .drivers._driver import Driver
 from .kinematics import fk, ik, pitch_of
 from .model import ArmModel, load_model
+from .model._limits import MAX_MOVE_S as MAX_MOVE_S
 from .model._limits import check_grip, check_joints, move_time
 from .motion import (
     JointPath,
@@ -34,6 +35,7 @@ from .motion import (
     plan_path,
     retreat,
 )
+from .scene import Scene, check_clear, joint_sweep
 
 F64 = NDArray[np.float64]
 REACHED = math.radians(0.2)  # a move with a timeout is done when every joint is this close
@@ -64,6 +66,8 @@ class Arm:
         driver: a driver name (``"sim"``, ``"ssc32"``, ...) or an open ``Driver``.
         port: the driver's port (see ``armkit.connect.open_driver``).
         world: the simulation world to put a simulated arm in (None: a new one).
+        scene: what is on the table (``armkit.scene.load_scene``); every move is
+            checked against it, and against the table plane even without one.
     """
 
     def __init__(
@@ -73,7 +77,9 @@ class Arm:
         port: str | None = None,
         *,
         world: World | None = None,
+        scene: Scene | None = None,
     ) -> None:
+        self.scene = scene
         self.model = model if isinstance(model, ArmModel) else load_model(model)
         if isinstance(driver, str):
             self.driver = open_driver(self.model, driver, port, world=world)
@@ -110,9 +116,10 @@ class Arm:
         Raises:
             UnreachableError: the point (and pitch) is out of reach or the joint limits.
         """
-        pitch_rad = None if pitch is None else math.radians(pitch)
-        q = ik(self._kin, np.array([x, y, z]) / 1000.0, pitch_rad, self.driver.read()).q
-        self._move(q, _Timing(speed, duration, wait, timeout))
+        pitch_rad = None if pitch is None else math.radians(_number(pitch, "pitch [deg]"))
+        target = _numbers([x, y, z], "x, y, z [mm]") / 1000.0
+        q = ik(self._kin, target, pitch_rad, self.driver.read()).q
+        self._move(q, _timing(speed, duration, wait, timeout))
 
     def move_joints(
         self,
@@ -125,7 +132,7 @@ class Arm:
     ) -> None:
         """Move joints to ``angles`` [deg]: one per joint in order, or a dict by name
         (joints not named stay where they are). Options as ``move_to``."""
-        self._move(self._joint_target(angles), _Timing(speed, duration, wait, timeout))
+        self._move(self._joint_target(angles), _timing(speed, duration, wait, timeout))
 
     def turn_to(self, joint: str, deg: float, *, speed: float | None = None) -> None:
         """Turn one joint to ``deg`` [deg]; the others stay."""
@@ -138,8 +145,18 @@ class Arm:
 
     def grip(self, width_mm: float) -> None:
         """Open the gripper to ``width_mm`` [mm] (the grip point moves with it on
-        scissor grippers)."""
-        width = check_grip(self.model, width_mm / 1000.0)
+        scissor grippers). A gripper that is only open or closed (the OWI's) takes
+        its closed or its open width and nothing in between (InputError)."""
+        width = check_grip(self.model, _number(width_mm, "grip width [mm]") / 1000.0)
+        g = self.model.gripper
+        if g.kind == "timed" and not (
+            abs(width - g.width_min) < 1e-12 or abs(width - g.width_max) < 1e-12
+        ):
+            lo, hi = g.width_min * 1000.0, g.width_max * 1000.0
+            raise InputError(
+                f"{self.model.name}'s gripper is only open or closed: grip {lo:g} closes it, "
+                f"grip {hi:g} opens it; got {width * 1000.0:g} mm"
+            )
         kin = self.model.with_grip_width(width)
         self.driver.grip(width)
         self._kin = kin
@@ -165,9 +182,10 @@ class Arm:
         """Draw through ``points_mm`` [mm], shape (N, 3), at ``pitch`` [deg]: the whole
         path is planned and checked first (PathError names the first bad point),
         then the arm moves to its start and ``streamer`` (default timed) runs it."""
-        pts = np.asarray(points_mm, dtype=np.float64) / 1000.0
+        pts = _numbers(points_mm, "points_mm [mm]") / 1000.0
         pitch_rad = None if pitch is None else math.radians(pitch)
         path = plan_path(self._kin, pts, pitch_rad, self.driver.read())
+        self._check_clear(path.q)
         follow(self.driver, self._kin, path, streamer or TimedStreaming(), self.clock)
         return path
 
@@ -208,31 +226,57 @@ class Arm:
             for name, deg in angles.items():
                 q[self.model.joint_index(name)] = deg
         else:
-            q = np.asarray(angles, dtype=np.float64)
+            q = _numbers(angles, "joint angles [deg]", finite=False)
             if q.shape != (self.model.dof,):
                 names = ", ".join(self.model.joint_names)
-                raise ValueError(f"give {self.model.dof} angles ({names}), got {len(q)}")
+                raise InputError(f"give {self.model.dof} angles ({names}), got {q.size}")
         if not np.all(np.isfinite(q)):
-            raise ValueError(f"joint angles must be finite, got {list(q)}")
+            shown = ", ".join(f"{v:g}" for v in q)
+            raise InputError(f"joint angles must be finite numbers of degrees, got {shown}")
         return np.radians(q)
 
     def _move(self, q: F64, timing: _Timing) -> None:
-        """Check limits and timing (the drivers' own rule), then send; with a timeout,
-        poll until there."""
+        """Check limits, timing (the drivers' own rule, and at most ``MAX_MOVE_S``) and
+        clearance, then send; with a timeout, poll until there."""
         goal = check_joints(self.model, q)
+        if timing.timeout is not None and not (
+            math.isfinite(timing.timeout) and timing.timeout > 0
+        ):
+            raise InputError(f"timeout must be a number of seconds > 0, got {timing.timeout:g}")
         move_time(
-            self.model, self.driver.read(), goal, speed=timing.speed, duration=timing.duration
+            self.model,
+            self.driver.read(),
+            goal,
+            speed=timing.speed,
+            duration=timing.duration,
+            longest=MAX_MOVE_S,
         )
+        self._check_clear(goal[None, :])
         wait = timing.wait and timing.timeout is None
-        self.driver.move(q, duration=timing.duration, speed=timing.speed, wait=wait)
+        self.driver.move(goal, duration=timing.duration, speed=timing.speed, wait=wait)
         if timing.wait and timing.timeout is not None:
-            self._wait_until(q, timing.timeout)
+            self._wait_until(goal, timing.timeout)
 
     def _step_through(self, points_m: F64, pitch: float | None) -> None:
         """Plan ``points_m`` [m] (1 mm tolerance between waypoints), then step through them."""
         pitch_rad = None if pitch is None else math.radians(pitch)
         path = plan_path(self._kin, points_m, pitch_rad, self.driver.read(), tolerance=1e-3)
+        self._check_clear(path.q)
         follow(self.driver, self._kin, path, NaiveStepping(), self.clock)
+
+    def _check_clear(self, path: F64) -> None:
+        """Refuse a move from here through ``path`` (K, dof) [rad], sampled in joint
+        space, that puts a link below the table or into the scene's objects."""
+        hit = check_clear(self._kin, path, self.scene)
+        where = "there"
+        if hit is None:
+            hit = check_clear(self._kin, joint_sweep(self.driver.read(), path), self.scene)
+            where = "on the way"
+        if hit is not None:
+            raise UnreachableError(
+                f"move refused: {where}, {hit.describe()}; choose a higher point or another way",
+                reason="table" if hit.object == "table" else "collision",
+            )
 
     def _wait_until(self, q: F64, timeout: float) -> None:
         deadline = self.clock.now() + timeout
@@ -241,3 +285,34 @@ class Arm:
                 self.driver.stop()
                 raise DeviceError(f"the arm did not reach its target within {timeout} s; stopped")
             self.clock.sleep(0.005)
+
+
+def _numbers(values: object, what: str, *, finite: bool = True) -> F64:
+    """``values`` as a float array; InputError naming ``what`` if they are not numbers
+    (or, with ``finite``, not finite: None and NaN included)."""
+    try:
+        a = np.asarray(values, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError(f"{what} must be numbers, got {values!r}") from None
+    if finite and not np.all(np.isfinite(a)):
+        raise InputError(f"{what} must be finite numbers, got {values!r}")
+    return a
+
+
+def _timing(
+    speed: float | None, duration: float | None, wait: bool, timeout: float | None
+) -> _Timing:
+    """The timing options as floats (InputError naming the one that is not a number)."""
+    values = [
+        None if v is None else _number(v, name, finite=False)
+        for v, name in ((speed, "speed"), (duration, "duration [s]"), (timeout, "timeout [s]"))
+    ]
+    return _Timing(values[0], values[1], bool(wait), values[2])
+
+
+def _number(value: object, what: str, *, finite: bool = True) -> float:
+    """``value`` as one float (InputError naming ``what`` otherwise)."""
+    a = _numbers(value, what, finite=finite)
+    if a.shape != ():
+        raise InputError(f"{what} must be one number, got {value!r}")
+    return float(a)

@@ -53,14 +53,17 @@ def test_ik_json_round_trips_through_fk(capsys: pytest.CaptureFixture[str]) -> N
     [
         (["--arm", "nope", "fk", "0"], "unknown arm 'nope'"),
         (["fk", "0", "0", "0"], "needs 4 joint angles"),
-        (["fk", "0", "x", "0", "0"], "invalid float value"),
+        (["fk", "0", "x", "0", "0"], "argument DEG: must be a number of deg, got 'x'"),
         (["ik", "900", "0", "0"], "too far"),
         (["ik", "200", "0"], "the following arguments are required"),
-        (["ik", "200", "0", "nan"], "finite"),
+        (["ik", "200", "0", "nan"], "argument Z: must be -100000..100000 mm, got nan"),
         (["--arm", "planar2", "ik", "500", "100", "500"], "outside the arm's plane"),
         (["ik", "200", "0", "50", "--method", "newton"], "invalid choice: 'newton'"),
         (["--arm", "puma560", "ik", "400", "100", "300", "--method", "analytic"], "use a numeric"),
-        (["--arm", "al5d", "ik", "900", "0", "0", "--method", "lm"], "out of al5d's reach"),
+        (
+            ["--arm", "al5d", "ik", "900", "0", "0", "--method", "lm"],
+            "al5d cannot reach (900.0, 0.0, 0.0) mm: too far",
+        ),
     ],
 )
 def test_bad_input_is_one_line(

@@ -6,6 +6,7 @@ import itertools
 
 import pytest
 
+from armkit import InputError
 from armkit.devices import _xm430 as xm
 
 HARDWARE_MD = {  # name: (address, size), from shared/reference/hardware.md
@@ -58,6 +59,6 @@ def test_encode_refuses_values_that_do_not_fit() -> None:
 
 def test_eeprom_and_unknown_names() -> None:
     assert xm.register("Operating Mode").eeprom and not xm.register("Goal Position").eeprom
-    with pytest.raises(KeyError, match="Goal Position"):
+    with pytest.raises(InputError, match="Goal Position"):
         xm.register("Goal Positon")
     assert xm.describe_hardware_error(0x24) == "overheating, overload"

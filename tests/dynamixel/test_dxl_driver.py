@@ -10,7 +10,7 @@ from collections.abc import Iterator
 import numpy as np
 import pytest
 
-from armkit._errors import DeviceError, JointLimitError
+from armkit._errors import DeviceError, JointLimitError, ModelError
 from armkit.connect import open_driver as open_any
 from armkit.devices.dynamixel import DynamixelBus
 from armkit.drivers._driver import Driver
@@ -182,7 +182,7 @@ def test_port_emu_is_this_driver_on_simulated_servos(model: ArmModel) -> None:
 def test_open_driver_needs_a_port_and_a_dynamixel_model(model: ArmModel) -> None:
     with pytest.raises(DeviceError, match="needs a port"):
         open_driver(model, None)
-    with pytest.raises(DeviceError, match=r"no \[drivers\.dynamixel\]"):
+    with pytest.raises(ModelError, match=r"no \[drivers\.dynamixel\]"):
         open_driver(load_model("lynx6"), "emu")
 
 

@@ -10,8 +10,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from armkit import UnreachableError
-from armkit.kinematics import _analytic, fk, ik, ik_batch, pitch_of
-from armkit.kinematics._family import family_of
+from armkit.kinematics import _closed, fk, ik, ik_batch, pitch_of
+from armkit.kinematics._chain import chain_of
+from armkit.kinematics._pitch_range import free_batch
 from armkit.model import load_model
 
 ARMS = ["owi535", "openmanipulator_x", "lynx6", "planar2"]
@@ -63,19 +64,42 @@ def test_pitch_is_met(name: str) -> None:
     assert np.abs(np.remainder(got - pitch[res.ok] + math.pi, 2 * math.pi) - math.pi).max() < 1e-9
 
 
+def reference(m, p: np.ndarray, pitch: float | None) -> np.ndarray:  # type: ignore[no-untyped-def]
+    """Every solution by the vectorised closed form (the reference), best first."""
+    chain = chain_of(m)
+    fam = chain.family
+    seed = chain.home_a[None, :]
+    if pitch is None and len(fam.planar) == 3:
+        q, ok = free_batch(chain, fam, p[None, :], seed)
+        return q[ok]
+    c = _closed.solve(chain, fam, p[None, :], None if pitch is None else np.array([pitch]), seed)
+    valid = c.q[0][c.valid[0]]
+    order = np.argsort(((valid - seed) ** 2).sum(axis=1), kind="stable")
+    unique: list[np.ndarray] = []
+    for q in valid[order]:
+        if all(np.abs(q - u).max() > 1e-9 for u in unique):
+            unique.append(q)
+    return np.array(unique)
+
+
 @pytest.mark.parametrize("name", ARMS)
-def test_fast_path_agrees_with_reference(name: str) -> None:
-    """The unrolled solver and the readable one return the same solutions."""
+@pytest.mark.parametrize("free", [False, True])
+def test_fast_path_agrees_with_reference(name: str, free: bool) -> None:
+    """The scalar fast path and the vectorised reference return the same solutions."""
     m = load_model(name)
-    fam = family_of(m)
-    assert fam is not None
     _, P, pitch = reachable(name, 300, 4)
     for i in range(len(P)):
-        p = tuple(P[i].tolist())
-        pt = None if pitch is None else float(pitch[i])
-        fast = ik(m, p, pt).solutions
-        ref = np.array(_analytic.solve(m, fam, p, pt, tuple(m.home.tolist())))
-        assert fast.shape == ref.shape and np.allclose(fast, ref, atol=1e-12)
+        pt = None if pitch is None or free else float(pitch[i])
+        if free and name == "owi535":
+            pt = 0.0  # the OWI's default pitch: level
+        try:
+            fast = ik(m, tuple(P[i].tolist()), pt).solutions
+        except UnreachableError:
+            fast = np.zeros((0, m.dof))
+        ref = reference(m, P[i], pt).reshape(-1, m.dof)
+        if free and name not in ("owi535", "planar2"):
+            fast = fast[:1]  # the reference returns the best only
+        assert fast.shape == ref.shape and np.allclose(fast, ref, atol=1e-9)
 
 
 @pytest.mark.parametrize("name", ARMS)

@@ -65,6 +65,44 @@ def test_owi_calcik_is_one_of_armkits_solutions() -> None:
 
 
 # --- 001: the OpenManipulator-X (DH table and the r-z inverse kinematics) -----------------
+# 001 rounds ROBOTIS's geometry (0.077 m, a 0.130 m link at 10.62 deg); the model uses the
+# exact numbers of ROBOTIS's URDF, so the seed's formulas are checked with those.
+D1 = 0.0765  # joint 2 above the base origin [m]
+A2 = math.hypot(0.024, 0.128)  # 0.1302306 m
+OFF = D(90) - math.atan2(0.024, 0.128)  # 90 - 10.6197 deg
+
+
+def robotis_fk(q: np.ndarray) -> np.ndarray:
+    """The tool point [m] by ROBOTIS's URDF (open_manipulator_description/urdf/
+    open_manipulator.urdf.xacro): joint origins and axes, in ROBOTIS's base frame."""
+
+    def trans(x: float, y: float, z: float) -> np.ndarray:
+        T = np.eye(4)
+        T[:3, 3] = x, y, z
+        return T
+
+    def rot(axis: int, a: float) -> np.ndarray:
+        T, c, s = np.eye(4), math.cos(a), math.sin(a)
+        i, j = [(1, 2), (2, 0), (0, 1)][axis]
+        T[i, i], T[i, j], T[j, i], T[j, j] = c, -s, s, c
+        return T
+
+    T = trans(0.012, 0.0, 0.017) @ rot(2, q[0]) @ trans(0.0, 0.0, 0.0595) @ rot(1, q[1])
+    T = T @ trans(0.024, 0.0, 0.128) @ rot(1, q[2]) @ trans(0.124, 0.0, 0.0) @ rot(1, q[3])
+    return T @ trans(0.126, 0.0, 0.0)
+
+
+def test_omx_fk_is_robotis_urdf_to_a_nanometre() -> None:
+    """armkit's origin is on the waist axis: ROBOTIS's x = armkit's x + 0.012 m."""
+    m = load_model("openmanipulator_x")
+    q = RNG.uniform(m.lower, m.upper, (300, 4))
+    for qi in q:
+        ref = robotis_fk(qi)
+        T = fk(m, qi)
+        assert np.abs(T[:3, 3] + [0.012, 0.0, 0.0] - ref[:3, 3]).max() < 1e-9
+        assert np.abs(T[:3, 0] - ref[:3, 0]).max() < 1e-9  # the approach axis
+    home = fk(m, np.zeros(4))[:3, 3]  # the standard pose: 0.024 + 0.124 + 0.126 forward
+    assert np.allclose(home, [0.274, 0.0, 0.0765 + 0.128], atol=1e-12)
 
 
 def mdh(alpha: float, a: float, d: float, theta: float) -> np.ndarray:
@@ -81,8 +119,8 @@ def mdh(alpha: float, a: float, d: float, theta: float) -> np.ndarray:
 
 def omx_seed_fk(t1: float, t2: float, t3: float, t4: float) -> np.ndarray:
     """001's DH table (alpha_{i-1}, a_{i-1}, d_i, theta_i), radians, metres."""
-    off = D(90 - 10.62)
-    T = mdh(0, 0, 0.077, t1) @ mdh(D(90), 0, 0, t2 + off) @ mdh(0, 0.130, 0, t3 - off)
+    off = OFF
+    T = mdh(0, 0, D1, t1) @ mdh(D(90), 0, 0, t2 + off) @ mdh(0, A2, 0, t3 - off)
     return T @ mdh(0, 0.124, 0, t4) @ mdh(0, 0.126, 0, 0)
 
 
@@ -99,9 +137,9 @@ def omx_seed_ik(x: float, y: float, z: float, phi: float, elbow: float) -> np.nd
     """001 section 5.2 with its typos fixed: acos((r2^2 + z2^2 - (a2^2 + a3^2)) / (2 a2 a3)) and
     sin(theta2) = (z2 (a2 + a3 c3) - r2 a3 s3) / (r2^2 + z2^2) (the text prints '+'), then the
     servo conversion (also fixed) to ROBOTIS joint angles."""
-    a2, a3, a4 = 0.130, 0.124, 0.126
+    a2, a3, a4 = A2, 0.124, 0.126
     t1 = math.atan2(y, x)
-    r3, z3 = math.hypot(x, y), z - 0.077
+    r3, z3 = math.hypot(x, y), z - D1
     r2, z2 = r3 - a4 * math.cos(phi), z3 - a4 * math.sin(phi)
     t3 = elbow * math.acos((r2 * r2 + z2 * z2 - (a2 * a2 + a3 * a3)) / (2 * a2 * a3))
     k1, k2 = a2 + a3 * math.cos(t3), a3 * math.sin(t3)
@@ -109,7 +147,7 @@ def omx_seed_ik(x: float, y: float, z: float, phi: float, elbow: float) -> np.nd
     s2 = (z2 * k1 - r2 * k2) / (r2 * r2 + z2 * z2)
     t2 = math.atan2(s2, c2)
     t4 = phi - t2 - t3
-    off = D(90 - 10.62)
+    off = OFF
     return np.array([t1, off - t2, -t3 - off, -t4])
 
 

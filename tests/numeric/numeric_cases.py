@@ -5,8 +5,10 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-from armkit.kinematics import fk, pitch_of
-from armkit.kinematics._target import Target
+from armkit.kinematics import IKResult, Target, fk, pitch_of
+from armkit.kinematics._chain import chain_of
+from armkit.kinematics._numeric import solve_one
+from armkit.kinematics._target import Goal
 from armkit.model import ArmModel
 
 ARMS = ("owi535", "openmanipulator_x", "lynx6", "planar2", "al5d", "puma560")
@@ -37,6 +39,17 @@ def assert_reaches(
         E = target.orientation @ T[:3, :3].T
         angle = np.arccos(np.clip((np.trace(E) - 1) / 2, -1, 1))
         assert angle <= tol_ang * 1.0001 + 1e-7
+
+
+def solve(
+    method: str, model: ArmModel, target: Target, seed: NDArray[np.float64], tol_pos: float,
+    tol_ang: float, rng_seed: int = 0,
+) -> IKResult:  # fmt: skip
+    """A numeric method on a valid target, with the restarts' random seed given."""
+    p = tuple(np.asarray(target.position, dtype=float).tolist())
+    R = None if target.orientation is None else tuple(np.ravel(target.orientation).tolist())
+    goal = Goal(p, target.pitch, R)  # type: ignore[arg-type]
+    return solve_one(method, chain_of(model), goal, seed.tolist(), tol_pos, tol_ang, rng_seed)  # type: ignore[arg-type]
 
 
 def joint_vectors(model: ArmModel, n: int, seed: int) -> NDArray[np.float64]:

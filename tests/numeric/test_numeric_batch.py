@@ -6,8 +6,9 @@ import numpy as np
 import pytest
 from numeric_cases import ARMS, TOL_ANG, TOL_POS, joint_vectors, masks_for
 
-from armkit.kinematics import fk, pitch_of
-from armkit.kinematics._numeric import solve_batch
+from armkit.kinematics import fk, ik_batch, pitch_of
+from armkit.kinematics._chain import chain_of
+from armkit.kinematics._numeric import solve_many
 from armkit.model import load_model
 
 CASES = [(arm, mask) for arm in ARMS for mask in masks_for(load_model(arm))]
@@ -19,7 +20,8 @@ def test_batch_reaches_reachable_targets(arm: str, mask: str) -> None:
     T = fk(model, joint_vectors(model, 40, seed=5))
     pitches = pitch_of(T) if mask == "position+pitch" else None
     R = T[:, :3, :3] if mask == "pose" else None
-    out = solve_batch(model, T[:, :3, 3], pitches, R, model.home, TOL_POS, TOL_ANG)
+    seeds = np.repeat(model.home[None], len(T), axis=0)  # solve_many: no default pitch applied
+    out = solve_many(chain_of(model), T[:, :3, 3], pitches, R, seeds, TOL_POS, TOL_ANG)
     assert out.method == "lm"
     assert out.ok.all(), out.reason[~out.ok]
     assert model.within_limits(out.q, slack=0.0).all()
@@ -36,7 +38,7 @@ def test_batch_marks_unreachable_targets_and_accepts_per_target_seeds() -> None:
     P = T[:, :3, 3].copy()
     P[3] = [3.0, 0.0, 0.0]
     seeds = np.repeat(model.home[None], 30, axis=0)
-    out = solve_batch(model, P, None, None, seeds, TOL_POS, TOL_ANG)
+    out = ik_batch(model, P, None, seeds, method="lm", tol_m=TOL_POS, tol_rad=TOL_ANG)
     assert not out.ok[3] and out.reason[3] == "too_far" and np.isnan(out.q[3]).all()
     assert out.ok[np.arange(30) != 3].all()
     assert (out.reason[out.ok] == "").all()

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from armkit.cli import main
-from armkit.kinematics._compare import (
+from armkit.cli._compare_methods import (
     applicable_methods,
     compare_methods,
     reachable_targets,
@@ -64,7 +64,7 @@ def test_cli_writes_a_chart(tmp_path: Path, capsys: pytest.CaptureFixture[str]) 
 @pytest.mark.parametrize(
     ("argv", "word"),
     [
-        (["compare-ik", "--n", "0"], "n must be at least 1"),
+        (["compare-ik", "--n", "0"], "argument --n: must be 1..100000 targets, got 0"),
         (["compare-ik", "--repeats", "0"], "repeats"),
     ],
 )

@@ -5,8 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from armkit.kinematics._numeric import solve, solve_batch
-from armkit.kinematics._target import Target
+from armkit.kinematics import Target, ik, ik_batch
 from armkit.model import load_model
 
 MODEL = load_model("openmanipulator_x")
@@ -28,26 +27,28 @@ P = np.array([0.2, 0.0, 0.1])
 )
 def test_bad_target_names_the_field(target: Target, word: str) -> None:
     with pytest.raises(ValueError, match=word):
-        solve("lm", MODEL, target, MODEL.home, 1e-5, 1e-4)
+        ik(MODEL, target, q_seed=MODEL.home, method="lm")
 
 
 def test_unknown_method_lists_the_valid_ones() -> None:
-    with pytest.raises(ValueError, match="method must be one of lm, ccd, jacobian, random"):
-        solve("newton", MODEL, Target(P), MODEL.home, 1e-5, 1e-4)
+    with pytest.raises(
+        ValueError, match="method must be one of auto, analytic, lm, ccd, jacobian, random"
+    ):
+        ik(MODEL, Target(P), method="newton")  # type: ignore[arg-type]
 
 
 @pytest.mark.parametrize("seed", [np.zeros(3), np.array([0.0, np.nan, 0.0, 0.0]), "home"])
 def test_bad_seed_names_q_seed(seed: object) -> None:
     with pytest.raises(ValueError, match="q_seed"):
-        solve("lm", MODEL, Target(P), seed, 1e-5, 1e-4)  # type: ignore[arg-type]
+        ik(MODEL, Target(P), q_seed=seed, method="lm")  # type: ignore[arg-type]
 
 
 @pytest.mark.parametrize(
-    ("tol_pos", "tol_ang", "word"), [(0.0, 1e-4, "tol_pos_m"), (1e-5, np.nan, "tol_ang_rad")]
+    ("tol_pos", "tol_ang", "word"), [(0.0, 1e-4, "tol_m"), (1e-5, np.nan, "tol_rad")]
 )
 def test_bad_tolerance_names_it(tol_pos: float, tol_ang: float, word: str) -> None:
     with pytest.raises(ValueError, match=word):
-        solve("lm", MODEL, Target(P), MODEL.home, tol_pos, tol_ang)
+        ik(MODEL, Target(P), method="lm", tol_m=tol_pos, tol_rad=tol_ang)
 
 
 @pytest.mark.parametrize(
@@ -69,4 +70,11 @@ def test_bad_batch_input_names_the_argument(kwargs: dict[str, object], word: str
     }
     args.update(kwargs)
     with pytest.raises(ValueError, match=word):
-        solve_batch(MODEL, tol_pos_m=1e-5, tol_ang_rad=1e-4, **args)  # type: ignore[arg-type]
+        ik_batch(
+            MODEL,
+            args["positions"],
+            args["pitches"],
+            args["q_seed"],
+            orientations=args["orientations"],
+            method="lm",
+        )  # type: ignore[arg-type]

@@ -7,12 +7,10 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from numeric_cases import ARMS, TOL_ANG, TOL_POS, assert_reaches, masks_for, target_for
+from numeric_cases import ARMS, TOL_ANG, TOL_POS, assert_reaches, masks_for, solve, target_for
 
 from armkit._errors import NoSolutionError, UnreachableError
-from armkit.kinematics import fk
-from armkit.kinematics._numeric import solve
-from armkit.kinematics._target import Target
+from armkit.kinematics import Target, fk
 from armkit.model import load_model
 
 CASES = [(arm, mask) for arm in ARMS for mask in masks_for(load_model(arm))]

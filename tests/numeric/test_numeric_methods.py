@@ -7,10 +7,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from numeric_cases import TOL_ANG, TOL_POS, assert_reaches, joint_vectors, target_for
+from numeric_cases import TOL_ANG, TOL_POS, assert_reaches, joint_vectors, solve, target_for
 
 from armkit._errors import UnreachableError
-from armkit.kinematics._numeric import solve
 from armkit.model import load_model
 
 # method, arm, share of 20 reachable position targets at least solved

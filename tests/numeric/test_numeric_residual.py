@@ -6,28 +6,35 @@ import numpy as np
 import pytest
 from numeric_cases import ARMS, joint_vectors, target_for
 
-from armkit.kinematics._numeric._residual import residual, rotation_log, task_of
+from armkit.kinematics._chain import chain_of
+from armkit.kinematics._numeric._residual import Task, residual, rotation_log
 from armkit.kinematics._numeric._residual_batch import _rotation_log
-from armkit.kinematics._numeric._scalar_chain import chain_state, scalar_chain
 from armkit.model import load_model
+
+
+def task_of(model, target):  # type: ignore[no-untyped-def]
+    """The solvers' Task of a Target (see numeric_cases)."""
+    p = tuple(np.asarray(target.position, dtype=float).tolist())
+    R = None if target.orientation is None else tuple(np.ravel(target.orientation).tolist())
+    return Task(p, target.pitch, R, chain_of(model).weight)
 
 
 @pytest.mark.parametrize("arm", ARMS)
 @pytest.mark.parametrize("mask", ["position", "position+pitch", "pose"])
 def test_residual_jacobian_matches_finite_differences(arm: str, mask: str) -> None:
     model = load_model(arm)
-    sc = scalar_chain(model)
+    chain = chain_of(model)
     qs = joint_vectors(model, 6, seed=2)
     task = task_of(model, target_for(model, qs[0], mask))
     for q in qs[1:]:
-        res = residual(task, chain_state(sc, q.tolist()))
+        res = residual(task, chain.state(q.tolist()))
         J = np.array(res.cols).T
         h = 1e-6
         for i in range(model.dof):
             dq = np.zeros(model.dof)
             dq[i] = h
-            ep = residual(task, chain_state(sc, (q + dq).tolist()), jac=False).e
-            em = residual(task, chain_state(sc, (q - dq).tolist()), jac=False).e
+            ep = residual(task, chain.state((q + dq).tolist()), jac=False).e
+            em = residual(task, chain.state((q - dq).tolist()), jac=False).e
             fd = -(np.array(ep) - np.array(em)) / (2 * h)  # e = goal - actual
             if mask == "pose":  # log map's derivative is J_w only at zero error
                 fd, col = fd[:3], J[:3, i]

@@ -1,56 +1,73 @@
-"""The plain-float and the lean batch FK + Jacobian agree with armkit.kinematics's own."""
+"""The scalar fast path (generated code) agrees with the vectorised sweep, the reference."""
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 import pytest
 from numeric_cases import ARMS, joint_vectors
 
 from armkit.kinematics import fk, jacobian
-from armkit.kinematics._jacobian import jacobian_and_pose
-from armkit.kinematics._numeric._batch_chain import jacobian_and_pose_lean
-from armkit.kinematics._numeric._scalar_chain import chain_state, chain_state_loop, scalar_chain
-from armkit.kinematics._numeric._unrolled import source_of
+from armkit.kinematics._chain import chain_of
+from armkit.kinematics._forward import sweep
+from armkit.kinematics._scalar import source_of
 from armkit.model import load_model
 
 
 @pytest.mark.parametrize("arm", ARMS)
-def test_scalar_chain_matches_fk_and_jacobian(arm: str) -> None:
+def test_scalar_state_matches_the_sweep(arm: str) -> None:
     model = load_model(arm)
-    sc = scalar_chain(model)
-    for q in joint_vectors(model, 20, seed=1):
-        st = chain_state(sc, q.tolist())
-        T = fk(model, q)
-        J = jacobian(model, q)
-        np.testing.assert_allclose(st.p, T[:3, 3], atol=1e-12)
-        np.testing.assert_allclose(np.array(st.R).T, T[:3, :3], atol=1e-12)
-        np.testing.assert_allclose(np.array(st.jv).T, J[:3], atol=1e-12)
-        np.testing.assert_allclose(np.array(st.jw).T, J[3:], atol=1e-12)
+    chain = chain_of(model)
+    qs = joint_vectors(model, 20, seed=1)
+    ref = sweep(chain, qs, jacobian=True)
+    assert ref.J is not None
+    for i, q in enumerate(qs):
+        st = chain.state(q.tolist())
+        np.testing.assert_allclose(st.p, ref.T[i, :3, 3], atol=1e-12)
+        np.testing.assert_allclose(np.array(st.R).T, ref.T[i, :3, :3], atol=1e-12)
+        np.testing.assert_allclose(np.array(st.jv).T, ref.J[i, :3], atol=1e-12)
+        np.testing.assert_allclose(np.array(st.jw).T, ref.J[i, 3:], atol=1e-12)
+        np.testing.assert_allclose(fk(model, q), ref.T[i], atol=1e-12)
+    np.testing.assert_allclose(jacobian(model, qs), ref.J, atol=1e-15)
 
 
-@pytest.mark.parametrize("arm", ARMS)
-def test_lean_batch_chain_matches_jacobian_and_pose(arm: str) -> None:
-    model = load_model(arm)
-    q = joint_vectors(model, 30, seed=2)
-    J, T = jacobian_and_pose(model, q)
-    J2, T2 = jacobian_and_pose_lean(model, q)
-    np.testing.assert_allclose(J2, J, atol=1e-12)
-    np.testing.assert_allclose(T2, T, atol=1e-12)
-
-
-@pytest.mark.parametrize("arm", ARMS)
-def test_unrolled_chain_state_equals_the_loop_bit_for_bit(arm: str) -> None:
-    model = load_model(arm)
-    sc = scalar_chain(model)
-    for q in joint_vectors(model, 50, seed=7):
-        fast, ref = chain_state(sc, q.tolist()), chain_state_loop(sc, q.tolist())
-        assert (fast.p, fast.R, fast.jw, fast.origins) == (ref.p, ref.R, ref.jw, ref.origins)
-        assert fast.jv == ref.jv
-
-
-def test_unrolled_source_has_no_loop_and_drops_zero_lengths() -> None:
-    sc = scalar_chain(load_model("openmanipulator_x"))
-    source = source_of(sc.modified, sc.rows, sc.tool_R, sc.tool_axes, sc.tool_offsets)
+def test_source_has_no_loop_and_drops_zero_lengths() -> None:
+    chain = chain_of(load_model("openmanipulator_x"))
+    source = source_of(chain.steps, chain.tool)
     assert "for " not in source
-    assert "0.0 * " not in source  # zero a / d terms are not written out
+    assert "0.0 * " not in source  # zero terms are not written out
     assert source.count("cos(") == 4
+
+
+def test_general_joint_axes_agree_with_dh() -> None:
+    """The same arm given as joint frames (axes along y, as URDF has them) has the same FK."""
+    from dataclasses import replace
+
+    from armkit.kinematics._steps import frames_of
+
+    model = load_model("lynx6")
+    frames = frames_of(chain_of(model).steps)
+    turned = []
+    for f in frames:  # express each joint about its frame's y axis instead of z
+        R = np.eye(4)
+        c, s = math.cos(math.pi / 2), math.sin(math.pi / 2)
+        R[:3, :3] = [[1, 0, 0], [0, c, -s], [0, s, c]]
+        turned.append(replace(f, origin=f.origin @ R, axis=(0.0, f.axis[2], 0.0)))
+    # undo each turn in the next frame / the tool
+    fixed = []
+    for k, f in enumerate(turned):
+        back = np.eye(4)
+        if k > 0:
+            back[:3, :3] = [[1, 0, 0], [0, 0, 1], [0, -1, 0]]
+        fixed.append(replace(f, origin=back @ f.origin))
+    back = np.eye(4)
+    back[:3, :3] = [[1, 0, 0], [0, 0, 1], [0, -1, 0]]
+    general = replace(
+        model, convention="frames", dh=(), frames=tuple(fixed),
+        T_flange_tool=back @ chain_of(model).tool.T,
+    )  # fmt: skip
+    q = joint_vectors(model, 50, seed=3)
+    np.testing.assert_allclose(fk(general, q), fk(model, q), atol=1e-12)
+    np.testing.assert_allclose(jacobian(general, q), jacobian(model, q), atol=1e-12)
+    assert chain_of(general).family is not None  # recognised from the axes, not DH fields

@@ -35,7 +35,7 @@ def test_rehome_makes_the_state_certain(capsys: pytest.CaptureFixture[str]) -> N
 def test_pick_place_command(capsys: pytest.CaptureFixture[str]) -> None:
     assert main([*SIM, "pick-place", "150", "100", "80", "150", "-100", "80"]) == 0
     out = capsys.readouterr().out
-    assert out.index("grasp") < out.index("to above B") < out.index("release")
+    assert out.index("grasp") < out.index("put it down at B") < out.index("release")
     assert load_state(state_path("sim")).gripper == "open"
 
 

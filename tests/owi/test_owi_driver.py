@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 from owi_wire import sent
 
-from armkit._errors import JointLimitError, UnreachableError
+from armkit._errors import DeviceError, JointLimitError, UnreachableError
 from armkit.devices.owi535 import open_device
 from armkit.drivers import Driver
 from armkit.drivers.timed import ShortMoveError, TimedDriver, load_state, state_path
@@ -71,9 +71,18 @@ def test_refused_moves_send_no_byte_and_write_no_state(driver: TimedDriver, sim:
 
 def test_move_skips_joints_within_the_resolution(driver: TimedDriver) -> None:
     q = driver.read()
-    report = driver.move_report(q + np.array([DEG(1), DEG(30), 0.0, 0.0]))
+    report = driver.move_report(q + np.array([DEG(0.3), DEG(30), 0.0, 0.0]))
     assert [s.joint for s in report.steps] == [1]
-    assert "base by +1.0 deg" in report.notes[0] and "left where it is" in report.notes[0]
+    assert "base: +0.30 deg is within the 0.5 deg resolution" in report.notes[0]
+    assert "left where it is" in report.notes[0]
+
+
+def test_a_short_move_is_made_in_two_legs(driver: TimedDriver) -> None:
+    q = driver.read()
+    report = driver.move_report(q + np.array([DEG(1), 0.0, 0.0, 0.0]))
+    assert [s.joint for s in report.steps] == [0, 0]  # past the target, then back onto it
+    assert report.steps[0].direction == -report.steps[1].direction
+    assert driver.read()[0] == pytest.approx(q[0] + DEG(1), abs=DEG(0.05))
 
 
 def test_move_lifts_before_travelling_and_lowers_last(driver: TimedDriver, sim: OwiSim) -> None:
@@ -141,7 +150,15 @@ def test_watchdog_stops_a_hung_move(owi: ArmModel, sim: OwiSim) -> None:
     d = TimedDriver(owi, open_device(sim.backend), clock, state_path("x"))  # type: ignore[arg-type]
     d.motors.watchdog_margin_s = 0.2
     clock.armed = True
-    worker = threading.Thread(target=lambda: d.turn_for("elbow", 1, 0.3))
+    errors: list[BaseException] = []
+
+    def move() -> None:
+        try:
+            d.turn_for("elbow", 1, 0.3)
+        except DeviceError as exc:
+            errors.append(exc)
+
+    worker = threading.Thread(target=move)
     worker.start()
     deadline = threading.Event()
     for _ in range(100):
@@ -153,6 +170,7 @@ def test_watchdog_stops_a_hung_move(owi: ArmModel, sim: OwiSim) -> None:
     clock.release.set()
     worker.join()
     assert load_state(d.path).reason == "stopped by the watchdog"
+    assert len(errors) == 1 and "the watchdog stopped the arm" in str(errors[0])
     d.close()
 
 
@@ -173,7 +191,8 @@ def test_state_survives_a_new_process_and_a_new_driver(
 def test_writes_leave_no_temporary_files(driver: TimedDriver) -> None:
     for angle in (30, -30, 45):
         driver.turn_to("base", DEG(angle))
-    assert sorted(p.name for p in driver.path.parent.iterdir()) == ["test.json"]
+    names = sorted(p.name for p in driver.path.parent.iterdir())
+    assert names == ["test.json", "test.json.lock"]  # the lock stays (flock, see armkit._lock)
     assert load_state(driver.path).angles[0] == pytest.approx(DEG(45))
 
 

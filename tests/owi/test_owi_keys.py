@@ -58,6 +58,7 @@ def run_in_tmux(config: Path, tmux: str) -> str:
                 [tmux, *sock, "capture-pane", "-p", "-t", "owi"], capture_output=True, text=True
             ).stdout
 
+        wait_until(lambda: pane().strip() != "")  # the shell's prompt: type only after it
         subprocess.run(
             [tmux, *sock, "send-keys", "-t", "owi", command(config), "Enter"], check=True
         )

@@ -32,8 +32,6 @@ def test_servo_sends_a_pulse_and_prints_the_read_back(
 @pytest.mark.parametrize(
     ("argv", "error", "words"),
     [
-        (["--driver", "ssc32", "--port", "emu", "servo", "3", "2600"], ValueError, "2600"),
-        (["--driver", "ssc32", "--port", "emu", "servo", "32", "1500"], ValueError, "channel 32"),
         (["--driver", "maestro", "--port", "emu", "servo", "24", "1500"], ValueError, "channel 24"),
         (["--driver", "sim", "--port", "emu", "servo", "3", "1500"], ValueError, "--driver ssc32"),
         (["--driver", "ssc32", "servo", "3", "1500"], DeviceError, "--port"),
@@ -44,6 +42,24 @@ def test_servo_refuses_before_opening_anything(
 ) -> None:
     with pytest.raises(error, match=words):
         run(argv)
+
+
+@pytest.mark.parametrize(
+    ("argv", "words"),
+    [
+        (["servo", "3", "2600"], "argument pulse: must be 500..2500 µs, got 2600"),
+        (["servo", "32", "1500"], "argument channel: must be 0..31, got 32"),
+        (["servo", "0", "nan"], "argument pulse: must be 500..2500 µs, got nan"),
+    ],
+)
+def test_servo_values_are_checked_by_the_parser(
+    argv: list[str], words: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from armkit.cli import main
+
+    assert main(["--driver", "ssc32", "--port", "emu", *argv]) == 2
+    err = capsys.readouterr().err
+    assert words in err and err.count("\n") == 1
 
 
 def test_servo_table_prints_the_ideal_tables(capsys: pytest.CaptureFixture[str]) -> None:

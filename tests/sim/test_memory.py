@@ -13,7 +13,7 @@ import pytest
 CHILD = """
 import resource, sys
 import numpy as np
-from armkit import Arm
+from armkit import Arm, UnreachableError
 from armkit.model import load_model
 
 def rss_mb():
@@ -25,8 +25,13 @@ rng = np.random.default_rng(0)
 with Arm(model, "sim") as arm:
     span = model.upper - model.lower
     def move():  # a random move of up to a tenth of each joint's range, kept inside it
-        q = np.radians(list(arm.angles().values())) + rng.uniform(-0.1, 0.1, model.dof) * span
-        arm.move_joints(list(np.degrees(np.clip(q, model.lower + 0.1 * span, model.upper - 0.1 * span))))
+        while True:  # a move into the table is refused before it starts: draw another
+            q = np.radians(list(arm.angles().values())) + rng.uniform(-0.1, 0.1, model.dof) * span
+            q = np.clip(q, model.lower + 0.1 * span, model.upper - 0.1 * span)
+            try:
+                return arm.move_joints(list(np.degrees(q)))
+            except UnreachableError:
+                pass
     for _ in range(20):
         move()
     before = rss_mb()

@@ -116,6 +116,9 @@ def test_a_move_longer_than_one_device_command_goes_in_pieces(name: str) -> None
 def test_a_long_legal_move_completes_on_the_command_line(
     capsys: pytest.CaptureFixture[str],
 ) -> None:
-    assert main(["joints", "10", "-60", "20", "40", "--duration", "100"]) == 0
+    # the longest move the CLI accepts (MAX_MOVE_S, issue 10); a longer one is refused
+    assert main(["joints", "10", "-60", "20", "40", "--duration", "30"]) == 0
     out = capsys.readouterr().out
     assert "joints waist 10.0" in out and "wrist 40.0" in out
+    assert main(["joints", "-10", "-60", "20", "40", "--duration", "100"]) == 2
+    assert "must be 0..30 s" in capsys.readouterr().err

@@ -7,7 +7,7 @@ import importlib
 import sys
 from collections.abc import Sequence
 
-from .._errors import ArmkitError
+from .._errors import ArmkitError, InputError
 from ._parser import Parser
 
 # Modules that add sub-commands: each defines ``add_commands(sub)`` and its
@@ -23,6 +23,11 @@ COMMAND_MODULES = (
     "armkit.cli._compare",
     "armkit.cli._dynamixel",
     "armkit.cli._emulate",
+    "armkit.cli._view",
+    "armkit.cli._script",
+    "armkit.cli._scene",
+    "armkit.cli._tasks",
+    "armkit.cli._urdf",
 )
 
 EPILOG = """\
@@ -34,6 +39,7 @@ examples:
   armkit arms
   armkit --arm owi535 show
   armkit --arm openmanipulator_x ik 200 0 50 --pitch -90 --all
+  armkit --arm lynx6 ik 200 0 50 --pitch -45 --all
   armkit --arm lynx6 fk 90 90 90 90 90
 """
 
@@ -65,6 +71,13 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="PORT",
         help="serial port or device for the driver ('emu' = emulator)",
     )
+    parser.add_argument(
+        "--scene",
+        default=None,
+        metavar="FILE|NAME",
+        help="what is on the table: a scene .toml file (mm, deg) or a shipped scene "
+        "(see 'armkit scene list'); tasks and moves are checked against it",
+    )
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     for name in COMMAND_MODULES:
         importlib.import_module(name).add_commands(sub)
@@ -74,15 +87,84 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the CLI; user mistakes print one line on stderr and exit non-zero."""
     parser = build_parser()
-    args = parser.parse_args(argv)
-    if args.command is None:
-        parser.print_help()
-        return 0
+    words = list(sys.argv[1:] if argv is None else argv)
     try:
+        misplaced = _misplaced_global(parser, words)
+        if misplaced:
+            parser.error(misplaced)
+        args = parser.parse_args(words)
+    except SystemExit as exc:  # --help, or a mistake argparse found (one line printed)
+        return exc.code if isinstance(exc.code, int) else 2
+    try:
+        _check_globals(args)
+        if args.command is None:
+            parser.print_help()
+            return 0
         return int(args.func(args) or 0)
     except (ArmkitError, ValueError) as exc:
-        print(f"armkit: error: {exc}", file=sys.stderr)
+        print(f"armkit: error: {_one_line(exc)}", file=sys.stderr)
         return 2
+    except OSError as exc:  # the disk, not armkit: still one line
+        print(f"armkit: error: {_one_line(exc)}", file=sys.stderr)
+        return 1
     except KeyboardInterrupt:
         print("armkit: interrupted", file=sys.stderr)
         return 130
+
+
+def _one_line(exc: BaseException) -> str:
+    return " ".join(str(exc).split()) or type(exc).__name__
+
+
+def _check_globals(args: argparse.Namespace) -> None:
+    """--arm names a model that loads, --driver a known driver, --port is not empty."""
+    from ..connect import driver_names
+    from ..model import load_model
+
+    load_model(args.arm)
+    if args.driver not in driver_names():
+        raise InputError(
+            f"unknown driver {args.driver!r} (--driver); drivers are {', '.join(driver_names())}"
+        )
+    if args.port is not None and not args.port.strip():
+        raise InputError("--port is empty; give a device (/dev/ttyUSB0) or 'emu'")
+
+
+def _global_options(parser: argparse.ArgumentParser) -> set[str]:
+    return {
+        opt
+        for action in parser._actions
+        if action.option_strings and not isinstance(action, argparse._HelpAction)
+        for opt in action.option_strings
+    }
+
+
+def _knows(parser: argparse.ArgumentParser, option: str) -> bool:
+    """Whether ``parser`` or one of its sub-command parsers takes ``option``."""
+    if option in parser._option_string_actions:
+        return True
+    subs = [a for a in parser._actions if isinstance(a, argparse._SubParsersAction)]
+    return any(_knows(p, option) for sub in subs for p in sub.choices.values())
+
+
+def _misplaced_global(parser: argparse.ArgumentParser, words: list[str]) -> str | None:
+    """A one-line hint when a global option (--arm, --driver, ...) follows the command."""
+    options = _global_options(parser)
+    subs = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    k = 0
+    while k < len(words) and words[k] not in subs.choices:
+        if words[k] in ("--", "-h", "--help"):
+            return None
+        k += 1 + (words[k] in options)
+    if k >= len(words):
+        return None
+    command, rest = words[k], words[k + 1 :]
+    for i, word in enumerate(rest):
+        option = word.split("=", 1)[0]
+        if option in options and not _knows(subs.choices[command], option):
+            takes = "=" not in word and i + 1 < len(rest)
+            moved = [word, rest[i + 1]] if takes else [word]
+            kept = rest[:i] + rest[i + 1 + takes :]
+            fixed = " ".join(["armkit", *words[:k], *moved, command, *kept])
+            return f"{option} is a global option and goes before the command: {fixed}"
+    return None

@@ -6,9 +6,11 @@ import argparse
 import importlib
 from typing import Any
 
-from .._errors import ArmkitError
+from .._errors import ArmkitError, InputError
+from .._files import config_dir
 from ..connect import auto_operator, open_driver
 from ..model import load_model
+from ._args import check_folder
 
 # driver name -> the module whose run_calibration(model, driver, ask, say) measures it
 CALIBRATORS = {
@@ -36,7 +38,7 @@ def _module_for(model_name: str, driver: str) -> str:
     if driver == "sim" and model_name == "owi535":
         return CALIBRATORS["owi535"]
     if driver not in CALIBRATORS:
-        raise ValueError(
+        raise InputError(
             f"calibrate works with --driver {', '.join(CALIBRATORS)} (or sim on the owi535), got {driver!r}"
         )
     return CALIBRATORS[driver]
@@ -51,6 +53,7 @@ def _ask(prompt: str) -> str:
 
 def run_calibrate(args: argparse.Namespace) -> int:
     model = load_model(args.arm)
+    check_folder(config_dir(), "the config directory")  # where the calibration goes
     module = importlib.import_module(_module_for(model.name, args.driver))
     driver = open_driver(model, args.driver, args.port, keep=True)
     ask = _ask

@@ -6,14 +6,16 @@ import argparse
 import math
 from typing import Any
 
-from ..kinematics._compare import (
+from .._errors import ArmkitError
+from ..model import load_model
+from ._args import check_output, integer
+from ._compare_methods import (
     TASKS,
     MethodScore,
     compare_methods,
     default_task,
     reachable_targets,
 )
-from ..model import load_model
 from ._table import table
 
 
@@ -28,9 +30,19 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         "median and p95 time per call [us], median iterations, median position error [mm].",
     )
     p.add_argument(
-        "--n", type=int, default=1000, metavar="N", help="number of targets (default 1000)"
+        "--n",
+        type=integer("targets", 1, 100_000),
+        default=1000,
+        metavar="N",
+        help="number of targets, 1..100000 (default 1000)",
     )
-    p.add_argument("--seed", type=int, default=0, metavar="S", help="random seed (default 0)")
+    p.add_argument(
+        "--seed",
+        type=integer("", 0, 2**32 - 1),
+        default=0,
+        metavar="S",
+        help="random seed (default 0)",
+    )
     p.add_argument(
         "--task",
         choices=TASKS,
@@ -40,10 +52,10 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     )
     p.add_argument(
         "--repeats",
-        type=int,
+        type=integer("repeats", 1, 20),
         default=1,
         metavar="R",
-        help="time every call R times and keep the fastest (default 1; use 3 on a busy machine)",
+        help="time every call R times and keep the fastest, 1..20 (default 1; use 3 on a busy machine)",
     )
     p.add_argument("--plot", metavar="FILE", default=None, help="also write a chart (plot extra)")
     p.set_defaults(func=run_compare)
@@ -52,6 +64,8 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 def run_compare(args: argparse.Namespace) -> int:
     """Print the comparison table; write the chart if asked."""
     model = load_model(args.arm)
+    if args.plot:
+        check_output(args.plot, "--plot", image=True)
     task = args.task or default_task(model)
     targets = reachable_targets(model, args.n, args.seed, task)
     scores = compare_methods(model, targets, repeats=args.repeats)
@@ -91,7 +105,7 @@ def plot_scores(scores: list[MethodScore], path: str, title: str) -> None:
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
-        raise ValueError("--plot needs matplotlib: pip install 'armkit[plot]'") from None
+        raise ArmkitError("--plot needs matplotlib: pip install 'armkit[plot]'") from None
     names = [s.method for s in scores]
     fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
     left.bar(names, [100 * s.success for s in scores], color="tab:green")

@@ -12,7 +12,10 @@ import numpy as np
 from .._errors import UnreachableError
 from ..kinematics import fk, ik, pitch_of
 from ..model import load_model
+from ._args import check_output
 from ._table import table
+
+NEXT = ("armkit --help", "armkit --arm lynx6 ik 200 0 50 --pitch -45 --all", "armkit arms")
 
 TOUR = [  # (x, y, z) mm, pitch deg: above a cube, a cube to the left, reaching far, too far
     ((200.0, 0.0, 50.0), -90.0),
@@ -42,6 +45,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 
 def run_demo(args: argparse.Namespace) -> int:
+    check_output(args.output, "-o/--output", image=True)
     m = load_model("openmanipulator_x")
     print(f"armkit demo: {m.description}\n")
     print(
@@ -73,9 +77,7 @@ def run_demo(args: argparse.Namespace) -> int:
     print(table(headers, rows))
     _draw_circle(m)
     _picture(m, first, args.output)
-    print(
-        "\nNext: 'armkit --help', 'armkit --arm lynx6 ik 200 0 50 --pitch -90 --all', 'armkit arms'."
-    )
+    print("\nNext: " + ", ".join(f"'{command}'" for command in NEXT) + ".")
     return 0
 
 

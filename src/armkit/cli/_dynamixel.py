@@ -6,8 +6,10 @@ import argparse
 import contextlib
 from typing import Any
 
+from .._errors import DeviceError, InputError
 from ..devices import _xm430 as xm
 from ..devices.dynamixel import DynamixelBus
+from ._args import integer
 from ._table import table
 
 MODEL_NAMES = {xm.MODEL_NUMBER: "XM430-W350"}
@@ -22,7 +24,12 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         description="Ping IDs on --port (a serial device, or 'emu' for the emulator) and show"
         " each servo's model, mode, torque, hardware error and position (ticks and degrees).",
     )
-    p.add_argument("--baud", type=int, default=1_000_000, help="bits/s (default 1000000)")
+    p.add_argument(
+        "--baud",
+        type=integer("bits/s", 9600, 4_500_000),
+        default=1_000_000,
+        help="bits/s, 9600..4500000 (default 1000000)",
+    )
     p.add_argument("--ids", default="0-252", metavar="A-B", help="ID range to ping (default 0-252)")
     p.set_defaults(func=run_scan)
 
@@ -33,16 +40,16 @@ def parse_ids(text: str) -> range:
     try:
         first, last = int(low), int(high or low)
     except ValueError:
-        raise ValueError(f"--ids must look like 11-15 or 7, got {text!r}") from None
+        raise InputError(f"--ids must look like 11-15 or 7, got {text!r}") from None
     if not 0 <= first <= last <= 252:
-        raise ValueError(f"--ids must be inside 0-252, got {text!r}")
+        raise InputError(f"--ids must be inside 0-252, got {text!r}")
     return range(first, last + 1)
 
 
 def run_scan(args: argparse.Namespace) -> int:
     ids = parse_ids(args.ids)
     if not args.port:
-        raise ValueError("dxl-scan needs --port: a serial device (/dev/ttyUSB0) or 'emu'")
+        raise InputError("dxl-scan needs --port: a serial device (/dev/ttyUSB0) or 'emu'")
     with contextlib.ExitStack() as stack:
         if args.port == "emu":
             from ..connect import simulated_bus
@@ -52,11 +59,10 @@ def run_scan(args: argparse.Namespace) -> int:
             bus = stack.enter_context(DynamixelBus(args.port, args.baud, retries=0))
         rows = [_row(bus, sid, model) for sid, model in bus.scan(ids).items()]
     if not rows:
-        print(
+        raise DeviceError(
             f"no servo answered on {args.port} at {args.baud} baud (IDs {args.ids});"
             " check power, cable and baud (a new XM430 is ID 1 at 57600)"
         )
-        return 1
     print(table(["id", "model", "name", "mode", "torque", "hw error", "tick", "deg"], rows))
     return 0
 

@@ -15,10 +15,11 @@ from ..model import load_model
 KINDS = {"ssc32": "an SSC-32U", "maestro": "a Pololu Maestro", "dynamixel": "a Dynamixel bus"}
 
 EPILOG = """\
-The first line printed is the pseudo-terminal's path; open it like a serial port:
+The first line printed is the pseudo-terminal's path (say /dev/pts/7); open it like a
+serial port, from armkit itself (--port /dev/pts/7 with --driver ssc32, maestro or
+dynamixel) or from any program:
 
   armkit emulate ssc32 --arm lynx6 &
-  armkit --arm lynx6 --driver ssc32 --port /dev/pts/7 move 200 0 100 --pitch -45
   python -c "import serial; s = serial.Serial('/dev/pts/7', 9600); s.write(b'VER\\r')"
 
 The device runs in real time until Ctrl-C (or SIGTERM). Without --arm it is a lone

@@ -6,7 +6,7 @@ import argparse
 import math
 from typing import Any
 
-from ..kinematics._family import family_of
+from ..kinematics import why_no_closed_form
 from ..model import ArmModel, load_model, shipped_models
 from ._table import table
 
@@ -29,7 +29,7 @@ def run_arms(args: argparse.Namespace) -> int:
     rows = []
     for name in shipped_models():
         m = load_model(name)
-        closed = "closed form" if family_of(m) is not None else "numeric"
+        closed = "numeric" if why_no_closed_form(m) else "closed form"
         rows.append([name, m.dof, ", ".join(m.joint_names), closed, m.description])
     print(table(["arm", "dof", "joints", "ik", "description"], rows))
     return 0
@@ -47,17 +47,22 @@ def run_show(args: argparse.Namespace) -> int:
         )
     )
     print()
-    print(
-        f"DH convention: {m.convention}"
-        + (" (Craig: alpha, a of row i-1)" if m.convention == "modified" else "")
-    )
-    print(table(["joint", "a mm", "alpha deg", "d mm", "theta offset deg", "sign"], _dh_rows(m)))
+    if m.convention == "frames":  # a URDF model: joint frames, no DH rows
+        print(f"chain: {m.dof} joint frames (origin and axis per joint, as URDF gives them)")
+    else:
+        print(
+            f"DH convention: {m.convention}"
+            + (" (Craig: alpha, a of row i-1)" if m.convention == "modified" else "")
+        )
+        print(
+            table(["joint", "a mm", "alpha deg", "d mm", "theta offset deg", "sign"], _dh_rows(m))
+        )
     print()
     print(_tool_line(m))
     g = m.gripper
     print(f"gripper: {g.kind}, opening {g.width_min * 1000:.1f}..{g.width_max * 1000:.1f} mm")
     pitch = "free" if m.default_pitch is None else f"{math.degrees(m.default_pitch):.1f} deg"
-    family = "closed form (base yaw + planar chain)" if family_of(m) is not None else "numeric"
+    family = "numeric" if why_no_closed_form(m) else "closed form (base yaw + planar chain)"
     print(f"pitch when none is given: {pitch}; inverse kinematics: {family}")
     return 0
 

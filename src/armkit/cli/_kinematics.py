@@ -9,8 +9,10 @@ from typing import Any
 
 import numpy as np
 
+from .._errors import InputError
 from ..kinematics import fk, ik, pitch_of
 from ..model import ArmModel, load_model
+from ._args import angle, check_output, coordinate
 from ._table import table
 
 
@@ -22,7 +24,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         description="Forward kinematics: joint angles in degrees, in model order (see 'armkit show'), "
         "to the gripper point in mm and its pitch in degrees.",
     )
-    p.add_argument("angles", nargs="+", type=float, metavar="DEG", help="one angle per joint [deg]")
+    p.add_argument("angles", nargs="+", type=angle, metavar="DEG", help="one angle per joint [deg]")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(func=run_fk)
     p = sub.add_parser(
@@ -32,9 +34,9 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         "optionally its pitch in degrees (0 = level, -90 = pointing down) to joint angles in degrees.",
     )
     for axis in "xyz":
-        p.add_argument(axis, type=float, metavar=axis.upper(), help=f"target {axis} [mm]")
+        p.add_argument(axis, type=coordinate, metavar=axis.upper(), help=f"target {axis} [mm]")
     p.add_argument(
-        "--pitch", type=float, metavar="DEG", help="gripper pitch [deg]; default: the arm's own"
+        "--pitch", type=angle, metavar="DEG", help="gripper pitch [deg]; default: the arm's own"
     )
     p.add_argument(
         "--all", action="store_true", help="print every solution (elbow up/down, over the shoulder)"
@@ -53,7 +55,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         help="draw the arm in a pose with each joint's axes (plot extra)",
         description="Draw the arm in the given pose (degrees) with x/y/z axis indicators on every joint frame.",
     )
-    p.add_argument("angles", nargs="+", type=float, metavar="DEG", help="one angle per joint [deg]")
+    p.add_argument("angles", nargs="+", type=angle, metavar="DEG", help="one angle per joint [deg]")
     p.add_argument(
         "-o", "--output", default="pose.png", metavar="FILE", help="image file (default pose.png)"
     )
@@ -67,11 +69,12 @@ def joint_angles(m: ArmModel, degrees: list[float]) -> np.ndarray:
     """Degrees from the command line -> radians, checked for count and finiteness."""
     if len(degrees) != m.dof:
         names = ", ".join(m.joint_names)
-        raise ValueError(
+        raise InputError(
             f"{m.name} needs {m.dof} joint angles in degrees ({names}), got {len(degrees)}"
         )
     if not all(math.isfinite(d) for d in degrees):
-        raise ValueError(f"joint angles must be finite numbers, got {degrees}")
+        shown = ", ".join(f"{d:g}" for d in degrees)
+        raise InputError(f"joint angles must be finite numbers of degrees, got {shown}")
     return np.radians(degrees)
 
 
@@ -97,7 +100,7 @@ def run_fk(args: argparse.Namespace) -> int:
     print(f"position: x {pos[0]:.2f}  y {pos[1]:.2f}  z {pos[2]:.2f} mm   pitch {pitch:.2f} deg")
     if outside:
         print(
-            f"note: outside the joint limits: {', '.join(outside)} (see 'armkit --arm {m.name} show')"
+            f"note: outside the joint limits: {', '.join(outside)} (see 'armkit --arm {args.arm} show')"
         )
     return 0
 
@@ -106,7 +109,10 @@ def run_ik(args: argparse.Namespace) -> int:
     m = load_model(args.arm)
     target = [float(args.x), float(args.y), float(args.z)]
     if not all(math.isfinite(v) for v in target):
-        raise ValueError(f"target must be finite numbers in mm, got {target}")
+        shown = ", ".join(f"{v:.6g}" for v in target)
+        raise InputError(f"X Y Z must be finite numbers in mm, got {shown}")
+    if args.pitch is not None and not (math.isfinite(args.pitch) and abs(args.pitch) <= 180.0):
+        raise InputError(f"--pitch must be an angle from -180 to 180 deg, got {args.pitch:.6g}")
     pitch = None if args.pitch is None else math.radians(args.pitch)
     result = ik(m, np.array(target) / 1000.0, pitch, method=args.method)
     sols = result.solutions if args.all else result.solutions[:1]
@@ -132,6 +138,7 @@ def run_ik(args: argparse.Namespace) -> int:
 def run_plot(args: argparse.Namespace) -> int:
     m = load_model(args.arm)
     q = joint_angles(m, args.angles)
+    check_output(args.output, "-o/--output", image=True)
     from ..viz import plot_pose
 
     path = plot_pose(m, q, args.output)

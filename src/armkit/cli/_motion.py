@@ -11,13 +11,17 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
-from ..arm import Arm
+from .._errors import InputError
+from .._files import config_dir
+from ..arm import MAX_MOVE_S, Arm
 from ..connect import open_driver
+from ..drivers.timed import TimedDriver
 from ..model import load_model
 from ..motion import (
     EarlyStreaming,
@@ -28,6 +32,17 @@ from ..motion import (
     cube_edges,
     line,
     rectangle,
+)
+from ._args import (
+    MAX_DRAW_S,
+    MAX_POINTS,
+    SIZE_MM,
+    SWEEP_DEG,
+    angle,
+    check_folder,
+    check_output,
+    coordinate,
+    number,
 )
 
 F64 = NDArray[np.float64]
@@ -42,16 +57,19 @@ SIM_NOTE = (
 def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     """Add move, joints, grip, home, where and draw."""
     p = sub.add_parser("move", help="move the gripper point to X Y Z [mm]", epilog=SIM_NOTE)
-    p.add_argument("xyz", nargs=3, type=float, metavar=("X", "Y", "Z"), help="target [mm]")
-    p.add_argument("--pitch", type=float, help="gripper pitch [deg] (0 level, -90 down)")
+    for axis in "xyz":
+        p.add_argument(axis, type=coordinate, metavar=axis.upper(), help=f"target {axis} [mm]")
+    p.add_argument(
+        "--pitch", type=angle, metavar="DEG", help="gripper pitch [deg] (0 level, -90 down)"
+    )
     _timing_options(p)
     p.set_defaults(func=_move)
     p = sub.add_parser("joints", help="move every joint to the given angles [deg]", epilog=SIM_NOTE)
-    p.add_argument("angles", nargs="+", type=float, metavar="DEG", help="one angle per joint [deg]")
+    p.add_argument("angles", nargs="+", type=angle, metavar="DEG", help="one angle per joint [deg]")
     _timing_options(p)
     p.set_defaults(func=_joints)
     p = sub.add_parser("grip", help="open the gripper to WIDTH [mm]", epilog=SIM_NOTE)
-    p.add_argument("width", type=float, metavar="WIDTH_MM", help="opening [mm]")
+    p.add_argument("width", type=number("mm", 0.0, 1000.0), metavar="WIDTH_MM", help="opening [mm]")
     p.set_defaults(func=_grip)
     p = sub.add_parser("home", help="move every joint to its home angle", epilog=SIM_NOTE)
     p.set_defaults(func=_home)
@@ -61,44 +79,86 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 
 def _timing_options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--speed", type=float, help="fraction of each joint's max speed, (0, 1]")
-    p.add_argument("--duration", type=float, metavar="S", help="time for the move [s]")
+    p.add_argument(
+        "--speed",
+        type=number("", 0.0, 1.0, low_open=True),
+        metavar="FRACTION",
+        help="fraction of each joint's max speed, (0, 1]",
+    )
+    p.add_argument(
+        "--duration",
+        type=number("s", 0.0, MAX_MOVE_S),
+        metavar="S",
+        help=f"time for the move [s], at most {MAX_MOVE_S:g}",
+    )
 
 
 def _add_draw(sub: argparse._SubParsersAction[Any]) -> None:
     draw = sub.add_parser("draw", help="draw a circle, line, rectangle or cube with the gripper")
     shapes = draw.add_subparsers(dest="shape", metavar="SHAPE", required=True)
+    size = number("mm", 0.0, SIZE_MM, low_open=True)
     p = shapes.add_parser("circle", help="circle (or arc) in the horizontal plane")
     p.add_argument(
-        "--center", nargs=3, type=float, required=True, metavar=("X", "Y", "Z"), help="[mm]"
+        "--center", nargs=3, type=coordinate, required=True, metavar=("X", "Y", "Z"), help="[mm]"
     )
-    p.add_argument("--radius", type=float, required=True, metavar="MM", help="[mm]")
-    p.add_argument("--start", type=float, default=0.0, metavar="DEG", help="start angle (0 = +x)")
-    p.add_argument("--sweep", type=float, default=360.0, metavar="DEG", help="sweep (default 360)")
+    p.add_argument("--radius", type=size, required=True, metavar="MM", help="[mm]")
+    p.add_argument("--start", type=angle, default=0.0, metavar="DEG", help="start angle (0 = +x)")
+    p.add_argument(
+        "--sweep",
+        type=number("deg", -SWEEP_DEG, SWEEP_DEG, nonzero=True),
+        default=360.0,
+        metavar="DEG",
+        help="sweep [deg] (default 360; negative = clockwise)",
+    )
     _draw_options(p)
     p = shapes.add_parser("line", help="straight line from X1 Y1 Z1 to X2 Y2 Z2 [mm]")
-    p.add_argument("ends", nargs=6, type=float, metavar=("X1", "Y1", "Z1", "X2", "Y2", "Z2"))
+    for name in ("X1", "Y1", "Z1", "X2", "Y2", "Z2"):
+        p.add_argument(name.lower(), type=coordinate, metavar=name, help=f"{name} [mm]")
     _draw_options(p)
     p = shapes.add_parser("rect", help="rectangle in the horizontal plane")
     p.add_argument(
-        "--center", nargs=3, type=float, required=True, metavar=("X", "Y", "Z"), help="[mm]"
+        "--center", nargs=3, type=coordinate, required=True, metavar=("X", "Y", "Z"), help="[mm]"
     )
-    p.add_argument("--size", nargs=2, type=float, required=True, metavar=("W", "D"), help="[mm]")
+    p.add_argument("--size", nargs=2, type=size, required=True, metavar=("W", "D"), help="[mm]")
     _draw_options(p)
     p = shapes.add_parser("cube", help="every edge of a cube in one stroke (seed 001)")
     p.add_argument(
-        "--corner", nargs=3, type=float, required=True, metavar=("X", "Y", "Z"), help="lowest [mm]"
+        "--corner",
+        nargs=3,
+        type=coordinate,
+        required=True,
+        metavar=("X", "Y", "Z"),
+        help="lowest [mm]",
     )
-    p.add_argument("--size", type=float, required=True, metavar="MM", help="edge [mm]")
+    p.add_argument("--size", type=size, required=True, metavar="MM", help="edge [mm]")
     _draw_options(p)
 
 
 def _draw_options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--pitch", type=float, help="gripper pitch [deg] (0 level, -90 down)")
+    p.add_argument(
+        "--pitch", type=angle, metavar="DEG", help="gripper pitch [deg] (0 level, -90 down)"
+    )
     p.add_argument("--mode", choices=MODES, default="timed", help="how waypoints are sent")
-    p.add_argument("--spacing", type=float, default=2.0, metavar="MM", help="between waypoints")
-    p.add_argument("--speed", type=float, default=50.0, metavar="MM_S", help="tool speed (timed)")
-    p.add_argument("--fraction", type=float, default=0.5, help="early mode: send at this fraction")
+    p.add_argument(
+        "--spacing",
+        type=number("mm", 0.1, 1000.0),
+        default=2.0,
+        metavar="MM",
+        help="between waypoints [mm], 0.1..1000 (default 2)",
+    )
+    p.add_argument(
+        "--speed",
+        type=number("mm/s", 1.0, 1000.0),
+        default=50.0,
+        metavar="MM_S",
+        help="tool speed [mm/s] (timed mode, default 50)",
+    )
+    p.add_argument(
+        "--fraction",
+        type=number("", 0.0, 1.0, low_open=True),
+        default=0.5,
+        help="early mode: send the next waypoint at this fraction of a move, (0, 1]",
+    )
     p.add_argument(
         "--record",
         metavar="FILE.csv",
@@ -108,56 +168,74 @@ def _draw_options(p: argparse.ArgumentParser) -> None:
 
 
 def _open(args: argparse.Namespace) -> Arm:
+    """The arm of --arm on --driver/--port, once every file it will write is known
+    to be writable (the config directory, a state file given as --port)."""
     model = load_model(args.arm)
-    return Arm(model, open_driver(model, args.driver, args.port, keep=True))
+    check_folder(config_dir(), "the config directory")
+    if args.driver == "sim" and args.port not in (None, "emu"):
+        check_output(args.port, "--port (the simulated arm's state file)")
+    arm = Arm(model, open_driver(model, args.driver, args.port, keep=True))
+    if isinstance(arm.driver, TimedDriver):  # before moving from an uncertain estimate
+        rehome = f"armkit --arm {args.arm} --driver {args.driver} rehome"
+        arm.driver.warn = lambda text: print(f"armkit: warning: {text}: {rehome}", file=sys.stderr)
+    return arm
 
 
 def _move(args: argparse.Namespace) -> int:
     with _open(args) as arm:
-        x, y, z = args.xyz
-        arm.move_to(x, y, z, args.pitch, speed=args.speed, duration=args.duration)
-        _print_where(arm)
+        arm.move_to(args.x, args.y, args.z, args.pitch, speed=args.speed, duration=args.duration)
+        _print_where(arm, args)
     return 0
 
 
 def _joints(args: argparse.Namespace) -> int:
     with _open(args) as arm:
         arm.move_joints(args.angles, speed=args.speed, duration=args.duration)
-        _print_where(arm)
+        _print_where(arm, args)
     return 0
 
 
 def _grip(args: argparse.Namespace) -> int:
     with _open(args) as arm:
         arm.grip(args.width)
-        print(f"gripper open {args.width:.1f} mm")
+        closed = args.width <= arm.model.gripper.width_min * 1000.0 + 1e-9
+        print("gripper closed" if closed else f"gripper open {args.width:.1f} mm")
     return 0
 
 
 def _home(args: argparse.Namespace) -> int:
     with _open(args) as arm:
         arm.home()
-        _print_where(arm)
+        _print_where(arm, args)
     return 0
 
 
 def _where(args: argparse.Namespace) -> int:
     with _open(args) as arm:
-        _print_where(arm)
+        _print_where(arm, args)
     return 0
 
 
-def _print_where(arm: Arm) -> None:
-    x, y, z, pitch = arm.position()
+def _print_where(arm: Arm, args: argparse.Namespace) -> None:
+    x, y, z, pitch = (round(v, 1) + 0.0 for v in arm.position())  # + 0.0: no "-0.0"
     print(f"gripper at x {x:.1f} y {y:.1f} z {z:.1f} mm, pitch {pitch:.1f} deg")
-    print("joints " + "  ".join(f"{n} {a:.2f}" for n, a in arm.angles().items()) + " deg")
+    angles = "  ".join(f"{n} {round(a, 2) + 0.0:.2f}" for n, a in arm.angles().items())
+    print(f"joints {angles} deg")
+    reason = arm.driver.uncertainty if isinstance(arm.driver, TimedDriver) else None
+    if reason:
+        print(
+            f"uncertain: these are estimates ({reason}); to know the angles again run "
+            f"'armkit --arm {args.arm} --driver {args.driver} rehome'"
+        )
 
 
 def _draw(args: argparse.Namespace) -> int:
     points = _shape_points(args)
-    streamer = _streamer(args)
-    if args.record and args.driver != "sim" and args.port != "emu":
-        raise ValueError("--record needs a simulated arm (--driver sim, or --port emu)")
+    streamer = _streamer(args, points)
+    if args.record:
+        if args.driver != "sim" and args.port != "emu":
+            raise InputError("--record needs a simulated arm (--driver sim, or --port emu)")
+        check_output(args.record, "--record")
     with _open(args) as arm:
         t0 = arm.clock.now()
         arm.follow(points, args.pitch, streamer=streamer)
@@ -169,15 +247,35 @@ def _draw(args: argparse.Namespace) -> int:
     return 0
 
 
+def _shape_length(args: argparse.Namespace) -> float:
+    """Length of the shape's path [mm], known before a point is made."""
+    if args.shape == "circle":
+        return abs(math.radians(args.sweep)) * float(args.radius)
+    if args.shape == "line":
+        ends = np.array([args.x1, args.y1, args.z1, args.x2, args.y2, args.z2])
+        return float(np.linalg.norm(ends[3:] - ends[:3]))
+    if args.shape == "rect":
+        return 2.0 * (float(args.size[0]) + float(args.size[1]))
+    return 16.0 * float(args.size)  # the cube trace retraces three of its twelve edges
+
+
 def _shape_points(args: argparse.Namespace) -> F64:
-    """The shape's points [mm], shape (N, 3)."""
+    """The shape's points [mm], shape (N, 3); InputError if there would be too many."""
+    count = _shape_length(args) / args.spacing
+    if count > MAX_POINTS:
+        raise InputError(
+            f"--spacing {args.spacing:g} mm makes {count:.0f} waypoints for this "
+            f"{_shape_length(args):.0f} mm {args.shape}; at most {MAX_POINTS}: "
+            "use a larger --spacing or a smaller shape"
+        )
     sp = args.spacing / 1000.0
     if args.shape == "circle":
         c = np.array(args.center) / 1000.0
         start, sweep = math.radians(args.start), math.radians(args.sweep)
         pts = arc(c, args.radius / 1000.0, start, sweep, sp)
     elif args.shape == "line":
-        pts = line(np.array(args.ends[:3]) / 1000.0, np.array(args.ends[3:]) / 1000.0, sp)
+        a = np.array([args.x1, args.y1, args.z1]) / 1000.0
+        pts = line(a, np.array([args.x2, args.y2, args.z2]) / 1000.0, sp)
     elif args.shape == "rect":
         c = np.array(args.center) / 1000.0
         pts = rectangle(c, args.size[0] / 1000.0, args.size[1] / 1000.0, sp)
@@ -186,13 +284,15 @@ def _shape_points(args: argparse.Namespace) -> F64:
     return pts * 1000.0
 
 
-def _streamer(args: argparse.Namespace) -> Streamer:
+def _streamer(args: argparse.Namespace, points: F64) -> Streamer:
     if args.mode == "naive":
         return NaiveStepping()
     if args.mode == "early":
-        if not 0.0 < args.fraction <= 1.0:
-            raise ValueError(f"--fraction must be in (0, 1], got {args.fraction}")
         return EarlyStreaming(fraction=args.fraction)
-    if not args.speed > 0:
-        raise ValueError(f"--speed must be > 0 mm/s, got {args.speed}")
+    length = float(np.sum(np.linalg.norm(np.diff(points, axis=0), axis=1)))
+    if length / args.speed > MAX_DRAW_S:
+        raise InputError(
+            f"drawing {length:.0f} mm at --speed {args.speed:g} mm/s would take "
+            f"{length / args.speed:.0f} s; at most {MAX_DRAW_S:g} s: raise --speed"
+        )
     return TimedStreaming(speed=args.speed / 1000.0)

@@ -9,6 +9,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .._errors import ArmkitError
+from .._files import config_dir
+from ._args import check_folder, coordinate, number
 
 if TYPE_CHECKING:
     from ..drivers.timed import TimedDriver
@@ -28,10 +30,14 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     )
     for name in ("ax", "ay", "az", "bx", "by", "bz"):
         p.add_argument(
-            name, type=float, metavar=name.upper(), help=f"{name[0].upper()} {name[1]} [mm]"
+            name, type=coordinate, metavar=name.upper(), help=f"{name[0].upper()} {name[1]} [mm]"
         )
     p.add_argument(
-        "--lift", type=float, default=40.0, metavar="MM", help="travel height above A and B [mm]"
+        "--lift",
+        type=number("mm", 0.0, 500.0),
+        default=40.0,
+        metavar="MM",
+        help="travel height above A and B [mm], 0..500",
     )
     p.set_defaults(func=_pick_place)
     p = sub.add_parser(
@@ -50,6 +56,7 @@ def _open(args: argparse.Namespace) -> TimedDriver:
     from ..model import load_model
 
     model = load_model(args.arm)
+    check_folder(config_dir(), "the config directory")  # the unit's state file
     if "owi535" not in model.drivers:
         raise ArmkitError(
             f"'{args.command}' is for the OWI-535; add --arm owi535 (got {model.name})"

@@ -6,14 +6,16 @@ import argparse
 from contextlib import ExitStack
 from typing import Any
 
-from .._errors import DeviceError
+from .._errors import DeviceError, InputError
+from ._args import integer, number
 
 SERVO_DRIVERS = ("ssc32", "maestro")
 
 SERVO_EPILOG = """\
 examples:
-  armkit --driver ssc32 --port /dev/ttyUSB0 servo 0 1500
+  armkit --driver ssc32 --port emu servo 0 1500
   armkit --driver maestro --port emu servo 2 1200 --time-ms 500
+(emu = the controller's emulator; your controller is --port /dev/ttyUSB0 or similar)
 """
 
 TABLE_EPILOG = """\
@@ -30,9 +32,22 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         epilog=SERVO_EPILOG,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("channel", type=int, help="controller channel (SSC-32: 0..31, Maestro: 0..23)")
-    p.add_argument("pulse", type=float, help="pulse width [µs], 500..2500 (1500 = centre)")
-    p.add_argument("--time-ms", type=int, default=None, help="time for the move [ms]")
+    p.add_argument(
+        "channel",
+        type=integer("", 0, 31),
+        help="controller channel (SSC-32: 0..31, Maestro: 0..23)",
+    )
+    p.add_argument(
+        "pulse",
+        type=number("µs", 500.0, 2500.0),
+        help="pulse width [µs], 500..2500 (1500 = centre)",
+    )
+    p.add_argument(
+        "--time-ms",
+        type=integer("ms", 0, 65535),
+        default=None,
+        help="time for the move [ms], 0..65535",
+    )
     p.set_defaults(func=run_servo)
     t = sub.add_parser(
         "servo-table",
@@ -45,7 +60,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 def _servo_driver(args: argparse.Namespace) -> str:
     if args.driver not in SERVO_DRIVERS:
-        raise ValueError(
+        raise InputError(
             f"this command needs --driver ssc32 or --driver maestro, not {args.driver!r}"
         )
     return str(args.driver)

@@ -26,8 +26,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .._clock import Clock
+from .._errors import InputError
 from ..drivers._driver import Driver
 from ..drivers._registry import DRIVERS
+from ..drivers._registry import driver_names as hardware_names
 from ..drivers._registry import open_driver as open_hardware
 from ..model import ArmModel
 from ..sim import World as World
@@ -61,7 +63,7 @@ def open_driver(
         keep: with ``"sim"`` and no port, keep the truth in ``sim_state_file(model)``.
 
     Raises:
-        ValueError: an unknown driver name, or ``world`` with real hardware.
+        InputError: an unknown driver name, or ``world`` with real hardware.
         DeviceError: the device is missing or refuses, or the simulated arm is in use
             by another process (the message names it).
     """
@@ -73,15 +75,20 @@ def open_driver(
             state = state_file(model)
         return simulate(model, native_kind(model), world, state)
     if driver not in DRIVERS:
-        raise ValueError(f"unknown driver {driver!r}; drivers are sim, {', '.join(DRIVERS)}")
+        raise InputError(f"unknown driver {driver!r}; drivers are sim, {', '.join(DRIVERS)}")
     if port == "emu":
         return simulate(model, driver, world, None)
     if world is not None:
-        raise ValueError(
+        raise InputError(
             f"a world holds simulated devices; {driver} on {port} is real hardware: "
             "drop world=, or use --port emu"
         )
     return open_hardware(model, driver, port)
+
+
+def driver_names() -> list[str]:
+    """Every name ``driver=`` takes: ``"sim"`` and the drivers of real hardware."""
+    return ["sim", *hardware_names()]
 
 
 def sim_state_file(model: ArmModel) -> Path:
@@ -128,4 +135,12 @@ def simulated_bus(baudrate: int, retries: int = 3) -> DynamixelBus:
     return bus(baudrate, retries)
 
 
-__all__ = ["World", "auto_operator", "native_kind", "open_driver", "sim_state_file", "world_of"]
+__all__ = [
+    "World",
+    "auto_operator",
+    "driver_names",
+    "native_kind",
+    "open_driver",
+    "sim_state_file",
+    "world_of",
+]

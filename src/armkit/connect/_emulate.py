@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .._errors import ArmkitError
+from .._errors import ArmkitError, InputError
 from ..model import ArmModel
 from ..sim import World
 from ..sim.emulators import Emulator
@@ -22,7 +22,7 @@ def emulate(kind: str, model: ArmModel | None = None) -> Emulator:
         ValueError: an unknown kind.  ModelError: the model has no section for ``kind``.
     """
     if kind not in EMULATED:
-        raise ValueError(f"cannot emulate {kind!r}; choose one of {', '.join(EMULATED)}")
+        raise InputError(f"cannot emulate {kind!r}; choose one of {', '.join(EMULATED)}")
     world = World(realtime=True)
     try:
         return Emulator(_rig(kind, model, world).device, world=world)

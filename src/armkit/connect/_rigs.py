@@ -8,12 +8,11 @@ answer the driver exactly as a unit calibrated like the model would.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Any
+from dataclasses import dataclass
 
 from ..drivers.dynamixel import calibration_points
 from ..drivers.servo._config import load_setup
-from ..model import ArmModel
+from ..model import ArmModel, DynamixelSection, dynamixel_section
 from ..sim import SimArm, Truth, World
 from ..sim._assemble import add_servo_arm
 from ..sim._outbox import ByteDevice
@@ -32,18 +31,18 @@ class Rig:
     device: ByteDevice
     arm: SimArm | None
     baudrate: int
-    config: dict[str, Any] = field(default_factory=dict)  # the Dynamixel setup used
+    config: DynamixelSection | None = None  # the Dynamixel setup used
 
 
-def generic_config(model: ArmModel) -> dict[str, Any]:
+def generic_config(model: ArmModel) -> DynamixelSection:
     """The generic bus's setup: servo IDs 1..dof, the gripper next, extended position mode."""
-    return {
-        "ids": list(range(1, model.dof + 1)),
-        "gripper_id": model.dof + 1,
-        "baudrate": GENERIC_BAUD,
-        "operating_mode": "extended",
-        "gripper_ticks": (1024, 3072),
-    }
+    return DynamixelSection(
+        ids=tuple(range(1, model.dof + 1)),
+        gripper_id=model.dof + 1,
+        baudrate=GENERIC_BAUD,
+        gripper_ticks=(1024, 3072),
+        operating_mode="extended",
+    )
 
 
 def servo_rig(model: ArmModel, world: World, kind: str, truth: Truth | None) -> Rig:
@@ -63,17 +62,17 @@ def servo_rig(model: ArmModel, world: World, kind: str, truth: Truth | None) -> 
 
 
 def dynamixel_rig(
-    model: ArmModel, world: World, truth: Truth | None, config: dict[str, Any] | None = None
+    model: ArmModel, world: World, truth: Truth | None, config: DynamixelSection | None = None
 ) -> Rig:
     """XM430s on a Dynamixel bus driving ``model``'s joints and gripper, set up by its
     ``[drivers.dynamixel]`` table (or ``config``)."""
-    cfg = config if config is not None else dict(model.drivers["dynamixel"])
+    cfg = config if config is not None else dynamixel_section(model)
     points = calibration_points(model, cfg)
     device = SimDynamixelBus([sid for sid, *_ in points], clock=world.now)
     mounts = [Mount(sid, joint, ticks, values) for sid, joint, ticks, values in points]
     arm = add_servo_arm(world, model, device, mounts, truth=truth)
     arm.device = device
-    return Rig(device, arm, int(cfg.get("baudrate", GENERIC_BAUD)), cfg)
+    return Rig(device, arm, cfg.baudrate, cfg)
 
 
 def lone_rig(kind: str, world: World) -> Rig:

@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from .._clock import Clock
-from .._errors import ArmkitError, DeviceError
+from .._errors import DeviceError
 from ..devices._dxl_protocol import PortHandler
 from ..devices.dynamixel import DynamixelBus
 from ..devices.owi535 import OwiDevice, attach, open_device
@@ -26,7 +26,7 @@ from ..drivers._driver import Driver
 from ..drivers.dynamixel import DynamixelDriver
 from ..drivers.servo import open_maestro, open_ssc32
 from ..drivers.timed import TimedDriver, state_path
-from ..model import ArmModel
+from ..model import ArmModel, DynamixelSection, dynamixel_section
 from ..sim import SimArm, World
 from ..sim._assemble import Persistence, add_owi_arm
 from ..sim._state import state_key
@@ -79,7 +79,7 @@ def _dynamixel(
     world: World,
     keep: Persistence | None,
     opened: list[SimArm],
-    config: dict[str, Any] | None = None,
+    config: DynamixelSection | None = None,
 ) -> Driver:
     rig = dynamixel_rig(model, world, keep.truth if keep else None, config)
     assert rig.arm is not None
@@ -156,9 +156,7 @@ def _maestro(
 
 
 def _dxl(model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]) -> Driver:
-    if "dynamixel" not in model.drivers:
-        raise ArmkitError(f"{model.name} has no [drivers.dynamixel] table; not a Dynamixel arm")
-    return _dynamixel(model, world, keep, opened)
+    return _dynamixel(model, world, keep, opened, dynamixel_section(model))
 
 
 _BUILDERS: dict[str, Callable[[ArmModel, World, Persistence | None, list[SimArm]], Driver]] = {

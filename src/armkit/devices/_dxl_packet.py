@@ -24,7 +24,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from enum import IntEnum
 
-from .._errors import DeviceError
+from .._errors import DeviceError, InputError
 
 HEADER = b"\xff\xff\xfd\x00"
 BROADCAST_ID = 0xFE
@@ -120,7 +120,7 @@ def unstuff(body: bytes) -> bytes:
 def encode(servo_id: int, instruction: int, params: bytes = b"") -> bytes:
     """A complete frame for ``servo_id`` (0..253, 254 = broadcast), stuffed and CRC'd."""
     if not 0 <= servo_id <= BROADCAST_ID:
-        raise ValueError(f"servo ID {servo_id} is outside 0..254")
+        raise InputError(f"servo ID {servo_id} is outside 0..254")
     body = stuff(bytes((instruction,)) + params)
     length = len(body) + 2
     frame = HEADER + bytes((servo_id, length & 0xFF, length >> 8)) + body
@@ -190,7 +190,7 @@ def sync_read(address: int, size: int, ids: Iterable[int]) -> bytes:
 def sync_write(address: int, size: int, data: Mapping[int, bytes]) -> bytes:
     """SYNC_WRITE: ``data`` maps servo ID -> ``size`` encoded bytes for that servo."""
     if any(len(value) != size for value in data.values()):
-        raise ValueError(f"every SYNC_WRITE entry must be {size} bytes")
+        raise InputError(f"every SYNC_WRITE entry must be {size} bytes")
     params = b"".join(bytes((sid,)) + value for sid, value in data.items())
     return encode(BROADCAST_ID, Inst.SYNC_WRITE, _u16(address) + _u16(size) + params)
 

@@ -6,23 +6,27 @@ A mixin of ``DynamixelBus``: every method here is made of the bus's own
 
 from __future__ import annotations
 
+from abc import ABC, abstractmethod
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 
 from . import _xm430 as xm
 
 
-class ServoSettings:
+class ServoSettings(ABC):
     """Settings made of register reads and writes (mixed into ``DynamixelBus``)."""
 
+    @abstractmethod
     def read(self, servo_id: int, name: str, *, alert_ok: bool = False) -> int:
-        raise NotImplementedError
+        """The register ``name`` of servo ``servo_id``."""
 
+    @abstractmethod
     def write(self, servo_id: int, name: str, value: int) -> None:
-        raise NotImplementedError
+        """Write ``value`` to the register ``name`` of servo ``servo_id``."""
 
+    @abstractmethod
     def _sync_write(self, address: int, size: int, data: Mapping[int, bytes]) -> None:
-        raise NotImplementedError
+        """One SYNC_WRITE of ``size`` bytes at ``address``: servo ID -> bytes."""
 
     def set_torque(self, ids: Iterable[int], on: bool) -> None:
         """Torque Enable on every servo in ``ids``."""

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
+from .._errors import InputError
+
 # (motor, direction) -> bit in byte 0
 BYTE0_FLAGS: dict[tuple[str, int], int] = {
     ("gripper", -1): 0x01,
@@ -56,12 +58,12 @@ def decode(data: bytes, base_reversed: bool = False) -> tuple[dict[str, int], bo
         ValueError: not 3 bytes, or opposite directions of one motor at once.
     """
     if len(data) != 3:
-        raise ValueError(f"an OWI-535 command has 3 bytes, got {len(data)}")
+        raise InputError(f"an OWI-535 command has 3 bytes, got {len(data)}")
     motion: dict[str, int] = {}
     for (motor, direction), bit in BYTE0_FLAGS.items():
         if data[0] & bit:
             if motor in motion:
-                raise ValueError(f"byte 0x{data[0]:02x} runs the {motor} both ways at once")
+                raise InputError(f"byte 0x{data[0]:02x} runs the {motor} both ways at once")
             motion[motor] = direction
     for (motor, direction), value in BYTE1_VALUES.items():
         if data[1] == value:
@@ -71,7 +73,7 @@ def decode(data: bytes, base_reversed: bool = False) -> tuple[dict[str, int], bo
 
 def _checked(motor: str, direction: int) -> tuple[str, int]:
     if motor not in MOTORS:
-        raise ValueError(f"unknown OWI-535 motor {motor!r}; motors are {', '.join(MOTORS)}")
+        raise InputError(f"unknown OWI-535 motor {motor!r}; motors are {', '.join(MOTORS)}")
     if direction not in (-1, 1):
-        raise ValueError(f"direction of the {motor} must be -1, 0 or +1, got {direction}")
+        raise InputError(f"direction of the {motor} must be -1, 0 or +1, got {direction}")
     return (motor, direction)

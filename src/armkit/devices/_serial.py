@@ -13,7 +13,7 @@ from collections.abc import Callable
 from typing import Any, Protocol, TypeVar
 
 from .._clock import Clock, WallClock
-from .._errors import DeviceError
+from .._errors import DeviceError, ReplyError
 
 CR = b"\r"
 T = TypeVar("T")
@@ -48,9 +48,9 @@ class SerialPort(Protocol):
 
 def _complete(reply: bytes, size: int | None) -> bytes:
     if not reply:
-        raise ValueError("no reply")
+        raise ReplyError("no reply")
     if size is not None and len(reply) != size:
-        raise ValueError(f"reply {reply!r} has {len(reply)} bytes, expected {size}")
+        raise ReplyError(f"reply {reply!r} has {len(reply)} bytes, expected {size}")
     return reply
 
 

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .._errors import InputError
+
 MODEL_NUMBER = 1020  # XM430-W350
 TICKS_PER_TURN = 4096
 VELOCITY_UNIT_RPM = 0.229
@@ -66,7 +68,7 @@ class Register:
             return int(value).to_bytes(self.size, "little", signed=self.signed)
         except OverflowError:
             kind = "signed" if self.signed else "unsigned"
-            raise ValueError(
+            raise InputError(
                 f"{self.name}: {value} does not fit a {kind} {self.size}-byte register"
             ) from None
 
@@ -137,11 +139,13 @@ CONTROL_TABLE_SIZE = 147  # bytes: last register ends at address 146
 
 
 def register(name: str) -> Register:
-    """The register called ``name``; KeyError lists the known names."""
+    """The register called ``name``; InputError lists the known names."""
     try:
         return XM430_W350[name]
     except KeyError:
-        raise KeyError(f"no XM430-W350 register {name!r}; known: {', '.join(XM430_W350)}") from None
+        raise InputError(
+            f"no XM430-W350 register {name!r}; known: {', '.join(XM430_W350)}"
+        ) from None
 
 
 def describe_hardware_error(bits: int) -> str:

@@ -19,7 +19,7 @@ import math
 from collections.abc import Iterable, Mapping
 
 from .._clock import Clock, WallClock
-from .._errors import DeviceError
+from .._errors import DeviceError, InputError, ReplyError
 from ._serial import SerialLink, SerialPort
 from .ssc32 import PULSE_MAX_US, PULSE_MIN_US, check_channel
 
@@ -40,14 +40,14 @@ def _seven_bit_pair(value: int) -> bytes:
 
 def _check_limit(name: str, channel: int, value: int) -> None:
     if not isinstance(value, int) or not 0 <= value <= LIMIT_MAX:
-        raise ValueError(f"{name} {value!r} on channel {channel} is outside 0..{LIMIT_MAX}")
+        raise InputError(f"{name} {value!r} on channel {channel} is outside 0..{LIMIT_MAX}")
 
 
 def target_bytes(channel: int, pulse_us: float) -> bytes:
     """``0x84 ch lo hi``: move ``channel`` to ``pulse_us`` [µs, 500..2500, 0.25 µs steps]."""
     check_channel(channel, CHANNELS)
     if not isinstance(pulse_us, int | float) or not PULSE_MIN_US <= pulse_us <= PULSE_MAX_US:
-        raise ValueError(
+        raise InputError(
             f"pulse {pulse_us!r} µs on channel {channel} is outside "
             f"{PULSE_MIN_US}..{PULSE_MAX_US} µs; give a pulse in that range"
         )
@@ -77,17 +77,17 @@ def position_query_bytes(channel: int) -> bytes:
 def parse_position(reply: bytes) -> float:
     """Pulse [µs] (0 = off) from a 2-byte position reply; ValueError if impossible."""
     if len(reply) != 2:
-        raise ValueError(f"position reply has {len(reply)} bytes, expected 2")
+        raise ReplyError(f"position reply has {len(reply)} bytes, expected 2")
     quarter = int.from_bytes(reply, "little")
     if quarter > LIMIT_MAX:
-        raise ValueError(f"position {quarter} quarter-µs is beyond {LIMIT_MAX}")
+        raise ReplyError(f"position {quarter} quarter-µs is beyond {LIMIT_MAX}")
     return quarter / 4.0
 
 
 def parse_moving(reply: bytes) -> bool:
     """True while moving, from the 1-byte moving-state reply; ValueError if not 0 or 1."""
     if reply not in (b"\x00", b"\x01"):
-        raise ValueError(f"moving-state reply {reply!r} is not 0 or 1")
+        raise ReplyError(f"moving-state reply {reply!r} is not 0 or 1")
     return reply == b"\x01"
 
 
@@ -210,7 +210,7 @@ def _move_time(
     needed = [(time_ms or 0) / 1000.0]
     for ch, limit in speeds.items():
         if limit <= 0:
-            raise ValueError(f"speed of channel {ch} must be > 0 µs/s, got {limit}")
+            raise InputError(f"speed of channel {ch} must be > 0 µs/s, got {limit}")
         if starts.get(ch):
             needed.append(abs(pulses[ch] - starts[ch]) / limit)
     return max(needed)

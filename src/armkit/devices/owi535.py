@@ -16,7 +16,7 @@ import threading
 from collections.abc import Callable
 from typing import Any, Protocol
 
-from .._errors import DeviceError
+from .._errors import DeviceError, InputError
 from ._owi_commands import decode as decode
 from ._owi_commands import encode as encode
 
@@ -68,7 +68,7 @@ class OwiDevice:
             DeviceError: the transfer failed (unplugged, batteries, permissions).
         """
         if len(data) != 3:
-            raise ValueError(f"an OWI-535 command has 3 bytes, got {len(data)}")
+            raise InputError(f"an OWI-535 command has 3 bytes, got {len(data)}")
         with self._lock:
             if self._closed:
                 raise DeviceError("the OWI-535 device is closed; open the driver again")

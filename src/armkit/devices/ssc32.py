@@ -22,7 +22,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping
 
 from .._clock import Clock, WallClock
-from .._errors import DeviceError
+from .._errors import DeviceError, InputError, ReplyError
 from ._serial import CR as CR
 from ._serial import SerialLink as SerialLink
 from ._serial import SerialPort
@@ -41,7 +41,7 @@ STATUS_REPLY = {b".": False, b"+": True}  # Q reply byte -> still moving
 def check_channel(channel: int, channels: range = CHANNELS) -> None:
     """Raise ValueError unless ``channel`` is one of ``channels``."""
     if not isinstance(channel, int) or channel not in channels:
-        raise ValueError(
+        raise InputError(
             f"servo channel {channel!r} does not exist; use {channels.start}..{channels.stop - 1}"
         )
 
@@ -49,7 +49,7 @@ def check_channel(channel: int, channels: range = CHANNELS) -> None:
 def check_pulse(channel: int, pulse_us: int) -> None:
     """Raise ValueError unless ``pulse_us`` [µs] is an int in 500..2500."""
     if not isinstance(pulse_us, int) or not PULSE_MIN_US <= pulse_us <= PULSE_MAX_US:
-        raise ValueError(
+        raise InputError(
             f"pulse {pulse_us!r} µs on channel {channel} is outside "
             f"{PULSE_MIN_US}..{PULSE_MAX_US} µs; give a whole number of µs in that range"
         )
@@ -57,13 +57,13 @@ def check_pulse(channel: int, pulse_us: int) -> None:
 
 def _check_int(name: str, value: int, low: int, high: int, unit: str) -> None:
     if not isinstance(value, int) or not low <= value <= high:
-        raise ValueError(f"{name} {value!r} {unit} is outside {low}..{high} {unit}")
+        raise InputError(f"{name} {value!r} {unit} is outside {low}..{high} {unit}")
 
 
 def check_baudrate(baudrate: int) -> None:
     """Raise ValueError unless ``baudrate`` is one the SSC-32 can be set to."""
     if baudrate not in BAUDRATES:
-        raise ValueError(
+        raise InputError(
             f"SSC-32 baud rate {baudrate!r} is not one of {BAUDRATES}; set the board's"
         )
 
@@ -85,10 +85,10 @@ def group_move_bytes(
     """
     speeds = dict(speeds or {})
     if not pulses:
-        raise ValueError("a move needs at least one servo; give channel -> pulse")
+        raise InputError("a move needs at least one servo; give channel -> pulse")
     for ch in speeds:
         if ch not in pulses:
-            raise ValueError(f"speed given for channel {ch}, which is not in the move")
+            raise InputError(f"speed given for channel {ch}, which is not in the move")
     parts = [_servo_clause(ch, pw, speeds.get(ch)) for ch, pw in pulses.items()]
     if time_ms is not None:
         _check_int("move time", time_ms, 1, TIME_MAX_MS, "ms")
@@ -109,7 +109,7 @@ def query_pulse_bytes(channels: Iterable[int]) -> bytes:
     """The bytes of one pulse query ``QP<ch>...`` CR for ``channels`` (reply: one byte each)."""
     channels = list(channels)
     if not channels:
-        raise ValueError("a pulse query needs at least one channel")
+        raise InputError("a pulse query needs at least one channel")
     for ch in channels:
         check_channel(ch)
     return "".join(f"QP{ch}" for ch in channels).encode("ascii") + CR
@@ -124,18 +124,18 @@ def stop_bytes(channel: int) -> bytes:
 def parse_status(reply: bytes) -> bool:
     """True while moving, from the one-byte reply to ``Q``; ValueError if it is neither."""
     if reply not in STATUS_REPLY:
-        raise ValueError(f"status reply {reply!r} is not '.' or '+'")
+        raise ReplyError(f"status reply {reply!r} is not '.' or '+'")
     return STATUS_REPLY[reply]
 
 
 def parse_pulses(reply: bytes, channels: list[int]) -> dict[int, int]:
     """Channel -> pulse [µs] (0 = never commanded) from the reply to a pulse query."""
     if len(reply) != len(channels):
-        raise ValueError(f"pulse reply has {len(reply)} bytes, expected {len(channels)}")
+        raise ReplyError(f"pulse reply has {len(reply)} bytes, expected {len(channels)}")
     pulses = {ch: 10 * b for ch, b in zip(channels, reply, strict=True)}
     for ch, pw in pulses.items():
         if pw and not PULSE_MIN_US <= pw <= PULSE_MAX_US:
-            raise ValueError(
+            raise ReplyError(
                 f"channel {ch} reports {pw} µs, outside {PULSE_MIN_US}..{PULSE_MAX_US}"
             )
     return pulses
@@ -227,5 +227,5 @@ class SSC32:
 
 def _parse_version(reply: bytes) -> str:
     if not reply.endswith(CR) or not reply.isascii() or len(reply) < 2:
-        raise ValueError(f"version reply {reply!r} is not text ending with CR")
+        raise ReplyError(f"version reply {reply!r} is not text ending with CR")
     return reply[:-1].decode("ascii")

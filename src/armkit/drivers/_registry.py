@@ -11,7 +11,7 @@ from __future__ import annotations
 import importlib
 from typing import Protocol
 
-from .._errors import DeviceError
+from .._errors import DeviceError, InputError
 from ..model import ArmModel
 from ._driver import Driver
 
@@ -55,7 +55,7 @@ def open_driver(model: ArmModel, name: str, port: str | None = None) -> Driver:
         DeviceError: the driver exists but is not available or the device is not there.
     """
     if name not in DRIVERS:
-        raise ValueError(f"unknown driver {name!r}; drivers are sim, {', '.join(DRIVERS)}")
+        raise InputError(f"unknown driver {name!r}; drivers are sim, {', '.join(DRIVERS)}")
     module_name, func_name, _ = DRIVERS[name]
     try:
         module = importlib.import_module(module_name)

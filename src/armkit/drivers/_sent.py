@@ -2,7 +2,8 @@
 
 The servos' encoders lag behind their profiles, so a move sent while another is in
 flight starts from where the profile has the joints (not where the encoders read),
-and a servo resting on the tick of the goal it was sent reads as that goal.
+and a servo resting on the tick of the goal it was sent reads as that goal (the
+angle asked for), while the profile itself runs to the goal's tick (``end``).
 """
 
 from __future__ import annotations
@@ -18,11 +19,12 @@ I64 = NDArray[np.int64]
 
 @dataclass(frozen=True)
 class SentProfile:
-    """A profile sent at ``t0`` [s] from ``start`` to ``goal`` [rad], shape (dof,), as goal
-    ``ticks``, lasting ``total`` [s]."""
+    """A time-based profile sent at ``t0`` [s] for the angles ``goal`` [rad], shape (dof,),
+    as goal ``ticks`` (the angles ``end`` [rad]): from ``start`` [rad], lasting ``total`` [s]."""
 
     start: F64
     goal: F64
+    end: F64
     ticks: I64
     t0: float
     total: float
@@ -30,7 +32,11 @@ class SentProfile:
     def where(self, now: float) -> F64:
         """Where the profile has the joints at ``now`` [s] (straight-line estimate) [rad]."""
         frac = min(1.0, max(0.0, (now - self.t0) / self.total)) if self.total > 0 else 1.0
-        return self.start + (self.goal - self.start) * frac
+        return self.start + (self.end - self.start) * frac
+
+    def done(self, now: float) -> bool:
+        """Whether the profile has ended at ``now`` [s]."""
+        return now - self.t0 >= self.total
 
     def reading(self, ticks: I64, angles: F64) -> F64:
         """``angles`` [rad] read at ``ticks``, with every servo on its goal tick reading as

@@ -26,17 +26,16 @@ from __future__ import annotations
 
 import contextlib
 import math
-from collections.abc import Callable, Mapping
-from typing import Any
+from collections.abc import Callable
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .._clock import Clock, WallClock
-from .._errors import DeviceError
+from .._errors import DeviceError, InputError
 from ..devices import _xm430 as xm
 from ..devices.dynamixel import DynamixelBus
-from ..model import ArmModel
+from ..model import ArmModel, DynamixelSection, dynamixel_section
 from ..model._limits import check_grip, check_joints, check_speed, limits, move_time, ramp_time
 from ._driver import pieces
 from ._dxl_points import calibration_points as calibration_points
@@ -52,14 +51,13 @@ def open_driver(model: ArmModel, port: str | None) -> DynamixelDriver:
     """Open the arm's servos on ``port`` (a device path).
 
     Raises:
-        DeviceError: no port, no ``[drivers.dynamixel]`` table, or the servos do not answer.
+        ModelError: no or a wrong ``[drivers.dynamixel]`` table.
+        DeviceError: no port, or the servos do not answer.
     """
-    cfg = model.drivers.get("dynamixel")
-    if cfg is None:
-        raise DeviceError(f"{model.name} has no [drivers.dynamixel] table; not a Dynamixel arm")
+    cfg = dynamixel_section(model)
     if not port:
         raise DeviceError("the dynamixel driver needs a port: /dev/ttyUSB0 (say) or 'emu'")
-    bus = DynamixelBus(port, int(cfg.get("baudrate", 1_000_000)))
+    bus = DynamixelBus(port, cfg.baudrate)
     return DynamixelDriver(model, bus)
 
 
@@ -67,7 +65,7 @@ class DynamixelDriver:
     """Driver (see ``drivers._driver``) for a Dynamixel arm described by ``model``.
 
     Args:
-        config: the calibration table (default: the model's ``[drivers.dynamixel]``).
+        config: the setup (default: the model's ``[drivers.dynamixel]``, ``dynamixel_section``).
         clock: time for waiting (real time by default).  on_close: run once by ``close()``.
     """
 
@@ -76,24 +74,23 @@ class DynamixelDriver:
         model: ArmModel,
         bus: DynamixelBus,
         *,
-        config: Mapping[str, Any] | None = None,
+        config: DynamixelSection | None = None,
         clock: Clock | None = None,
         on_close: Callable[[], None] | None = None,
     ) -> None:
-        cfg = model.drivers["dynamixel"] if config is None else config
+        cfg = dynamixel_section(model) if config is None else config
         self.model, self.bus, self._on_close = model, bus, on_close
         self.clock = clock or WallClock()
-        self._extended = cfg.get("operating_mode", "position") == "extended"
-        self.ids = [int(i) for i in cfg["ids"]]
-        self.gripper_id = int(cfg["gripper_id"])
-        self._ticks_per_rad = float(cfg.get("ticks_per_turn", 4096)) / (2.0 * math.pi)
-        self._center = float(cfg.get("center_tick", 2048))
-        closed, opened = cfg.get("gripper_ticks", (1500, 2600))
-        self._grip_ticks = (int(closed), int(opened))
-        self._tolerance = int(cfg.get("position_tolerance_ticks", 30))
+        self._extended = cfg.operating_mode == "extended"
+        self.ids = list(cfg.ids)
+        self.gripper_id = cfg.gripper_id
+        self._ticks_per_rad = cfg.ticks_per_turn / (2.0 * math.pi)
+        self._center = cfg.center_tick
+        self._grip_ticks = cfg.gripper_ticks
+        self._tolerance = cfg.position_tolerance_ticks
         self._sent: SentProfile | None = None  # the last profile sent, while it holds
         try:
-            self._setup(int(cfg.get("gripper_current", 300)))
+            self._setup(cfg.gripper_current)
         except DeviceError:
             self.close()
             raise
@@ -139,22 +136,24 @@ class DynamixelDriver:
         goal = check_joints(self.model, q)
         frac = check_speed(speed)
         self._alive()
-        start = self._start()
-        seconds = move_time(self.model, start, goal, speed=frac, duration=duration)
+        asked, start = self._start()
+        seconds = move_time(self.model, asked, goal, speed=frac, duration=duration)
+        end = self.to_angles(self.to_ticks(goal))
+        if duration is None:  # the profile is timed for what the servos do: to the goal's tick
+            seconds = move_time(self.model, start, end, speed=frac)
         parts = pieces(start, goal, seconds, MAX_PROFILE_MS / 1000.0)
         if len(parts) > 1 and not wait:
-            raise ValueError(
+            raise InputError(
                 f"this move takes {seconds:.1f} s; a servo profile lasts at most "
                 f"{MAX_PROFILE_MS / 1000} s, so it goes in pieces and must wait"
             )
         _, amax = limits(self.model)
-        ramp = ramp_time(seconds, goal - start, amax) if len(parts) == 1 else 0.0
+        ramp = ramp_time(seconds, end - start, amax) if len(parts) == 1 else 0.0
         try:
             origin = start
             for k, (target, piece_s) in enumerate(parts):
                 last = k == len(parts) - 1
-                self._profile_move(origin, target, piece_s, ramp, wait or not last)
-                origin = target
+                origin = self._profile_move(origin, target, piece_s, ramp, wait or not last)
         except DeviceError as exc:
             lost: list[int] = []
             with contextlib.suppress(DeviceError):
@@ -171,18 +170,22 @@ class DynamixelDriver:
         seconds: float,
         ramp: float,
         wait: bool,
-    ) -> None:
-        """One time-based profile from ``origin`` to ``target`` [rad] lasting ``seconds``
-        with ``ramp`` [s] of acceleration at each end (pieces of a long move: none)."""
+    ) -> NDArray[np.float64]:
+        """One time-based profile from ``origin`` to ``target``'s ticks [rad] lasting
+        ``seconds`` with ``ramp`` [s] of acceleration at each end (pieces of a long move:
+        none). Returns where it ends [rad] (``target`` to the tick)."""
         total_ms = max(1, math.ceil(1000.0 * seconds - 1e-9))
         ramp_ms = min(round(1000.0 * ramp), total_ms // 2)
         ticks = self.to_ticks(target)
+        end = self.to_angles(ticks)
         self.bus.set_profiles({sid: (ramp_ms, total_ms) for sid in self.ids})
         self.bus.sync_write("Goal Position", dict(zip(self.ids, ticks.tolist(), strict=True)))
-        self._sent = SentProfile(origin, target.copy(), ticks, self.clock.now(), total_ms / 1000.0)
+        now, total = self.clock.now(), total_ms / 1000.0
+        self._sent = SentProfile(origin, target.copy(), end, ticks, now, total)
         if wait:
             self.clock.sleep(total_ms / 1000.0)  # nothing to ask before it can be done
             self._wait(total_ms / 1000.0 * 0.5 + 1.0, ticks)
+        return end
 
     def _wait(self, timeout: float, goal: NDArray[np.int64]) -> None:
         """Wait for the joints to stop and settle on ``goal`` [tick] (their encoders on it, for
@@ -222,23 +225,31 @@ class DynamixelDriver:
                 f"the {self.model.name}'s Dynamixel bus is closed; open the driver again"
             )
 
-    def _start(self) -> NDArray[np.float64]:
-        """Where a new move starts [rad]: where the last profile has the joints now (the
-        servos follow it, their encoders a little behind), unless they are further from
-        it than the arrival tolerance (blocked, pushed): then where they are."""
-        present = self.read()
+    def _start(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """Where a new move starts [rad]: (as the timing rule sees it, as the servos go).
+        The servos follow the last profile, their encoders a little behind, so a move
+        starts where the profile has them now (once it has ended: the angles it was
+        sent for, as ``read`` says, and their ticks), unless they are further from it
+        than the arrival tolerance (blocked, pushed): then where they are."""
+        ticks = self._ticks()
+        present = self.to_angles(ticks)
         if self._sent is None:
-            return present
-        commanded = self._sent.where(self.clock.now())
-        near = np.max(np.abs(present - commanded)) * self._ticks_per_rad <= self._tolerance
-        return commanded if near else present
+            return present, present
+        now = self.clock.now()
+        commanded = self._sent.where(now)
+        if np.max(np.abs(present - commanded)) * self._ticks_per_rad > self._tolerance:
+            return self._sent.reading(ticks, present), present
+        return (self._sent.goal if self._sent.done(now) else commanded), commanded
+
+    def _ticks(self) -> NDArray[np.int64]:
+        states = self.bus.read_states(self.ids)
+        return np.array([states[sid].position for sid in self.ids], dtype=np.int64)
 
     def read(self) -> NDArray[np.float64]:
         """Present joint angles [rad], shape (dof,), from one SYNC_READ; a servo on the
         tick of the last goal reads as that goal's angle (the tick holds it to within
         half a tick either way)."""
-        states = self.bus.read_states(self.ids)
-        ticks = np.array([states[sid].position for sid in self.ids])
+        ticks = self._ticks()
         angles = self.to_angles(ticks)
         return angles if self._sent is None else self._sent.reading(ticks, angles)
 

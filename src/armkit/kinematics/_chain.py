@@ -1,61 +1,162 @@
-"""The DH chain as flat arrays, prepared once per model for fast evaluation."""
+"""An ArmModel compiled once into an immutable, typed chain, held beside the model.
+
+``chain_of(model)`` is the one accessor every kinematics function uses. The
+compiled ``Chain`` lives in a module-level map keyed by the model's identity
+(``ArmModel`` is frozen and compares by identity) and is dropped when the
+model is garbage-collected (``weakref.finalize``). A plain dict keyed by
+``id`` is used rather than a ``WeakKeyDictionary`` because the lookup sits on
+the microsecond paths (a weak-key lookup builds a weak reference per call);
+the finalizer removes the entry before the id can be reused.
+"""
 
 from __future__ import annotations
 
+import math
+import weakref
 from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
 
-from ..model import ArmModel
+from .._errors import ModelError
+from ..model import ArmModel, JointFrame
+from ._closed_fast import FixedSolver, NearestPitch, fixed_solver, nearest_pitch_solver
+from ._family import PlanarFamily, detect
+from ._planar import wrist_range
+from ._pose import pitch_scalar
+from ._scalar import State, compile_state
+from ._steps import Fixed, Step, frames_of, steps_of
+
+F64 = NDArray[np.float64]
 
 
 @dataclass(frozen=True, eq=False)
 class Chain:
-    """Per-joint DH constants of one model, shape (dof,) each [m, rad]."""
+    """Everything the kinematics functions need of one model, computed once.
 
-    modified: bool
-    a: NDArray[np.float64]
-    d: NDArray[np.float64]
-    ca: NDArray[np.float64]
-    sa: NDArray[np.float64]
-    offset: NDArray[np.float64]
-    sign: NDArray[np.float64]
-    T_tool: NDArray[np.float64]
-    # Python-float copies for the scalar paths.
-    rows: tuple[tuple[float, float, float, float, float, float], ...]
+    Attributes:
+        name: the model's name.  dof: number of joints.
+        steps, tool: the chain (see ``_steps``).
+        state: the scalar forward kinematics, q (dof floats) [rad] -> ``ChainState``.
+        lower, upper, home: joint limits and home [rad] as Python floats;
+        lower_a, upper_a, home_a: the same as arrays, shape (dof,); signs, offsets: each
+            step's sign and angle offset [rad], shape (dof,).
+        joint_names: the joints' names.
+        default_pitch: the model's pitch when none is given [rad], or None.
+        reach: upper bound on the tool point's distance from the world origin [m];
+            reach2: its square (plus a nanometre) [m^2].
+        weight: metres per radian for the numeric solvers' angle rows [m/rad].
+        family: the closed-form geometry, or None; why_not: why not ('' if it applies).
+        home_pitch: the tool's pitch at home [rad].
+        wrist_reach: (min, max) distance [m] from the first planar joint to the end of
+            link 2 that the elbow's limits allow (family arms; else (0, 0)).
+        fixed: the closed form at one pitch with this chain's constants bound
+            (``_closed_fast``), or None.
+        nearest: the pitch nearest a wanted one at which the wrist is within reach
+            (``_closed_fast``), or None where the general path is used.
+    """
+
+    name: str
+    dof: int
+    steps: tuple[Step, ...]
+    tool: Fixed
+    state: State
+    lower: tuple[float, ...]
+    upper: tuple[float, ...]
+    home: tuple[float, ...]
+    lower_a: F64
+    upper_a: F64
+    home_a: F64
+    signs: F64
+    offsets: F64
+    joint_names: tuple[str, ...]
+    default_pitch: float | None
+    reach: float
+    reach2: float
+    weight: float
+    family: PlanarFamily | None
+    why_not: str
+    home_pitch: float
+    wrist_reach: tuple[float, float]
+    fixed: FixedSolver | None
+    nearest: NearestPitch | None
+
+
+_CHAINS: dict[int, Chain] = {}
 
 
 def chain_of(model: ArmModel) -> Chain:
-    """The model's ``Chain``, built once and cached on the model."""
-    chain = model._cache.get("chain")
+    """The compiled chain of ``model``, built on first use."""
+    chain = _CHAINS.get(id(model))
     if chain is None:
-        chain = _build(model)
-        model._cache["chain"] = chain
-    return chain  # type: ignore[no-any-return]
+        chain = compile_chain(model)
+        _CHAINS[id(model)] = chain
+        weakref.finalize(model, _CHAINS.pop, id(model), None)
+    return chain
 
 
-def _build(model: ArmModel) -> Chain:
-    a = np.array([r.a for r in model.dh])
-    d = np.array([r.d for r in model.dh])
-    alpha = np.array([r.alpha for r in model.dh])
-    ca, sa = np.cos(alpha), np.sin(alpha)
-    ca[np.abs(ca) < 1e-15] = 0.0
-    sa[np.abs(sa) < 1e-15] = 0.0
-    offset = np.array([r.theta_offset for r in model.dh])
-    sign = np.array([r.sign for r in model.dh])
-    rows = tuple(
-        (float(a[i]), float(d[i]), float(ca[i]), float(sa[i]), float(offset[i]), float(sign[i]))
-        for i in range(model.dof)
-    )
+MAX_REACH = 1e4  # [m]: beyond it float arithmetic on the chain loses its metres
+
+
+def joint_frames(model: ArmModel) -> tuple[tuple[JointFrame, ...], F64]:
+    """The chain as URDF describes it: per joint its frame (origin from the previous joint's
+    frame, axis), and the tool frame in the last joint's frame, shape (4, 4) [m]."""
+    chain = chain_of(model)
+    return frames_of(chain.steps), chain.tool.T
+
+
+def compile_chain(model: ArmModel) -> Chain:
+    """Build the ``Chain`` of a model (use ``chain_of``, which keeps it).
+
+    Raises:
+        ModelError: the chain is not finite or reaches beyond ``MAX_REACH``.
+    """
+    steps, tool = steps_of(model)
+    reach = sum(math.hypot(*s.before.T[:3, 3]) for s in steps) + math.hypot(*tool.T[:3, 3])
+    if not reach <= MAX_REACH:
+        raise ModelError(
+            f"{model.name}: the links add up to {reach:.3g} m; armkit's kinematics takes arms "
+            f"up to {MAX_REACH / 1000:g} km (check the model's lengths are in mm)"
+        )
+    state = compile_state(steps, tool)
+    at_zero = state([0.0] * model.dof)
+    T0 = np.eye(4)
+    T0[:3, :3] = np.array(at_zero.R).T
+    T0[:3, 3] = at_zero.p
+    family = detect(at_zero.jw, at_zero.origins, T0)
+    lower = tuple(float(j.lower) for j in model.joints)
+    upper = tuple(float(j.upper) for j in model.joints)
+    home = tuple(float(j.home) for j in model.joints)
+    at_home = state(list(home))
+    fam = family if isinstance(family, PlanarFamily) else None
+    j2 = fam.planar[1] if fam is not None else 0
     return Chain(
-        modified=model.convention == "modified",
-        a=a,
-        d=d,
-        ca=ca,
-        sa=sa,
-        offset=offset,
-        sign=sign,
-        T_tool=model.T_flange_tool,
-        rows=rows,
+        name=model.name,
+        dof=model.dof,
+        steps=steps,
+        tool=tool,
+        state=state,
+        lower=lower,
+        upper=upper,
+        home=home,
+        lower_a=np.array(lower),
+        upper_a=np.array(upper),
+        home_a=np.array(home),
+        signs=np.array([s.sign for s in steps]),
+        offsets=np.array([s.offset for s in steps]),
+        joint_names=model.joint_names,
+        default_pitch=model.default_pitch,
+        reach=reach,
+        reach2=(reach + 1e-9) * (reach + 1e-9),
+        weight=0.5 * reach,
+        family=fam,
+        why_not="" if isinstance(family, PlanarFamily) else f"{model.name} {family}",
+        home_pitch=pitch_scalar(at_home.R[0], at_home.p),
+        wrist_reach=wrist_range(fam, lower[j2], upper[j2]) if fam is not None else (0.0, 0.0),
+        fixed=fixed_solver(fam, lower, upper) if fam is not None else None,
+        nearest=None
+        if fam is None or fam.base is None
+        else nearest_pitch_solver(
+            fam, wrist_range(fam, lower[j2], upper[j2]), (lower[fam.base], upper[fam.base])
+        ),
     )

@@ -2,8 +2,11 @@
 planar chain of 2 or 3 joints with parallel horizontal axes, then any roll
 joints whose axis is the approach line through the tool point.
 
-The test is geometric, on the chain's frames at q = 0, so it holds for any DH
-convention, offsets and flips, and for a user's own arm of that shape.
+The test is geometric, on the joint axes and the tool at q = 0, so it holds
+for any chain (DH in either convention, offsets and flips, URDF frames) and
+for a user's own arm of that shape. Links shorter than ``MIN_LINK`` or longer
+than ``MAX_LINK`` are refused with the reason (the law of cosines divides by
+their lengths); such an arm is solved numerically.
 """
 
 from __future__ import annotations
@@ -15,12 +18,12 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from ..model import ArmModel
-from ._fk import fk_frames
-
 F64 = NDArray[np.float64]
 Vec2 = tuple[float, float]
+Vec3 = tuple[float, float, float]
 _EPS = 1e-9
+MIN_LINK = 1e-6  # [m]
+MAX_LINK = 1e4  # [m]
 
 
 @dataclass(frozen=True)
@@ -42,7 +45,9 @@ class PlanarFamily:
         phi0: approach angle in the plane at q = 0 [rad].
         lateral: tool point's offset along u [m].
         azimuth_r: azimuth of e_r at q = 0 [rad].
-        u: the planar axis at q = 0, shape (3,).
+        u: the planar axis at q = 0.
+        l1, l2: lengths of the first two links [m]; ang1: angle of link 1 at q = 0,
+            bend: angle of link 2 relative to link 1 at q = 0 [rad].
     """
 
     base: int | None
@@ -55,56 +60,34 @@ class PlanarFamily:
     phi0: float
     lateral: float
     azimuth_r: float
-    u: tuple[float, float, float]
+    u: Vec3
+    l1: float
+    l2: float
+    ang1: float
+    bend: float
 
 
-def family_of(model: ArmModel) -> PlanarFamily | None:
-    """The model's closed-form geometry, or None if it is not of the family (cached)."""
-    if "family" not in model._cache:
-        model._cache["family"] = _detect(model)
-    fam: PlanarFamily | None = model._cache["family"]
-    return fam
-
-
-def why_not_family(model: ArmModel) -> str:
-    """One line saying why the closed form does not apply ('' if it does)."""
-    if family_of(model) is not None:
-        return ""
-    return (
-        f"{model.name} is not a base yaw + planar chain (2-3 parallel horizontal axes, "
-        "then only roll joints about the approach line); use a numeric method such as 'lm'"
-    )
-
-
-def _axes(model: ArmModel) -> tuple[list[F64], list[F64], F64]:
-    """Each joint's signed axis and a point on it at q = 0, and the tool pose."""
-    frames = fk_frames(model, np.zeros(model.dof))
-    shift = 1 if model.convention == "modified" else 0
-    axes = [frames[i + shift][:3, 2] * model.dh[i].sign for i in range(model.dof)]
-    points = [frames[i + shift][:3, 3] for i in range(model.dof)]
-    return axes, points, frames[-1]
-
-
-def _detect(model: ArmModel) -> PlanarFamily | None:
-    axes, points, tool = _axes(model)
-    z = np.array([0.0, 0.0, 1.0])
-    has_base = abs(axes[0] @ z) > 1 - _EPS and math.hypot(points[0][0], points[0][1]) < _EPS
+def detect(axes: list[Vec3], points: list[Vec3], tool: F64) -> PlanarFamily | str:
+    """The family geometry from each joint's signed axis and a point on it at q = 0 and
+    the tool pose (4, 4) there; or one line saying why the arm is not of the family."""
+    ax, pts = [np.array(a) for a in axes], [np.array(p) for p in points]
+    dof, z = len(ax), np.array([0.0, 0.0, 1.0])
+    has_base = abs(ax[0] @ z) > 1 - _EPS and math.hypot(pts[0][0], pts[0][1]) < _EPS
     start = 1 if has_base else 0
-    if start >= model.dof:
-        return None
-    u = axes[start] / np.linalg.norm(axes[start])
-    if abs(u @ z) > _EPS:
-        return None
+    why = "is not a base yaw + planar chain (2-3 parallel horizontal axes, then only roll joints about the approach line)"
+    if start >= dof or abs(ax[start] @ z) > _EPS:
+        return why
+    u = ax[start] / np.linalg.norm(ax[start])
     planar = [start]
-    while planar[-1] + 1 < model.dof and abs(axes[planar[-1] + 1] @ u) > 1 - _EPS:
+    while planar[-1] + 1 < dof and abs(ax[planar[-1] + 1] @ u) > 1 - _EPS:
         planar.append(planar[-1] + 1)
     tip, approach = tool[:3, 3], tool[:3, 0]
-    trailing = list(range(planar[-1] + 1, model.dof))
+    trailing = list(range(planar[-1] + 1, dof))
     if not 2 <= len(planar) <= 3 or abs(approach @ u) > _EPS:
-        return None
-    if not all(_on_line(axes[j], points[j], approach, tip) for j in trailing):
-        return None
-    return _geometry(model, has_base, axes, points, tool, u, planar, trailing)
+        return why
+    if not all(_on_line(ax[j], pts[j], approach, tip) for j in trailing):
+        return why
+    return _geometry(has_base, ax, pts, tool, u, planar, trailing)
 
 
 def _on_line(axis: F64, point: F64, direction: F64, tip: F64) -> bool:
@@ -114,34 +97,41 @@ def _on_line(axis: F64, point: F64, direction: F64, tip: F64) -> bool:
 
 
 def _geometry(
-    model: ArmModel,
-    has_base: bool,
-    axes: list[F64],
-    points: list[F64],
-    tool: F64,
-    u: F64,
-    planar: list[int],
+    has_base: bool, ax: list[F64], pts: list[F64], tool: F64, u: F64, planar: list[int],
     trailing: list[int],
-) -> PlanarFamily:
+) -> PlanarFamily | str:  # fmt: skip
     e_z = np.array([0.0, 0.0, 1.0])
     e_r = np.cross(e_z, u)
 
     def plane(p: F64) -> Vec2:
         return (float(p @ e_r), float(p @ e_z))
 
-    centres = [plane(points[j]) for j in planar] + [plane(tool[:3, 3])]
+    centres = [plane(pts[j]) for j in planar] + [plane(tool[:3, 3])]
     links = tuple((b[0] - a[0], b[1] - a[1]) for a, b in itertools.pairwise(centres))
+    (v1x, v1z), (v2x, v2z) = links[0], links[1]
+    l1, l2 = math.hypot(v1x, v1z), math.hypot(v2x, v2z)
+    for k, length in ((1, l1), (2, l2)):
+        if not MIN_LINK <= length <= MAX_LINK:
+            return (
+                f"has a planar link {k} of {length * 1000:.3g} mm; the closed form needs "
+                f"{MIN_LINK * 1000:g} mm to {MAX_LINK / 1000:g} km"
+            )
     approach = plane(tool[:3, 0])
+    ang1 = math.atan2(v1z, v1x)
     return PlanarFamily(
         base=0 if has_base else None,
-        base_sign=float(np.sign(axes[0][2])) if has_base else 1.0,
+        base_sign=float(np.sign(ax[0][2])) if has_base else 1.0,
         planar=tuple(planar),
-        sigma=tuple(float(np.sign(axes[j] @ u)) for j in planar),
+        sigma=tuple(float(np.sign(ax[j] @ u)) for j in planar),
         trailing=tuple(trailing),
         c1=centres[0],
         links=links,
         phi0=math.atan2(approach[1], approach[0]),
-        lateral=float(tool[:3, 3] @ u),
+        lateral=lateral if abs(lateral := float(tool[:3, 3] @ u)) > 1e-12 else 0.0,
         azimuth_r=math.atan2(e_r[1], e_r[0]),
         u=(float(u[0]), float(u[1]), float(u[2])),
+        l1=l1,
+        l2=l2,
+        ang1=ang1,
+        bend=math.atan2(v2z, v2x) - ang1,
     )

@@ -3,44 +3,47 @@
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .._errors import InputError
 from ..model import ArmModel
-from . import _analytic
-from ._analytic_batch import solve_batch as solve_batch_analytic
-from ._family import PlanarFamily, family_of, why_not_family
-from ._fast import fast_solver
-from ._fk import CHUNK, fk
-from ._free_pitch_batch import free_pitch_batch
-from ._numeric import solve_batch, solve_task
-from ._numeric._inputs import numeric_task, tolerances
-from ._pose import pitch_of
+from ._chain import Chain, chain_of
+from ._closed import best, reasons, solve
+from ._closed_scalar import free, refusal, too_far
+from ._forward import CHUNK
+from ._numeric import solve_many, solve_one
+from ._pitch_range import free_batch, preferred
 from ._result import IKBatchResult, IKResult
-from ._validate import joint_array, point_array
+from ._target import Goal, Target
+from ._validate import angle, array, choice, joints, point, rotation, tolerance
 
 F64 = NDArray[np.float64]
-METHODS = ("auto", "analytic", "lm", "ccd", "jacobian", "random")
+MethodName = Literal["auto", "analytic", "lm", "ccd", "jacobian", "random"]
+METHOD_NAMES: tuple[MethodName, ...] = ("auto", "analytic", "lm", "ccd", "jacobian", "random")
+TOL_M = 1e-5  # [m] = 0.01 mm
+TOL_RAD = math.radians(0.01)
 
 
 def ik(
     model: ArmModel,
-    position: ArrayLike,
+    position: ArrayLike | Target,
     pitch: float | None = None,
     q_seed: ArrayLike | None = None,
     *,
     orientation: ArrayLike | None = None,
-    method: str = "auto",
-    tol_mm: float = 0.01,
-    tol_deg: float = 0.01,
+    method: MethodName = "auto",
+    tol_m: float = TOL_M,
+    tol_rad: float = TOL_RAD,
 ) -> IKResult:
     """Joint angles that put the tool at ``position``.
 
     Args:
         model: the arm.
-        position: tool point in the world frame [m], shape (3,).
+        position: tool point in the world frame [m], shape (3,), or a ``Target``
+            (then pitch and orientation come from it).
         pitch: approach angle above the horizontal [rad] (-pi/2 = pointing
             down), or None: the model's default pitch, else any pitch (the one
             nearest the seed's).
@@ -49,216 +52,173 @@ def ik(
         orientation: full tool orientation R_world_tool, shape (3, 3) (numeric methods).
         method: ``"auto"`` (closed form where the arm's shape allows, else
             ``"lm"``), ``"analytic"``, ``"lm"``, ``"ccd"``, ``"jacobian"``, ``"random"``.
-        tol_mm: position tolerance of numeric methods [mm].
-        tol_deg: pitch/orientation tolerance of numeric methods [deg].
+        tol_m: position tolerance of numeric methods [m].
+        tol_rad: pitch/orientation tolerance of numeric methods [rad].
 
     Returns:
         IKResult with ``q`` the best solution and ``solutions`` every one found.
 
     Raises:
         UnreachableError: no solution inside the limits (``reason`` says why).
-        ValueError: malformed input, naming the argument.
+        InputError: malformed input (a ValueError), naming the argument.
     """
-    if isinstance(position, tuple) and len(position) == 3:  # the common case, without a call
-        x, y, z = float(position[0]), float(position[1]), float(position[2])
-        if not (math.isfinite(x) and math.isfinite(y) and math.isfinite(z)):
-            raise ValueError(f"position must be finite, got {(x, y, z)}")
-    else:
-        x, y, z = _point(position)
-    cache = model._cache
-    seed = cache.get("home") or _seed(model, None) if q_seed is None else _seed(model, q_seed)
-    if pitch is not None:
-        pitch = pitch if type(pitch) is float and math.isfinite(pitch) else _finite(pitch, "pitch")
-    elif model.default_pitch is not None and orientation is None:
-        pitch = model.default_pitch
-    if orientation is None and (method == "auto" or method == "analytic"):
-        fast = cache["fast"] if "fast" in cache else fast_solver(model)
-        found = fast(x, y, z, pitch, seed) if fast is not None else None
-        if found is not None:
-            return IKResult.closed_form(found[0], found[1], (model, (x, y, z), pitch))
-    p = (x, y, z)
-    fam = family_of(model)
-    use = _choose(model, fam, method, orientation)
-    if use == "analytic":
-        assert fam is not None
-        return _closed_form(model, fam, p, pitch, seed)
-    tol_pos, tol_ang = tolerances(tol_mm / 1000.0, math.radians(tol_deg))
-    task = numeric_task(model, p, pitch, orientation)
-    return solve_task(use, model, task, list(seed), tol_pos, tol_ang)
-
-
-def _choose(model: ArmModel, fam: PlanarFamily | None, method: str, orientation: Any) -> str:
-    if method not in METHODS:
-        raise ValueError(f"method must be one of {', '.join(METHODS)}, got {method!r}")
-    if method == "analytic" and (fam is None or orientation is not None):
-        why = (
-            why_not_family(model)
-            or "the closed form takes a position and a pitch, not an orientation"
-        )
-        raise ValueError(f"method 'analytic' does not apply: {why}")
-    if method == "auto":
-        return "analytic" if fam is not None and orientation is None else "lm"
-    return method
-
-
-def _closed_form(
-    model: ArmModel,
-    fam: PlanarFamily,
-    p: tuple[float, ...],
-    pitch: float | None,
-    seed: tuple[float, ...],
-) -> IKResult:
-    sols = _analytic.solve(model, fam, p, pitch, seed)
-    ranked = [(float(k), q) for k, q in enumerate(sols)]  # already best first
-    return IKResult.closed_form(sols[0], ranked, (model, p, pitch))
-
-
-def measure_error(
-    model: ArmModel, p: tuple[float, ...], pitch: float | None, q: F64
-) -> tuple[float, float]:
-    """Position [m] and pitch [rad] error of joint angles q [rad] for a target, by FK."""
-    T = fk(model, q)
-    pos = float(np.linalg.norm(T[:3, 3] - np.asarray(p)))
-    if pitch is None:
-        return pos, 0.0
-    return pos, abs(math.remainder(float(pitch_of(T)) - pitch, 2 * math.pi))
-
-
-def _point(position: ArrayLike) -> tuple[float, float, float]:
-    """``position`` as three finite floats; ValueError naming it otherwise."""
-    if isinstance(position, np.ndarray):
-        if position.shape != (3,):
-            raise ValueError(f"position must have shape (3,), got {position.shape}")
-        position = position.tolist()
-    try:
-        x, y, z = position  # type: ignore[misc, str-unpack]
-        out = (float(x), float(y), float(z))  # type: ignore[arg-type]
-    except (TypeError, ValueError):
-        raise ValueError(
-            f"position must be three numbers (x, y, z) [m], got {position!r}"
-        ) from None
-    if not (math.isfinite(out[0]) and math.isfinite(out[1]) and math.isfinite(out[2])):
-        raise ValueError(f"position must be finite, got {out}")
-    return out
-
-
-def _finite(value: Any, name: str) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a number, got {value!r}") from None
-    if not math.isfinite(v):
-        raise ValueError(f"{name} must be finite, got {v}")
-    return v
-
-
-def _seed(model: ArmModel, q_seed: ArrayLike | None) -> tuple[float, ...]:
+    chain = chain_of(model)
+    if isinstance(position, Target):
+        position, pitch, orientation = _unpack(position, pitch, orientation)
+    p = point(position)
+    if not (type(pitch) is float and pitch - pitch == 0.0):  # else: a finite float already
+        pitch = angle(pitch, "pitch")
+    if p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > chain.reach2:
+        raise too_far(chain, p, pitch)
     if q_seed is None:
-        home: tuple[float, ...] | None = model._cache.get("home")
-        if home is None:
-            home = tuple(j.home for j in model.joints)
-            model._cache["home"] = home
-        return home
-    qa = np.asarray(q_seed, dtype=np.float64)
-    q = qa.tolist() if qa.shape == (model.dof,) else None
-    if q is None or not all(map(math.isfinite, q)):
-        raise ValueError(
-            f"q_seed must be {model.dof} finite joint angles [rad], got shape {qa.shape}"
+        seed = chain.home
+    elif isinstance(q_seed, np.ndarray) and q_seed.shape == (chain.dof,) and q_seed.dtype == float:
+        seed = tuple(q_seed.tolist())  # the common case, checked without a new array
+        if not all(v - v == 0.0 for v in seed):
+            raise InputError("q_seed must be finite [rad], got NaN or infinity")
+    else:
+        seed = tuple(joints(q_seed, chain.dof, "q_seed", False).tolist())
+    if orientation is None and (method == "auto" or method == "analytic"):
+        fam = chain.family
+        if pitch is None:
+            pitch = chain.default_pitch
+        if fam is not None and chain.fixed is not None:
+            if pitch is not None or len(fam.planar) == 2:
+                found = chain.fixed(p[0], p[1], p[2], pitch, seed, None)
+            else:
+                found = free(chain, fam, p[0], p[1], p[2], seed)
+            if not found:
+                raise refusal(chain, fam, p, pitch, seed)
+            return IKResult.of(
+                tuple(found), "analytic", tuple.__new__(Goal, (p, pitch, None)), chain
+            )
+    elif orientation is None and pitch is None:
+        pitch = chain.default_pitch
+    use = _numeric_method(chain, method, orientation)
+    R = None if orientation is None else rotation(orientation, "orientation")
+    if R is not None and pitch is not None:
+        raise InputError("give pitch or orientation, not both")
+    goal = Goal(p, pitch, None if R is None else tuple(R.ravel().tolist()))
+    tol = (tolerance(tol_m, "tol_m"), tolerance(tol_rad, "tol_rad"))
+    return solve_one(use, chain, goal, list(seed), *tol)
+
+
+def why_no_closed_form(model: ArmModel) -> str:
+    """'' if the closed form applies to ``model``, else one line saying why not."""
+    return chain_of(model).why_not
+
+
+def _unpack(target: Target, pitch: Any, orientation: Any) -> tuple[Any, Any, Any]:
+    if pitch is not None or orientation is not None:
+        raise InputError("give a Target, or a position with pitch / orientation, not both")
+    return target.position, target.pitch, target.orientation
+
+
+def _numeric_method(
+    chain: Chain, method: Any, orientation: Any
+) -> Literal["lm", "ccd", "jacobian", "random"]:
+    """The numeric method to use; InputError for an unknown one or 'analytic' that cannot apply."""
+    name = choice(method, "method", METHOD_NAMES)
+    if name == "analytic":
+        why = chain.why_not or "the closed form takes a position and a pitch, not an orientation"
+        raise InputError(
+            f"method 'analytic' does not apply: {why}; use a numeric method such as 'lm'"
         )
-    return tuple(q)
+    return "lm" if name == "auto" else name  # type: ignore[return-value]
 
 
 def ik_batch(
     model: ArmModel,
-    positions: ArrayLike,
+    positions: ArrayLike | Target,
     pitches: ArrayLike | None = None,
     q_seed: ArrayLike | None = None,
     *,
     orientations: ArrayLike | None = None,
-    method: str = "auto",
-    tol_mm: float = 0.01,
-    tol_deg: float = 0.01,
+    method: MethodName = "auto",
+    tol_m: float = TOL_M,
+    tol_rad: float = TOL_RAD,
 ) -> IKBatchResult:
     """Joint angles for N targets at once, vectorised in numpy.
 
     Args:
-        positions: tool points [m], shape (N, 3).
+        positions: tool points [m], shape (N, 3) (N may be 0), or a ``Target`` of N targets.
         pitches: pitch [rad], a number or shape (N,), or None (the model's
             default pitch, else free: nearest the seed's).
         q_seed: [rad], shape (dof,) or (N, dof); default home.
         orientations: full tool orientations R_world_tool, shape (N, 3, 3)
             (numeric methods; instead of pitches).
         method: ``"auto"``, ``"analytic"`` or ``"lm"``.
+        tol_m, tol_rad: tolerances of the numeric method [m], [rad].
 
     Returns:
         IKBatchResult: best solution per target (NaN rows where none), ``ok`` and ``reason``.
     """
-    P = point_array(positions, "positions", batch=True)
-    seed = _batch_seed(model, q_seed, len(P))
-    pitch = _batch_pitch(model, pitches, len(P))
-    fam = family_of(model)
-    use = _choose(model, fam, method, orientations)
-    if use != "analytic":
-        if orientations is not None and pitch is not None:
-            raise ValueError("give pitches or orientations, not both")
-        tol_pos, tol_ang = tol_mm / 1000.0, math.radians(tol_deg)
-        return solve_batch(model, P, pitch, orientations, seed, tol_pos, tol_ang)
-    assert fam is not None
-    if pitch is None and len(fam.planar) == 3:
-        return _free_pitch_batch(model, fam, P, seed)
-    q, ok, reason = _analytic_chunks(model, fam, P, pitch, seed)
+    chain = chain_of(model)
+    if isinstance(positions, Target):
+        positions, pitches, orientations = _unpack(positions, pitches, orientations)
+    P = array(positions, "positions", ((None, 3),), "m")  # type: ignore[arg-type]
+    n = len(P)
+    with np.errstate(over="ignore"):
+        far = ~(np.einsum("ni,ni->n", P, P) <= chain.reach2)  # overflow counts as far
+    if far.any():  # solve the others; the far ones are refused as such
+        out = ik_batch(
+            model, np.where(far[:, None], 0.0, P), pitches, q_seed, orientations=orientations,
+            method=method, tol_m=tol_m, tol_rad=tol_rad,
+        )  # fmt: skip
+        out.q[far], out.ok[far] = np.nan, False
+        reason = out.reason.astype("<U14")
+        reason[far] = "too_far"
+        return IKBatchResult(out.q, out.ok, reason, out.method)
+    seed = _batch_seed(chain, q_seed, n)
+    pitch = _batch_pitch(chain, pitches, n)
+    name = choice(method, "method", METHOD_NAMES)
+    fam = chain.family
+    if fam is not None and orientations is None and name in ("auto", "analytic"):
+        return _closed_batch(chain, fam, P, pitch, seed)
+    use = _numeric_method(chain, name, orientations)
+    if use != "lm":
+        raise InputError(f"ik_batch solves with 'analytic' or 'lm', got {method!r}")
+    R = None if orientations is None else rotation(orientations, "orientations", n)
+    if R is not None and pitch is not None:
+        raise InputError("give pitches or orientations, not both")
+    tol = (tolerance(tol_m, "tol_m"), tolerance(tol_rad, "tol_rad"))
+    if n == 0:
+        return IKBatchResult(np.zeros((0, chain.dof)), np.zeros(0, bool), np.zeros(0, "<U14"), "lm")
+    return solve_many(chain, P, pitch, R, seed, *tol)
+
+
+def _closed_batch(chain: Chain, fam: Any, P: F64, pitch: F64 | None, seed: F64) -> IKBatchResult:
+    """The vectorised closed form over cache-sized chunks of targets, with reasons."""
+    q, ok = np.full((len(P), chain.dof), np.nan), np.zeros(len(P), dtype=bool)
+    reason = np.full(len(P), "", dtype="<U11")
+    free = pitch is None and len(fam.planar) == 3
+    if free:  # whole batch at once: its rounds over the few hard targets cost per round
+        q, ok = free_batch(chain, fam, P, seed)
+    for s in range(0, len(P), CHUNK):
+        part, sd = P[s : s + CHUNK], seed[s : s + CHUNK]
+        at = None if pitch is None else pitch[s : s + CHUNK]
+        if not free:
+            q[s : s + CHUNK], ok[s : s + CHUNK] = best(solve(chain, fam, part, at, sd), sd)
+        bad = np.flatnonzero(~ok[s : s + CHUNK])
+        if bad.size:  # why not: the candidates at the asked (or the seed's) pitch
+            at = preferred(chain, sd[bad]) if free else (None if at is None else at[bad])
+            reason[s + bad] = reasons(fam, solve(chain, fam, part[bad], at, sd[bad]))
     return IKBatchResult(q=q, ok=ok, reason=reason, method="analytic")
 
 
-def _analytic_chunks(
-    model: ArmModel, fam: PlanarFamily, P: F64, pitch: F64 | None, seed: F64
-) -> tuple[F64, NDArray[np.bool_], NDArray[np.str_]]:
-    """The vectorised closed form over cache-sized chunks of targets."""
-    parts = [
-        solve_batch_analytic(
-            model,
-            fam,
-            P[s : s + CHUNK],
-            None if pitch is None else pitch[s : s + CHUNK],
-            seed[s : s + CHUNK],
-        )
-        for s in range(0, len(P), CHUNK)
-    ]
-    if len(parts) == 1:
-        return parts[0]
-    q, ok, reason = zip(*parts, strict=True)
-    return np.concatenate(q), np.concatenate(ok), np.concatenate(reason)
-
-
-def _free_pitch_batch(model: ArmModel, fam: PlanarFamily, P: F64, seed: F64) -> IKBatchResult:
-    """Position-only targets: the pitch nearest each seed's that fits (see _free_pitch_batch)."""
-
-    def solve(p: F64, pitch: F64, s: F64) -> tuple[F64, NDArray[np.bool_], NDArray[np.str_]]:
-        return _analytic_chunks(model, fam, p, pitch, s)
-
-    q, ok, reason = free_pitch_batch(model, fam, P, seed, solve)
-    return IKBatchResult(q=q, ok=ok, reason=reason, method="analytic")
-
-
-def _batch_seed(model: ArmModel, q_seed: ArrayLike | None, n: int) -> F64:
+def _batch_seed(chain: Chain, q_seed: ArrayLike | None, n: int) -> F64:
     if q_seed is None:
-        return np.repeat(model.home[None, :], n, axis=0)
-    qa = joint_array(model, q_seed, "q_seed")
+        return np.broadcast_to(chain.home_a, (n, chain.dof)).copy()
+    qa = joints(q_seed, chain.dof, "q_seed")
     if qa.ndim == 2 and qa.shape[0] != n:
-        raise ValueError(
-            f"q_seed must have shape ({model.dof},) or ({n}, {model.dof}), got {qa.shape}"
+        raise InputError(
+            f"q_seed must have shape ({chain.dof},) or ({n}, {chain.dof}), got shape {qa.shape}"
         )
-    return np.broadcast_to(qa, (n, model.dof)).copy()
+    return np.broadcast_to(qa, (n, chain.dof)).copy()
 
 
-def _batch_pitch(model: ArmModel, pitches: ArrayLike | None, n: int) -> F64 | None:
+def _batch_pitch(chain: Chain, pitches: ArrayLike | None, n: int) -> F64 | None:
     if pitches is None:
-        return None if model.default_pitch is None else np.full(n, model.default_pitch)
-    pa = np.asarray(pitches, dtype=np.float64)
-    if pa.ndim == 0:
-        pa = np.full(n, float(pa))
-    if pa.shape != (n,) or not np.all(np.isfinite(pa)):
-        raise ValueError(
-            f"pitches must be a finite number or shape ({n},) [rad], got shape {pa.shape}"
-        )
-    return pa
+        return None if chain.default_pitch is None else np.full(n, chain.default_pitch)
+    pa = array(pitches, "pitches", ((), (n,)), "rad")
+    return np.full(n, float(pa)) if pa.ndim == 0 else pa

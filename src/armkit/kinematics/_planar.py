@@ -1,7 +1,7 @@
-"""Plane geometry of the closed-form family: the two-link law of cosines, the
-chain's forward map in its plane, and pitch <-> plane-angle conversion.
+"""Plane geometry of the closed-form family, shared by its scalar and batch solvers:
+base branches, pitch <-> plane turn, and the wrist's reachable range.
 
-Angles here are *plane* angles alpha_j = sigma_j * q_j [rad]; lengths [m].
+Angles here are plane angles alpha_j = sigma_j * q_j [rad]; lengths [m].
 """
 
 from __future__ import annotations
@@ -10,45 +10,50 @@ import math
 
 from ._family import PlanarFamily
 
-Vec2 = tuple[float, float]
+_TWO_PI = 2.0 * math.pi
+Plane = tuple[float, float, float]  # (r signed, rho, base angle) of one base branch
 
 
-def two_link(fam: PlanarFamily, wx: float, wz: float) -> tuple[list[tuple[float, float]], str]:
-    """Plane angles (alpha_1, alpha_2) of the first two planar joints that put
-    the end of the second link at (wx, wz) [m], both elbow branches.
+def wrist_range(fam: PlanarFamily, lower: float, upper: float) -> tuple[float, float]:
+    """Smallest and largest distance [m] from the first planar joint to the end of
+    link 2 that the second planar joint's limits [rad] allow (both elbow branches)."""
+    s = fam.sigma[1]
+    ends = sorted((s * lower + fam.bend, s * upper + fam.bend))
+    full = upper - lower >= _TWO_PI
 
-    Returns:
-        The solutions (0, 1 or 2), and '' or the reason there are none
-        (``"too_far"`` / ``"too_close"``).
-    """
-    v1, v2 = fam.links[0], fam.links[1]
-    cx, cz = fam.c1
-    dx, dz = wx - cx, wz - cz
-    l1, l2 = math.hypot(*v1), math.hypot(*v2)
-    cos_g = (dx * dx + dz * dz - l1 * l1 - l2 * l2) / (2.0 * l1 * l2)
-    if cos_g > 1.0 + 1e-12:
-        return [], "too_far"
-    if cos_g < -1.0 - 1e-12:
-        return [], "too_close"
-    gamma = math.acos(min(1.0, max(-1.0, cos_g)))
-    bend = math.atan2(v2[1], v2[0]) - math.atan2(v1[1], v1[0])
-    aim = math.atan2(dz, dx) - math.atan2(v1[1], v1[0])
-    out = []
-    for g in (gamma, -gamma) if gamma > 1e-12 else (gamma,):
-        kx, kz = l1 + l2 * math.cos(g), l2 * math.sin(g)
-        out.append((aim - math.atan2(kz, kx), g - bend))
-    return out, ""
+    def contains(angle: float) -> bool:
+        return full or (angle - ends[0]) % _TWO_PI <= ends[1] - ends[0]
+
+    cos_ends = (math.cos(ends[0]), math.cos(ends[1]))
+    c_max = 1.0 if contains(0.0) else max(cos_ends)
+    c_min = -1.0 if contains(math.pi) else min(cos_ends)
+    l1, l2 = fam.l1, fam.l2
+    return (
+        math.sqrt(max(l1 * l1 + l2 * l2 + 2 * l1 * l2 * c_min, 0.0)),
+        math.sqrt(max(l1 * l1 + l2 * l2 + 2 * l1 * l2 * c_max, 0.0)),
+    )
 
 
-def forward(fam: PlanarFamily, alphas: tuple[float, ...]) -> tuple[float, float, float]:
-    """Tool point (r, z) [m] and plane approach angle phi [rad] for plane angles."""
-    x, z = fam.c1
-    turn = 0.0
-    for alpha, (vx, vz) in zip(alphas, fam.links, strict=True):
-        turn += alpha
-        c, s = math.cos(turn), math.sin(turn)
-        x, z = x + c * vx - s * vz, z + s * vx + c * vz
-    return x, z, fam.phi0 + turn
+def planes(fam: PlanarFamily, x: float, y: float, z: float, seed0: float) -> list[Plane] | str:
+    """Per base branch the plane radius r (signed; < 0 reaching over the shoulder), the
+    horizontal distance rho and the base angle [rad]; or why there is none."""
+    if fam.base is None:
+        ux, uy, uz = fam.u
+        if abs(x * ux + y * uy + z * uz - fam.lateral) > 1e-9:
+            return "off_plane"
+        return [(-uy * x + ux * y, math.hypot(x, y), 0.0)]
+    rho2 = x * x + y * y
+    r2 = rho2 - fam.lateral * fam.lateral
+    if r2 < -1e-18:
+        return "too_close"
+    r, rho = math.sqrt(max(r2, 0.0)), math.sqrt(rho2)
+    if rho < 1e-12:  # on the base axis the base angle is free: the seed's, or turned round
+        return [(0.0, 0.0, seed0), (-0.0, 0.0, seed0 + math.pi)]
+    heading = math.atan2(y, x) - fam.azimuth_r
+    return [
+        (rr, rho, fam.base_sign * (heading - math.atan2(-fam.lateral, rr)))
+        for rr in ((r, -r) if r > 1e-12 else (r,))
+    ]
 
 
 def phi_for_pitch(pitch: float, r: float, rho: float) -> float:

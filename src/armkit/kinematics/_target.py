@@ -1,29 +1,34 @@
-"""What an IK call asks for: a position, optionally a pitch or a full orientation."""
+"""What an IK call asks for, and how far an answer is from it."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
+from typing import Any, NamedTuple
 
-import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike
 
-F64 = NDArray[np.float64]
+from ._pose import pitch_scalar, rotation_angle
+from ._scalar import ChainState
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True, eq=False)
 class Target:
-    """An IK target in the world frame.
+    """An IK target in the world frame: a position, optionally a pitch or an orientation.
+
+    ``ik`` takes one target (position shape (3,), pitch a number), ``ik_batch`` N
+    targets (positions (N, 3), pitches a number or (N,), orientations (N, 3, 3)).
 
     Attributes:
-        position: tool point [m], shape (3,).
+        position: tool point(s) [m].
         pitch: approach angle above the horizontal [rad] (see ``pitch_of``), or None.
-        orientation: full tool orientation R_world_tool, shape (3, 3), or None.
+        orientation: full tool orientation(s) R_world_tool, or None.
             At most one of pitch and orientation is set.
     """
 
-    position: F64
-    pitch: float | None = None
-    orientation: F64 | None = None
+    position: ArrayLike
+    pitch: Any = None
+    orientation: ArrayLike | None = None
 
     @property
     def mask(self) -> str:
@@ -31,3 +36,22 @@ class Target:
         if self.orientation is not None:
             return "pose"
         return "position" if self.pitch is None else "position+pitch"
+
+
+class Goal(NamedTuple):
+    """A checked single target in plain floats: p [m], pitch [rad] or None, R row-major or None."""
+
+    p: tuple[float, float, float]
+    pitch: float | None
+    R: tuple[float, ...] | None
+
+
+def errors(goal: Goal, st: ChainState) -> tuple[float, float]:
+    """Position [m] and pitch or orientation [rad] error of a chain state for ``goal``."""
+    (px, py, pz), (gx, gy, gz) = st.p, goal.p
+    pos = math.sqrt((px - gx) ** 2 + (py - gy) ** 2 + (pz - gz) ** 2)
+    if goal.pitch is not None:
+        return pos, abs(math.remainder(pitch_scalar(st.R[0], st.p) - goal.pitch, 2 * math.pi))
+    if goal.R is not None:
+        return pos, rotation_angle(goal.R, st.R)
+    return pos, 0.0

@@ -1,39 +1,127 @@
-"""Input checks shared by the kinematics functions: shapes and finiteness."""
+"""The one input validator of the kinematics functions.
+
+Every check raises ``InputError`` (an ``ArmkitError`` and a ``ValueError``) that
+names the argument, what is allowed and what was given, shown briefly: numbers
+to 6 significant digits, arrays by their shape, never a raw array or a
+309-digit number.
+"""
 
 from __future__ import annotations
+
+import math
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..model import ArmModel
+from .._errors import InputError
+
+F64 = NDArray[np.float64]
 
 
-def joint_array(model: ArmModel, q: ArrayLike, name: str) -> NDArray[np.float64]:
-    """``q`` as float64 of shape (dof,) or (N, dof); ValueError naming ``name`` otherwise."""
+def shown(value: Any) -> str:
+    """``value`` as a short string for a message."""
+    if isinstance(value, np.ndarray):
+        return f"an array of shape {value.shape}"
+    if isinstance(value, (bool, np.bool_)):
+        return repr(bool(value))
+    if isinstance(value, (int, float, np.integer, np.floating)):
+        return f"{float(value):.6g}"
+    if isinstance(value, (tuple, list)) and len(value) <= 6:
+        inner = ", ".join(shown(v) for v in value)
+        return f"({inner})" if isinstance(value, tuple) else f"[{inner}]"
+    if value is None:
+        return "None"
+    if isinstance(value, str):
+        return repr(value[:20])
+    return f"a {type(value).__name__}"
+
+
+def array(
+    value: ArrayLike, name: str, shapes: tuple[tuple[int | None, ...], ...], unit: str
+) -> F64:
+    """``value`` as finite float64 of one of ``shapes`` (None: any length)."""
     try:
-        qa = np.asarray(q, dtype=np.float64)
+        a = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError):
-        raise ValueError(f"{name} must be numbers, got {q!r}") from None
-    if qa.ndim not in (1, 2) or qa.shape[-1] != model.dof:
-        raise ValueError(
-            f"{name} must have shape ({model.dof},) or (N, {model.dof}) for {model.name}, "
-            f"got {qa.shape}"
+        raise InputError(f"{name} must be numbers [{unit}], got {shown(value)}") from None
+    fits = any(
+        a.ndim == len(s) and all(w is None or w == n for w, n in zip(s, a.shape, strict=True))
+        for s in shapes
+    )
+    if not fits:
+        want = " or ".join(
+            "("
+            + ", ".join("N" if w is None else str(w) for w in s)
+            + (",)" if len(s) == 1 else ")")
+            for s in shapes
         )
-    if not np.all(np.isfinite(qa)):
-        raise ValueError(f"{name} must be finite, got NaN or infinity")
-    return qa
+        raise InputError(f"{name} must have shape {want} [{unit}], got shape {a.shape}")
+    if not np.all(np.isfinite(a)):
+        raise InputError(f"{name} must be finite [{unit}], got NaN or infinity")
+    return a
 
 
-def point_array(p: ArrayLike, name: str, batch: bool) -> NDArray[np.float64]:
-    """``p`` as float64 of shape (3,) or, with ``batch``, (N, 3); ValueError otherwise."""
-    try:
-        pa = np.asarray(p, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be numbers, got {p!r}") from None
-    want = 2 if batch else 1
-    if pa.ndim != want or pa.shape[-1] != 3:
-        shape = "(N, 3)" if batch else "(3,)"
-        raise ValueError(f"{name} must have shape {shape}, got {pa.shape}")
-    if not np.all(np.isfinite(pa)):
-        raise ValueError(f"{name} must be finite, got NaN or infinity")
-    return pa
+def point(value: Any, name: str = "position") -> tuple[float, float, float]:
+    """Three finite floats (x, y, z) [m]; fast for a tuple or list of floats."""
+    if isinstance(value, (tuple, list)) and len(value) == 3:
+        x, y, z = value
+        floats = type(x) is float and type(y) is float and type(z) is float
+        if floats and x - x == 0.0 and y - y == 0.0 and z - z == 0.0:  # finite
+            return x, y, z
+    elif isinstance(value, np.ndarray) and value.shape == (3,) and value.dtype == np.float64:
+        x, y, z = value.tolist()
+        if x - x == 0.0 and y - y == 0.0 and z - z == 0.0:
+            return x, y, z
+    numbers = isinstance(value, np.ndarray) or (
+        isinstance(value, (tuple, list))
+        and all(isinstance(v, (int, float, np.number)) and not isinstance(v, bool) for v in value)
+    )
+    if not numbers or np.shape(value) != (3,):
+        raise InputError(f"{name} must be three numbers (x, y, z) [m], got {shown(value)}")
+    a = array(value, name, ((3,),), "m")
+    return float(a[0]), float(a[1]), float(a[2])
+
+
+def angle(value: Any, name: str) -> float | None:
+    """A finite angle [rad] or None."""
+    if value is None or (type(value) is float and value - value == 0.0):
+        return value  # type: ignore[no-any-return]
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
+        raise InputError(f"{name} must be a number [rad] or None, got {shown(value)}")
+    v = float(value)
+    if not math.isfinite(v):
+        raise InputError(f"{name} must be finite [rad], got {shown(v)}")
+    return v
+
+
+def joints(value: ArrayLike, dof: int, name: str = "q", batch: bool = True) -> F64:
+    """Joint angles [rad], shape (dof,) or, with ``batch``, (N, dof)."""
+    shapes: tuple[tuple[int | None, ...], ...] = ((dof,), (None, dof)) if batch else ((dof,),)
+    return array(value, name, shapes, "rad")
+
+
+def rotation(value: ArrayLike, name: str, n: int | None = None) -> F64:
+    """Rotation matrices, shape (3, 3) or (n, 3, 3), orthonormal with determinant +1."""
+    R = array(value, name, ((3, 3),) if n is None else ((n, 3, 3),), "rotation matrix")
+    RRt = np.einsum("...ij,...kj->...ik", R, R)
+    if not np.allclose(RRt, np.eye(3), atol=1e-6) or np.any(np.linalg.det(R) < 0):
+        raise InputError(f"{name} must be a rotation matrix (orthonormal, determinant +1)")
+    return R
+
+
+def tolerance(value: Any, name: str) -> float:
+    """A finite number > 0."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
+        raise InputError(f"{name} must be a number > 0, got {shown(value)}")
+    v = float(value)
+    if not (math.isfinite(v) and v > 0.0):
+        raise InputError(f"{name} must be a finite number > 0, got {shown(v)}")
+    return v
+
+
+def choice(value: Any, name: str, allowed: tuple[str, ...]) -> str:
+    """One of ``allowed``."""
+    if not isinstance(value, str) or value not in allowed:
+        raise InputError(f"{name} must be one of {', '.join(allowed)}, got {shown(value)}")
+    return value

@@ -6,7 +6,12 @@ from ._limits import check_speed as check_speed
 from ._limits import move_time as move_time
 from ._load import load_model as load_model
 from ._load import shipped_models as shipped_models
+from ._sections import DynamixelSection as DynamixelSection
+from ._sections import OwiSection as OwiSection
+from ._sections import dynamixel_section as dynamixel_section
+from ._sections import owi_section as owi_section
 from ._types import ArmModel as ArmModel
 from ._types import DHRow as DHRow
 from ._types import Gripper as Gripper
 from ._types import Joint as Joint
+from ._types import JointFrame as JointFrame

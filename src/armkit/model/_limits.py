@@ -17,8 +17,13 @@ joint space, every joint arriving together:
   within ``speed`` x every joint's maximum velocity;
 - a ``duration`` [s]: exactly that long. It must let every joint keep within
   ``speed`` x its maximum velocity moving at constant speed (a stream of short
-  segments is such a move); shorter raises ValueError. Within that time the
+  segments is such a move); shorter raises InputError. Within that time the
   device may ramp where the acceleration limit allows (``ramp_time``).
+
+``Arm`` also bounds a single move to ``MAX_MOVE_S`` (``longest=``): a duration
+or a speed that would make one move crawl for longer is refused, not obeyed.
+Drivers take any length and send a long move in pieces where their device's
+command has a shorter limit (an SSC-32 group move, a Dynamixel profile).
 """
 
 from __future__ import annotations
@@ -29,24 +34,25 @@ import weakref
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._errors import JointLimitError
+from .._errors import InputError, JointLimitError
 from ._types import ArmModel
 
 F64 = NDArray[np.float64]
 
 
-class GripWidthError(JointLimitError, ValueError):
+class GripWidthError(JointLimitError, InputError):
     """A gripper opening outside the model's range (a limit, and a bad value)."""
 
 
 SLACK = 1e-9  # [rad] or [m]: values this far outside a limit still count as inside
+MAX_MOVE_S = 30.0  # longest single move Arm accepts [s] (a Dynamixel profile allows 32.7 s)
 
 
 def check_joints(model: ArmModel, q: ArrayLike) -> F64:
     """``q`` [rad] as a float array of shape (dof,), every joint inside its limits.
 
     Raises:
-        ValueError: wrong shape or a value that is not finite (names the arm's joints).
+        InputError: wrong shape or a value that is not finite (names the arm's joints).
         JointLimitError: the first joint outside its limits, with the value and the range [deg].
     """
     try:
@@ -59,7 +65,9 @@ def check_joints(model: ArmModel, q: ArrayLike) -> F64:
             return arr  # the common case, kept cheap: every driver command passes here
     if arr.shape != (model.dof,) or not np.isfinite(arr).all():
         names = ", ".join(model.joint_names)
-        raise ValueError(f"{model.name} needs {model.dof} finite joint angles ({names}), got {q!r}")
+        raise InputError(
+            f"{model.name} needs {model.dof} finite joint angles [rad] ({names}), got {_shown(q)}"
+        )
     for joint, angle in zip(model.joints, arr, strict=True):
         if not joint.lower - SLACK <= angle <= joint.upper + SLACK:
             raise JointLimitError(
@@ -95,12 +103,40 @@ def check_grip(model: ArmModel, width: float) -> float:
 
 
 def check_speed(speed: float | None) -> float:
-    """``speed`` as a fraction of every joint's maximum velocity, (0, 1]; None = 1."""
+    """``speed`` as a fraction of every joint's maximum velocity, (0, 1]; None = 1
+    (InputError otherwise)."""
     if speed is None:
         return 1.0
-    if not (math.isfinite(speed) and 0.0 < speed <= 1.0):
-        raise ValueError(f"speed must be a fraction of the maximum in (0, 1], got {speed!r}")
+    if not (_is_number(speed) and math.isfinite(speed) and 0.0 < speed <= 1.0):
+        raise InputError(f"speed must be a fraction of the maximum in (0, 1], got {_shown(speed)}")
     return float(speed)
+
+
+def check_duration(duration: float, longest: float | None = None) -> float:
+    """``duration`` [s] as a float: a time >= 0, at most ``longest`` [s] if given (InputError)."""
+    if longest is not None:
+        if not (_is_number(duration) and 0.0 <= duration <= longest):
+            raise InputError(
+                f"duration must be 0..{longest:g} s, got {_shown(duration)} s; "
+                "split a longer motion into several moves"
+            )
+    elif not (_is_number(duration) and math.isfinite(duration) and duration >= 0):
+        raise InputError(f"duration must be a time >= 0 s, got {_shown(duration)}")
+    return float(duration)
+
+
+def _is_number(value: object) -> bool:
+    return isinstance(value, int | float | np.integer | np.floating) and not isinstance(value, bool)
+
+
+def _shown(value: object) -> str:
+    """``value`` for a message: numbers as ``%g`` (no ``np.float64(...)``), others as repr."""
+    if _is_number(value):
+        return f"{float(value):g}"  # type: ignore[arg-type]
+    try:
+        return ", ".join(f"{v:g}" for v in np.asarray(value, dtype=np.float64).ravel())
+    except (TypeError, ValueError):
+        return repr(value)
 
 
 def limits(model: ArmModel, speed: float = 1.0) -> tuple[F64, F64]:
@@ -153,28 +189,34 @@ def move_time(
     speed: float | None = None,
     duration: float | None = None,
     ramps: bool = True,
+    longest: float | None = None,
 ) -> float:
     """How long [s] the move q0 -> q1 [rad] takes under the rule of the module doc
-    (``ramps``: whether the device ramps its speed, for moves without a duration).
+    (``ramps``: whether the device ramps its speed, for moves without a duration;
+    ``longest``: the most one move may take [s], None: no bound).
 
     Raises:
-        ValueError: a bad ``speed`` or ``duration``, or a duration too short for the
-            velocity limits (the message says how long the move needs).
+        InputError: a bad ``speed`` or ``duration``, a duration too short for the
+            velocity limits (the message says how long the move needs), or a move
+            longer than ``longest``.
     """
     frac = check_speed(speed)
     if duration is None:
-        if ramps:
-            return shortest_time(model, q0, q1, frac)
-        return constant_speed_time(model, q0, q1, frac)
-    if not (isinstance(duration, int | float) and math.isfinite(duration) and duration >= 0):
-        raise ValueError(f"duration must be a time >= 0 s, got {duration!r}")
+        seconds = (shortest_time if ramps else constant_speed_time)(model, q0, q1, frac)
+        if longest is not None and seconds > longest:  # a tiny speed: refuse rather than crawl
+            raise InputError(
+                f"this move would take {seconds:.0f} s at speed {frac:g}; a move may "
+                f"take at most {longest:g} s: raise the speed"
+            )
+        return seconds
+    duration = check_duration(duration, longest)
     needed = constant_speed_time(model, q0, q1, frac)
     if duration < needed - 1e-9:
-        raise ValueError(
+        raise InputError(
             f"duration {duration:.3f} s is too short: the joints' speed limits need "
             f"{needed:.3f} s or more for this move"
         )
-    return float(duration)
+    return duration
 
 
 def ramp_time(total: float, distance: ArrayLike, amax: ArrayLike) -> float:

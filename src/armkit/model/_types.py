@@ -10,7 +10,9 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import NDArray
 
-Convention = Literal["standard", "modified"]
+from .._errors import InputError
+
+Convention = Literal["standard", "modified", "frames"]
 
 
 @dataclass(frozen=True)
@@ -31,6 +33,23 @@ class DHRow:
     d: float
     theta_offset: float = 0.0
     sign: float = 1.0
+
+
+@dataclass(frozen=True, eq=False)
+class JointFrame:
+    """One joint of a general serial chain, as URDF describes it.
+
+    The joint's frame is ``origin`` (a fixed transform from the previous joint's
+    frame, or from the world for the first joint), then a rotation by the joint
+    angle q about ``axis``. DH rows are one way to fill it; a URDF file another.
+
+    Attributes:
+        origin: T_parent_joint at q = 0, shape (4, 4) [m].
+        axis: the rotation axis in the joint's frame, a unit vector.
+    """
+
+    origin: NDArray[np.float64]
+    axis: tuple[float, float, float]
 
 
 @dataclass(frozen=True)
@@ -63,6 +82,9 @@ class Gripper:
         length_poly: grip length [m] as polynomial coefficients of width [m],
             lowest order first, used for width > 0 (empty: fixed length).
         closed_length: grip length to the tip when fully closed [m], or None.
+        jaw_axis: the tool frame's axis the jaws close along, ``"y"`` or ``"z"``.
+        finger_length: each jaw's pad along the approach axis, centred on the tool
+            point [m].  finger_width: the pad across it (along the third axis) [m].
     """
 
     kind: str = "parallel"
@@ -70,6 +92,9 @@ class Gripper:
     width_max: float = 0.0
     length_poly: tuple[float, ...] = ()
     closed_length: float | None = None
+    jaw_axis: str = "z"
+    finger_length: float = 0.02
+    finger_width: float = 0.02
 
     def length_at(self, width: float) -> float | None:
         """Grip length [m] at an opening ``width`` [m]; None if the length is fixed."""
@@ -82,15 +107,17 @@ class Gripper:
 
 @dataclass(frozen=True, eq=False)
 class ArmModel:
-    """A serial arm: joints in chain order, DH rows, tool transform, gripper.
+    """A serial arm: joints in chain order, its chain (DH rows or joint frames),
+    tool transform, gripper.
 
     Attributes:
         name: short name (``"owi535"``).
         description: one line for people.
-        convention: ``"standard"`` or ``"modified"`` DH.
+        convention: ``"standard"`` or ``"modified"`` DH, or ``"frames"`` (no DH rows:
+            the chain is ``frames``, e.g. from a URDF file).
         joints: the joints, base first.
-        dh: one DH row per joint.
-        T_flange_tool: last DH frame to tool frame, shape (4, 4) [m]; the tool
+        dh: one DH row per joint (empty for ``"frames"``).
+        T_flange_tool: last DH frame (or last joint frame) to tool frame, shape (4, 4) [m]; the tool
             frame's x axis is the approach direction (where the gripper points).
         tool_length: distance along the tool x axis included in T_flange_tool [m].
         gripper: the gripper.
@@ -101,6 +128,11 @@ class ArmModel:
         link_radii: radius of each link's capsule [m], shape (dof + 1,): capsule i joins
             the origins of frames i and i + 1 of ``fk_frames`` (the last one the flange
             to the tool point). Capsule 0 is the base column and stands on the table.
+        frames: the chain as one ``JointFrame`` per joint, for ``convention = "frames"``
+            (empty for DH models).
+
+    The compiled form the kinematics functions use is held beside the model
+    (``armkit.kinematics``), never on it: a model is immutable.
     """
 
     name: str
@@ -116,7 +148,7 @@ class ArmModel:
     source: Path | None = None
     table_z: float = 0.0
     link_radii: tuple[float, ...] = ()
-    _cache: dict[str, Any] = field(default_factory=dict, repr=False)
+    frames: tuple[JointFrame, ...] = field(default=(), repr=False)
 
     @property
     def dof(self) -> int:
@@ -147,7 +179,7 @@ class ArmModel:
         """Index of the joint called ``name``; ValueError lists the valid names."""
         names = self.joint_names
         if name not in names:
-            raise ValueError(
+            raise InputError(
                 f"unknown joint {name!r} for {self.name}; joints are {', '.join(names)}"
             )
         return names.index(name)
@@ -163,14 +195,14 @@ class ArmModel:
         """The same arm with the tool's length along its approach axis set to ``length`` [m]."""
         T = self.T_flange_tool.copy()
         T[:3, 3] += T[:3, 0] * (length - self.tool_length)
-        return replace(self, T_flange_tool=T, tool_length=length, _cache={})
+        return replace(self, T_flange_tool=T, tool_length=length)
 
     def with_grip_width(self, width: float) -> ArmModel:
         """The same arm with the grip point moved for a gripper opening ``width`` [m]
         (002's grip-length polynomial); unchanged for grippers of fixed length."""
         g = self.gripper
         if not g.width_min - 1e-12 <= width <= g.width_max + 1e-12:
-            raise ValueError(
+            raise InputError(
                 f"grip width {width * 1000:.1f} mm is outside {self.name}'s range "
                 f"{g.width_min * 1000:.1f}..{g.width_max * 1000:.1f} mm"
             )

@@ -5,6 +5,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .._errors import InputError
+
 F64 = NDArray[np.float64]
 _CHUNK = 1024
 
@@ -15,7 +17,7 @@ def distance_to_polyline(points: ArrayLike, polyline: ArrayLike) -> F64:
     x = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     v = np.asarray(polyline, dtype=np.float64)
     if v.ndim != 2 or v.shape[1] != 3 or v.shape[0] < 2:
-        raise ValueError(f"polyline must have shape (M, 3) with M >= 2, got {v.shape}")
+        raise InputError(f"polyline must have shape (M, 3) with M >= 2, got {v.shape}")
     a, ab = v[:-1], np.diff(v, axis=0)
     length2 = np.maximum(np.sum(ab * ab, axis=1), 1e-30)
     out = np.empty(x.shape[0])

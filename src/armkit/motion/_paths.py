@@ -15,12 +15,15 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .._errors import InputError
+
 F64 = NDArray[np.float64]
+MAX_POINTS = 1_000_000  # points in one path: beyond this a spacing or a size is a mistake
 
 
 def line(start: ArrayLike, end: ArrayLike, spacing: float) -> F64:
     """Straight line from ``start`` to ``end`` [m], shape (3,) each."""
-    p0, p1 = _point(start, "start"), _point(end, "end")
+    p0, p1 = point3(start, "start"), point3(end, "end")
     n = _count(float(np.linalg.norm(p1 - p0)), spacing)
     s = np.linspace(0.0, 1.0, n + 1)[:, None]
     return p0 + s * (p1 - p0)
@@ -30,11 +33,11 @@ def arc(center: ArrayLike, radius: float, start_angle: float, sweep: float, spac
     """Arc of a horizontal circle (001): ``center`` [m], ``radius`` [m], from
     ``start_angle`` [rad] (0 = +x, counter-clockwise seen from above) through
     ``sweep`` [rad] (negative = clockwise)."""
-    c = _point(center, "center")
+    c = point3(center, "center")
     if not (math.isfinite(radius) and radius > 0):
-        raise ValueError(f"radius must be > 0, got {radius}")
+        raise InputError(f"radius must be > 0, got {radius}")
     if not (math.isfinite(start_angle) and math.isfinite(sweep) and sweep != 0):
-        raise ValueError(
+        raise InputError(
             f"start angle and sweep must be finite and the sweep non-zero, got {sweep}"
         )
     n = _count(abs(sweep) * radius, spacing)
@@ -52,7 +55,7 @@ def polyline(vertices: ArrayLike, spacing: float) -> F64:
     """Straight pieces through ``vertices`` [m], shape (M, 3), M >= 2, sampled per piece."""
     v = np.asarray(vertices, dtype=np.float64)
     if v.ndim != 2 or v.shape[1] != 3 or v.shape[0] < 2 or not np.all(np.isfinite(v)):
-        raise ValueError(f"vertices must be finite, shape (M, 3) with M >= 2, got {v.shape}")
+        raise InputError(f"vertices must be finite, shape (M, 3) with M >= 2, got {v.shape}")
     pieces = [line(a, b, spacing)[1:] for a, b in itertools.pairwise(v)]
     return np.vstack([v[:1], *pieces])
 
@@ -60,9 +63,9 @@ def polyline(vertices: ArrayLike, spacing: float) -> F64:
 def rectangle(center: ArrayLike, width: float, depth: float, spacing: float) -> F64:
     """Closed horizontal rectangle: ``width`` along x, ``depth`` along y [m],
     counter-clockwise from the corner at (-x, -y)."""
-    c = _point(center, "center")
+    c = point3(center, "center")
     if not (width > 0 and depth > 0):
-        raise ValueError(f"width and depth must be > 0, got {width}, {depth}")
+        raise InputError(f"width and depth must be > 0, got {width}, {depth}")
     w, d = width / 2.0, depth / 2.0
     corners = c + np.array([[-w, -d, 0], [w, -d, 0], [w, d, 0], [-w, d, 0], [-w, -d, 0]])
     return polyline(corners, spacing)
@@ -76,9 +79,9 @@ CUBE_ORDER = (0, 1, 2, 3, 0, 4, 5, 1, 5, 6, 2, 6, 7, 3, 7, 4)
 def cube_edges(corner: ArrayLike, size: float, spacing: float) -> F64:
     """001's cube trace: every edge of the axis-aligned cube with its lowest
     corner at ``corner`` [m] and edge ``size`` [m], in one continuous stroke."""
-    c = _point(corner, "corner")
+    c = point3(corner, "corner")
     if not size > 0:
-        raise ValueError(f"size must be > 0, got {size}")
+        raise InputError(f"size must be > 0, got {size}")
     square = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], dtype=np.float64)
     top = square + np.array([0.0, 0.0, 1.0])
     cube = np.vstack([square, top]) * size + c
@@ -97,13 +100,26 @@ def corners(points: ArrayLike, angle: float = math.radians(20.0)) -> NDArray[np.
 
 
 def _count(length: float, spacing: float) -> int:
+    """Pieces of at most ``spacing`` [m] along ``length`` [m]; InputError beyond MAX_POINTS."""
     if not (math.isfinite(spacing) and spacing > 0):
-        raise ValueError(f"spacing must be > 0, got {spacing}")
-    return max(1, math.ceil(length / spacing - 1e-9))
+        raise InputError(f"spacing must be > 0, got {spacing}")
+    pieces = length / spacing
+    if not pieces <= MAX_POINTS:
+        raise InputError(
+            f"{length * 1000:.6g} mm at {spacing * 1000:g} mm spacing would be {pieces:.3g} "
+            f"points; at most {MAX_POINTS}: use a larger spacing"
+        )
+    return max(1, math.ceil(pieces - 1e-9))
 
 
-def _point(p: ArrayLike, name: str) -> F64:
-    a = np.asarray(p, dtype=np.float64)
+def point3(p: ArrayLike, name: str) -> F64:
+    """``p`` as 3 finite coordinates [m], shape (3,); InputError naming ``name`` otherwise
+    (also for things that are not numbers at all)."""
+    try:
+        a = np.asarray(p, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError(f"{name} must be 3 numbers [m], got {p!r}") from None
     if a.shape != (3,) or not np.all(np.isfinite(a)):
-        raise ValueError(f"{name} must be 3 finite coordinates, got {p!r}")
+        shown = ", ".join(f"{v:g}" for v in np.ravel(a)[:6])
+        raise InputError(f"{name} must be 3 finite coordinates [m], got ({shown})")
     return a

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._errors import UnreachableError
+from .._errors import InputError, Reason, UnreachableError
 from ..kinematics import fk, ik
 from ..model import ArmModel
 
@@ -40,7 +40,7 @@ class JointPath:
 class PathError(UnreachableError):
     """A path cannot be followed; ``index`` is the first point that fails."""
 
-    def __init__(self, message: str, *, reason: str, index: int) -> None:
+    def __init__(self, message: str, *, reason: Reason, index: int) -> None:
         super().__init__(message, reason=reason)
         self.index = index
 
@@ -62,7 +62,7 @@ def plan_path(
     """
     p = np.asarray(points, dtype=np.float64)
     if p.ndim != 2 or p.shape[1] != 3 or p.shape[0] < 1 or not np.all(np.isfinite(p)):
-        raise ValueError(f"points must be finite, shape (N, 3), got {p.shape}")
+        raise InputError(f"points must be finite, shape (N, 3), got {p.shape}")
     q, failure = _solve_all(model, p, pitch, np.asarray(q_start, dtype=np.float64))
     _check_between(model, p[: q.shape[0]], q, tolerance)
     if failure is not None:

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .._errors import InputError
 from ..model import ArmModel
 from ..model._limits import check_speed, limits, trapezoid_time
 
@@ -143,9 +144,9 @@ def _checked_duration(fastest: float, duration: float | None) -> float:
     if duration is None:
         return fastest
     if not np.isfinite(duration) or duration < 0:
-        raise ValueError(f"duration must be a time >= 0 s, got {duration}")
+        raise InputError(f"duration must be a time >= 0 s, got {duration}")
     if duration < fastest - 1e-9:
-        raise ValueError(
+        raise InputError(
             f"duration {duration:.3f} s is too short: the joint limits need {fastest:.3f} s or more"
         )
     return duration

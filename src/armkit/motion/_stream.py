@@ -20,7 +20,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._clock import Clock
-from .._errors import DeviceError
+from .._errors import DeviceError, InputError
 from ..drivers._driver import Driver
 from ..model import ArmModel
 from ._paths import corners
@@ -64,7 +64,7 @@ class EarlyStreaming:
     def run(self, driver: Driver, model: ArmModel, path: JointPath, clock: Clock) -> None:
         """Stream the waypoints, then wait at the last."""
         if not 0.0 < self.fraction <= 1.0:
-            raise ValueError(f"fraction must be in (0, 1], got {self.fraction}")
+            raise InputError(f"fraction must be in (0, 1], got {self.fraction}")
         stops = set(corners(path.points).tolist())
         for k in range(1, path.q.shape[0] - 1):
             driver.move(path.q[k], speed=self.speed, wait=k in stops)
@@ -95,7 +95,7 @@ class TimedStreaming:
     def run(self, driver: Driver, model: ArmModel, path: JointPath, clock: Clock) -> None:
         """Send the point for the end of each period, lasting one period."""
         if not self.rate > 0:
-            raise ValueError(f"rate must be > 0 Hz, got {self.rate}")
+            raise InputError(f"rate must be > 0 Hz, got {self.rate}")
         timed = time_path(model, path, self.speed, self.accel)
         period = 1.0 / self.rate
         start = clock.now()

@@ -10,6 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from .._errors import InputError
 from ..model import ArmModel
 from ._paths import corners
 from ._plan import JointPath
@@ -44,7 +45,7 @@ def time_path(model: ArmModel, path: JointPath, speed: float, accel: float) -> T
     ``accel`` [m/s^2], stopping at every corner, then stretched until no joint
     exceeds its model velocity or acceleration limit."""
     if not (speed > 0 and accel > 0):
-        raise ValueError(f"speed and acceleration must be > 0, got {speed}, {accel}")
+        raise InputError(f"speed and acceleration must be > 0, got {speed}, {accel}")
     s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(path.points, axis=0), axis=1))])
     stops = np.unique(np.concatenate([[0], corners(path.points), [len(s) - 1]]))
     t = np.zeros_like(s)

@@ -128,7 +128,7 @@ class ServoBody:
         self.grip_goal = truth.grip
         self.grip_velocity = 0.0  # [m/s]
         self._stop: float | None = None
-        self._cache: dict[int, tuple[float, float]] = {}  # channel -> (unit, si)
+        self._last_setpoint: dict[int, tuple[float, float]] = {}  # channel -> (unit, si)
         self._busy = False
         self._moving = False
 
@@ -152,11 +152,11 @@ class ServoBody:
         unit = outputs.setpoint(mount.channel, t)
         if unit is None:
             return None
-        cached = self._cache.get(mount.channel)
-        if cached is not None and cached[0] == unit:
-            return cached[1]
+        last = self._last_setpoint.get(mount.channel)
+        if last is not None and last[0] == unit:
+            return last[1]
         si = mount.to_si(unit)
-        self._cache[mount.channel] = (unit, si)
+        self._last_setpoint[mount.channel] = (unit, si)
         return si
 
     def _move_motors(self, dt: float) -> None:

@@ -1,1 +1,20 @@
-"""Jobs for an arm: pick and place, stacking, drawing, music, search."""
+"""Jobs for an arm on a scene: pick, place, move an item, rotate and stack cubes
+(seeds 000 and 001). Each task is planned whole -- every IK and every clearance
+check -- before anything moves; ``dry_run=True`` returns the plan only."""
+
+from ._calibration import Calibration as Calibration
+from ._calibration import CalibrationError as CalibrationError
+from ._calibration import default_calibration_file as default_calibration_file
+from ._calibration import load_calibration as load_calibration
+from ._jobs import move_item as move_item
+from ._jobs import pick as pick
+from ._jobs import place as place
+from ._jobs import plan_task as plan_task
+from ._jobs import rotate_cube as rotate_cube
+from ._jobs import stack as stack
+from ._plan import Plan as Plan
+from ._plan import Step as Step
+from ._plan import TaskError as TaskError
+from ._run import run_plan as run_plan
+from ._targets import Target as Target
+from ._targets import resolve as resolve

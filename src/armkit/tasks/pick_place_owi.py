@@ -1,21 +1,24 @@
-"""000's moveItem for the OWI-535: pick an object at A, lift it, carry it,
-place it at B -- with the gripper level (000's IK) and the joints turned in an
-order that keeps the arm off the table."""
+"""000's moveItem for the OWI-535, built on ``armkit.tasks``: pick the item whose
+grip point is A, lift it, carry it, put it down at B -- the whole way planned and
+checked (reach, limits, the table) before the first motor runs, with the gripper
+level (000's IK) and the joints turned by the driver in an order that keeps the
+arm off the table."""
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
-from .._errors import UnreachableError
+from .._errors import InputError
+from ..arm import Arm
 from ..drivers.timed import TimedDriver
-from ..drivers.timed._order import TABLE_TOLERANCE_M, lowest_point
-from ..kinematics import ik
 from ..model import ArmModel
+from ..scene import Scene
+from ._jobs import move_item
+from ._run import run_plan
 
-F64 = NDArray[np.float64]
 LIFT_M = 0.04  # how high above A and B the gripper travels [m]
 
 
@@ -28,46 +31,20 @@ def pick_place(
     lift_m: float = LIFT_M,
     say: Callable[[str], None] | None = None,
 ) -> None:
-    """Pick up the object whose top is at ``a_m`` and put it down at ``b_m`` [m], shape (3,).
-
-    Every pose is solved before anything moves, so an unreachable A or B (or a
-    point above them) raises ``UnreachableError`` and the arm stays still.
-    Sequence: open, above A, down to A, close, lift, above B, down to B, open, lift.
-    """
-    a, b = np.asarray(a_m, dtype=float), np.asarray(b_m, dtype=float)
-    up = np.array([0.0, 0.0, lift_m])
-    names = ("above A", "A", "above A", "above B", "B", "above B")
-    points = (a + up, a, a + up, b + up, b, b + up)
-    poses = _solve_all(model, driver.read(), points)
-    tell = say or (lambda _text: None)
-    driver.open_gripper(True)
-    for k, (name, q) in enumerate(zip(names, poses, strict=True)):
-        tell(f"to {name}: ({', '.join(f'{v * 1000:.0f}' for v in points[k])}) mm")
-        driver.move(q)
-        if k == 1:
-            tell("grasp")
-            driver.open_gripper(False)
-        elif k == 4:
-            tell("release")
-            driver.open_gripper(True)
-
-
-def _solve_all(model: ArmModel, q0: F64, points: tuple[F64, ...]) -> list[F64]:
-    """IK for each point, each seeded with the previous solution (smallest joint moves).
+    """Pick up the item whose grip point is ``a_m`` and put it down at ``b_m`` [m], (3,).
 
     Raises:
-        UnreachableError: a point is out of reach, or its pose puts the arm in the table.
+        TaskError: (an ``UnreachableError``) a step is out of reach or puts the arm
+            in the table; it names the step and nothing moves.
     """
-    poses, seed = [], q0
-    lengths = (model.dh[2].a, model.dh[3].a, model.tool_length)
-    for p in points:
-        seed = np.asarray(ik(model, p, None, seed).q, dtype=float)
-        if lowest_point(seed, lengths, model.dh[0].d) < -TABLE_TOLERANCE_M:
-            where = ", ".join(f"{v * 1000:.0f}" for v in p)
-            raise UnreachableError(
-                f"reaching ({where}) mm with the gripper level puts the arm in the table; "
-                "choose a higher point",
-                reason="table",
-            )
-        poses.append(seed)
-    return poses
+    a = np.asarray(a_m, dtype=float) * 1000.0
+    b = np.asarray(b_m, dtype=float) * 1000.0
+    arm = Arm(model, driver)
+    lift = lift_m * 1000.0
+    if not 30.0 <= lift <= 500.0:
+        raise InputError(f"lift must be 30..500 mm (001: at least 30 above A and B), got {lift:g}")
+    plan = move_item(
+        arm, Scene("table"), tuple(a), tuple(b), lift=lift, clearance=lift, dry_run=True
+    )
+    tell = say or (lambda _text: None)
+    run_plan(arm, plan, lambda k, step: tell(f"{k}/{len(plan.steps)} {step.label}"))

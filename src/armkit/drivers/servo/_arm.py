@@ -17,7 +17,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..._clock import Clock, WallClock
-from ..._errors import DeviceError
+from ..._errors import DeviceError, InputError
 from ...model import ArmModel
 from ...model._limits import check_grip, check_joints, check_speed, move_time
 from .._driver import pieces
@@ -106,7 +106,7 @@ class ServoArmDriver:
         seconds = move_time(self.model, origin, goal, speed=frac, duration=duration, ramps=False)
         parts = pieces(origin, goal, seconds, self.bus.max_time_ms / 1000.0)
         if len(parts) > 1 and not wait:
-            raise ValueError(
+            raise InputError(
                 f"this move takes {seconds:.1f} s, longer than one {self.bus.name} command "
                 f"({self.bus.max_time_ms / 1000:.1f} s): it goes in pieces, so it must wait"
             )
@@ -152,7 +152,7 @@ class ServoArmDriver:
                 rate = table.max_rate(start, target)
                 needed = max(needed, travel * rate / (joint.max_velocity * speed))
         if exact and needed > seconds + 1e-3:
-            raise ValueError(
+            raise InputError(
                 f"duration {seconds:.3f} s is too short for the servo tables: this move "
                 f"needs {needed:.3f} s on the {self.bus.name}"
             )
@@ -204,7 +204,7 @@ class ServoArmDriver:
         (calibration; the gripper moves at once). Other servos hold."""
         table = self._table(name)
         if not PULSE_MIN_US <= pulse_us <= PULSE_MAX_US:
-            raise ValueError(f"pulse {pulse_us} µs for {name} is outside 500..2500 µs")
+            raise InputError(f"pulse {pulse_us} µs for {name} is outside 500..2500 µs")
         pulses = {table.channel: float(pulse_us)}
         starts, pad = self._starts()
         frac = check_speed(speed)
@@ -217,7 +217,7 @@ class ServoArmDriver:
         for table in self.tables:
             if table.name == name:
                 return table
-        raise ValueError(f"no servo {name!r}; servos are {', '.join(t.name for t in self.tables)}")
+        raise InputError(f"no servo {name!r}; servos are {', '.join(t.name for t in self.tables)}")
 
     def read(self) -> NDArray[np.float64]:
         """Joint angles [rad], shape (dof,), from the pulses the controller reports.

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..._errors import DeviceError
+from ..._errors import DeviceError, InputError
 from ..._files import config_dir, write_atomic
 from ...model import ArmModel
 from ._arm import ServoArmDriver
@@ -86,7 +86,7 @@ def _ask_value(
             return float(answer) / table.shown(1.0)
         except ValueError:
             prompt = f"  '{answer}' is not a number; {table.name} measured in {unit}:"
-    raise ValueError(f"no number for {table.name} after {ASK_TRIES} tries; calibration stopped")
+    raise InputError(f"no number for {table.name} after {ASK_TRIES} tries; calibration stopped")
 
 
 def _rebuild(table: ServoCalibration, measured: list[float]) -> ServoCalibration:
@@ -94,13 +94,13 @@ def _rebuild(table: ServoCalibration, measured: list[float]) -> ServoCalibration
     according to the measurements (linear between measurements, extended past the ends)."""
     m, p = np.asarray(measured), np.asarray(table.pulses_us)
     if np.any(np.diff(m) <= 0):
-        raise ValueError(
+        raise InputError(
             f"{table.name}: the measured values must increase from point to point "
             f"(got {', '.join(f'{table.shown(v):.1f}' for v in m)}); measure again"
         )
     pulses = [_interp_extended(v, m, p) for v in table.values]
     if not all(PULSE_MIN_US <= x <= PULSE_MAX_US for x in pulses):
-        raise ValueError(
+        raise InputError(
             f"{table.name}: reaching {table.range_text()} would need pulses beyond "
             f"{PULSE_MIN_US:.0f}..{PULSE_MAX_US:.0f} µs; check the measurements or narrow the range"
         )

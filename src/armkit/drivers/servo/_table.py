@@ -16,7 +16,7 @@ from typing import Literal
 
 import numpy as np
 
-from ..._errors import JointLimitError
+from ..._errors import InputError, JointLimitError
 
 PULSE_MIN_US = 500.0
 PULSE_MAX_US = 2500.0
@@ -108,19 +108,19 @@ class ServoCalibration:
 
 def _check_table(name: str, values: Sequence[float], pulses: Sequence[float]) -> None:
     if len(values) < 2 or len(values) != len(pulses):
-        raise ValueError(
+        raise InputError(
             f"{name}: a table needs at least 2 points and one pulse per point "
             f"(got {len(values)} points, {len(pulses)} pulses)"
         )
     if not all(math.isfinite(v) for v in [*values, *pulses]):
-        raise ValueError(f"{name}: table entries must be finite numbers")
+        raise InputError(f"{name}: table entries must be finite numbers")
     if any(b <= a for a, b in itertools.pairwise(values)):
-        raise ValueError(f"{name}: table points must increase strictly")
+        raise InputError(f"{name}: table points must increase strictly")
     steps = [b - a for a, b in itertools.pairwise(pulses)]
     if not (all(s > 0 for s in steps) or all(s < 0 for s in steps)):
-        raise ValueError(f"{name}: pulses must all increase or all decrease along the table")
+        raise InputError(f"{name}: pulses must all increase or all decrease along the table")
     if not all(PULSE_MIN_US <= p <= PULSE_MAX_US for p in pulses):
-        raise ValueError(f"{name}: pulses must lie in {PULSE_MIN_US:.0f}..{PULSE_MAX_US:.0f} µs")
+        raise InputError(f"{name}: pulses must lie in {PULSE_MIN_US:.0f}..{PULSE_MAX_US:.0f} µs")
 
 
 def table_angles_deg(lower_deg: float, upper_deg: float, center_deg: float) -> list[float]:

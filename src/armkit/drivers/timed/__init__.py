@@ -10,6 +10,7 @@ from ._calibrate import run_calibration as run_calibration
 from ._config import constant_rate as constant_rate
 from ._config import default_timing as default_timing
 from ._driver import TimedDriver as TimedDriver
+from ._journal import UncertainEstimateWarning as UncertainEstimateWarning
 from ._plan import MoveReport as MoveReport
 from ._plan import ShortMoveError as ShortMoveError
 from ._rehome import rehome as rehome
@@ -21,8 +22,8 @@ from ._timing import TimingModel as TimingModel
 
 __all__ = [
     "ArmState", "Clock", "JointTiming", "MoveReport", "ShortMoveError",
-    "TimedDriver", "TimingModel", "constant_rate", "default_timing", "load_state",
-    "open_driver", "rehome", "run_calibration", "state_path",
+    "TimedDriver", "TimingModel", "UncertainEstimateWarning", "constant_rate", "default_timing",
+    "load_state", "open_driver", "rehome", "run_calibration", "state_path",
 ]  # fmt: skip
 
 

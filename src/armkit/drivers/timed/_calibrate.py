@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..._errors import InputError
 from ...model import ArmModel
 from ._config import default_timing
 from ._driver import TimedDriver
@@ -62,7 +63,7 @@ def _begin(model: ArmModel, driver: TimedDriver, ask: Ask, say: Say) -> None:
     """Instructions, the model file's default timing (the unit's limits kept), battery
     use counted from now, and a re-homing so every angle is known."""
     if driver.model is not model and driver.model.name != model.name:
-        raise ValueError(f"the driver drives {driver.model.name!r}, not {model.name!r}")
+        raise InputError(f"the driver drives {driver.model.name!r}, not {model.name!r}")
     say(
         "Calibration: each joint is timed between its limits. Stand the arm at the edge "
         "of the table (it reaches below the top) and keep hands and objects clear."

@@ -18,16 +18,19 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..._clock import Clock
-from ..._errors import ArmkitError
+from ..._errors import ArmkitError, InputError
+from ..._lock import exclusive
 from ...model import ArmModel
 from ...model._limits import check_grip, check_joints, move_time
 from ._config import OwiConfig, default_timing, owi_config
 from ._estimate import MOVING, after_run, pending_of, recovered
+from ._journal import Until, journaled_run, raise_if_watchdog, warn, write
 from ._motors import Device, Motors, Run
 from ._order import safe_order
 from ._plan import MoveReport, ShortMoveError, Step, plan_turns
 from ._safety import ExitGuard
-from ._state import ArmState, load, save
+from ._short import plan_legs
+from ._state import ArmState, load
 from ._timing import TimingModel
 
 F64 = NDArray[np.float64]
@@ -46,19 +49,38 @@ class TimedDriver:
         *,
         durable: bool = True,
     ) -> None:
-        """Open the unit whose state file is ``path`` (created on first use), send stop, and
-        if the last process died mid-move, account for it. ``durable=False`` skips fsync
-        (simulations)."""
+        """Open the unit whose state file is ``path`` (created on first use): take its lock
+        (a second process is refused with DeviceError before a byte is sent), send stop,
+        and if the last process died mid-move, account for it. ``durable=False`` skips
+        fsync (simulations).
+
+        Attributes:
+            warn: called with a message before a move starts from an uncertain estimate
+                (default: ``warnings.warn`` with UncertainEstimateWarning), once per driver.
+        """
         self.durable = durable
         self.model, self.clock, self.path = model, clock, path
         self.config: OwiConfig = owi_config(model)
+        self._lock = exclusive(path, f"the OWI-535 unit {unit!r} ({path})")
+        try:
+            self._open(model, device, clock, unit)
+        except BaseException:
+            if hasattr(self, "_guard"):
+                self._guard.uninstall()
+            self._lock.release()
+            raise
+
+    def _open(self, model: ArmModel, device: Device, clock: Clock, unit: str) -> None:
+        self.warn: Callable[[str], None] = warn
+        self._warned = False
+        self._asked: tuple[F64, ArmState] | None = None  # the last goal, and the state after it
         self.motors = Motors(
             device,
             clock,
             base_reversed=self.config.base_reversed,
             watchdog_margin_s=self.config.watchdog_margin_s,
         )
-        self.state = load(path) if path.exists() else _fresh_state(model, unit)
+        self.state = load(self.path) if self.path.exists() else _fresh_state(model, unit)
         self.motors.light = self.state.light
         self._guard = ExitGuard(self.motors.stop)
         self._guard.install()
@@ -97,31 +119,64 @@ class TimedDriver:
             UnreachableError: every order would sweep the arm through the table.
         """
         goal = check_joints(self.model, q)
-        move_time(self.model, self.read(), goal, speed=speed, duration=duration)
+        move_time(self.model, self._start(), goal, speed=speed, duration=duration)
         self.move_report(goal)
+        self._asked = (goal, self.state)
+
+    def _start(self) -> F64:
+        """Where a move starts for the timing rule [rad]: the angles the last move was
+        asked for, while nothing has changed since (a joint within the resolution stays
+        where it is, so a stream of small steps is timed step by step), else the estimate."""
+        if self._asked is not None and self._asked[1] is self.state:
+            return self._asked[0]
+        return self.read()
 
     def move_report(self, q: F64, *, table: bool = True) -> MoveReport:
-        """:meth:`move`, returning what was done (steps, clamped or skipped joints).
-        ``table=False`` skips the table check (calibration, re-homing: the arm stands at
-        the edge of the table)."""
+        """:meth:`move`, returning what was done (steps, and notes on joints already
+        within the 0.5 deg resolution). ``table=False`` skips the table check
+        (calibration, re-homing: the arm stands at the edge of the table).
+
+        A joint whose turn is shorter than the motors' shortest reliable run turns in
+        two timed legs (past the target, then back); every leg is planned before the
+        first motor starts, so a refused move moves nothing."""
         if q.shape != (4,):
-            raise ValueError(f"q must have shape (4,), got {q.shape}")
+            raise InputError(f"q must be 4 joint angles, got shape {q.shape}")
+        targets = dict(enumerate(q))
         plan_turns(
-            self.timing,
-            self.joint_names,
-            self.read(),
-            dict(enumerate(q)),
-            0.0,
-            clamp=False,
-            skip_short=True,
+            self.timing, self.joint_names, self.read(), targets, 0.0, clamp=False, skip_short=True
         )
         order = safe_order(self.read(), q, self.timing.lengths, self.model.dh[0].d, table)
         report = MoveReport()
-        for j in order:
-            part = self._plan({j: float(q[j])}, clamp=False, skip_short=True)
-            report.notes += part.notes
+        height = self.model.dh[0].d if table else None
+        planned = plan_legs(
+            self.timing,
+            self.joint_names,
+            self.read(),
+            (order, q),
+            self.state.motor_s,
+            height,
+            report.notes,
+        )
+        if planned:
+            self._warn_if_uncertain()
+        for j, target in planned:
+            part = self._plan({j: target}, clamp=False, skip_short=True)
             report.steps += self._run_steps(part.steps)
         return report
+
+    @property
+    def uncertainty(self) -> str | None:
+        """Why the estimated angles may be wrong (never homed, a move cut short, the
+        watchdog, the program died mid-move), or None when they are certain."""
+        return self.state.reason if self.state.uncertain else None
+
+    def _warn_if_uncertain(self) -> None:
+        if self.state.uncertain and not self._warned:
+            self._warned = True
+            self.warn(
+                f"the OWI-535's joint angles are an uncertain estimate ({self.state.reason}) "
+                "and this move starts from it; re-home the arm to know them again"
+            )
 
     def grip(self, width: float) -> None:
         """Open (``width`` [m] over half the gripper's range) or close the gripper."""
@@ -142,6 +197,7 @@ class TimedDriver:
         finally:
             self._guard.uninstall()
             self.motors.device.close()
+            self._lock.release()
 
     # -- joints that know their angle ------------------------------------
     @property
@@ -172,7 +228,7 @@ class TimedDriver:
         estimated by the timing model and clamped at the limits."""
         j = self.model.joint_index(joint)
         if direction not in (-1, 1):
-            raise ValueError(f"turn {joint} needs direction -1 or +1, got {direction}")
+            raise InputError(f"turn {joint} needs direction -1 or +1, got {direction}")
         if seconds < self.timing.min_move_s:
             raise ShortMoveError(
                 f"turn {joint} for {seconds * 1000:.0f} ms is under the "
@@ -200,14 +256,13 @@ class TimedDriver:
         )
         run = Run({joint: (direction, worst)})
         before = self.state
-        self._save(before.with_(uncertain=True, reason=MOVING, pending=pending_of([step])))
-        try:
-            if wait is None:
-                self.motors.execute(run)
-            else:
-                self.motors.run_until(run, wait, 2 * worst + self.config.watchdog_margin_s)
-        finally:
-            self._save(after_run(before, [step], run, self.joint_names, at_limit=run.complete))
+        until = None if wait is None else (wait, 2 * worst + self.config.watchdog_margin_s)
+        self._execute(
+            run,
+            before.with_(uncertain=True, reason=MOVING, pending=pending_of([step])),
+            lambda: after_run(before, [step], run, self.joint_names, at_limit=run.complete),
+            until,
+        )
         if not run.complete:
             raise ArmkitError(
                 f"the {joint} was stopped by the watchdog before anyone said it reached "
@@ -221,11 +276,14 @@ class TimedDriver:
         if self.state.gripper == wanted:
             return
         run = Run({"gripper": (1 if open_ else -1, self.timing.gripper_s)})
-        self._save(self.state.with_(gripper="unknown"))
-        try:
-            self.motors.execute(run)
-        finally:
-            self._save(self.state.with_(gripper=wanted if run.complete else "unknown"))
+        before = self.state
+
+        def done() -> ArmState:
+            moved = wanted if run.complete else "unknown"
+            return before.with_(gripper=moved if run.started else before.gripper)
+
+        self._execute(run, before.with_(gripper="unknown"), done)
+        raise_if_watchdog(run)
 
     def set_light(self, on: bool) -> None:
         """Switch the light on or off (kept across stops)."""
@@ -238,15 +296,9 @@ class TimedDriver:
 
     # -- internals ---------------------------------------------------------
     def _plan(self, targets: dict[int, float], *, clamp: bool, skip_short: bool) -> MoveReport:
-        q = self.read()
+        q, motor_s = self.read(), self.state.motor_s
         return plan_turns(
-            self.timing,
-            self.joint_names,
-            q,
-            targets,
-            self.state.motor_s,
-            clamp=clamp,
-            skip_short=skip_short,
+            self.timing, self.joint_names, q, targets, motor_s, clamp=clamp, skip_short=skip_short
         )
 
     def _run_steps(self, steps: list[Step]) -> list[Step]:
@@ -255,16 +307,23 @@ class TimedDriver:
         names = self.joint_names
         run = Run({names[s.joint]: (s.direction, s.seconds) for s in steps})
         before = self.state
-        self._save(before.with_(uncertain=True, reason=MOVING, pending=pending_of(steps)))
-        try:
-            self.motors.execute(run)
-        finally:
-            self._save(after_run(before, steps, run, self.joint_names))
+        self._execute(
+            run,
+            before.with_(uncertain=True, reason=MOVING, pending=pending_of(steps)),
+            lambda: after_run(before, steps, run, self.joint_names),
+        )
+        raise_if_watchdog(run)
         return steps
+
+    def _execute(
+        self, run: Run, pending: ArmState, done: Callable[[], ArmState], until: Until | None = None
+    ) -> None:
+        """Save ``pending``, run the motors, save ``done()`` (see ``journaled_run``)."""
+        journaled_run(self.motors, self.clock, run, self._save, pending, done, until)
 
     def _save(self, state: ArmState) -> None:
         self.state = state
-        save(state, self.path, self.durable)
+        write(self.path, state, self.durable)
 
 
 def _fresh_state(model: ArmModel, unit: str) -> ArmState:

@@ -26,7 +26,10 @@ def after_run(
     before: ArmState, steps: list[Step], run: Run, names: tuple[str, ...], at_limit: bool = False
 ) -> ArmState:
     """The state after ``run``: each joint advanced by its measured motor time (or, with
-    ``at_limit``, exactly at the step's target limit); uncertain if the run was cut short."""
+    ``at_limit``, exactly at the step's target limit); uncertain if the run was cut short.
+    A run whose motors never started leaves ``before`` as it was."""
+    if not run.started:
+        return before.with_(pending=None)
     q = np.array(before.angles)
     angles = list(before.angles)
     for s in steps:

@@ -57,11 +57,11 @@ def status_line(driver: TimedDriver) -> str:
         f"{n[:2]}{round(math.degrees(a)) + 0:+5d}"
         for n, a in zip(driver.joint_names, q, strict=True)
     )
-    x, y, z = fk(driver.model, q)[:3, 3] * 1000
+    x, y, z = (round(float(v)) + 0 for v in fk(driver.model, q)[:3, 3] * 1000)  # no "-0"
     st = driver.state
     flags = f"grip {st.gripper} light {'on' if st.light else 'off'}"
-    sure = "UNCERTAIN (rehome)" if st.uncertain else "certain"
-    return f"{angles} | xyz {x:4.0f} {y:4.0f} {z:4.0f} mm | {flags} | {sure}"
+    sure = f"UNCERTAIN: {st.reason} (rehome)" if st.uncertain else "certain"
+    return f"{angles} | xyz {x:4d} {y:4d} {z:4d} mm | {flags} | {sure}"
 
 
 def run_keys(driver: TimedDriver, stdin: TextIO = sys.stdin, out: TextIO = sys.stdout) -> int:

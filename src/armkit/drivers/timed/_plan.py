@@ -62,7 +62,7 @@ def plan_turns(
             continue
         seconds = timing.duration(q, j, target, motor_s)
         if seconds < timing.min_move_s:
-            _short(timing, names[j], q[j], target, seconds, skip_short, report)
+            _short(timing, names[j], (q, j, target, motor_s), seconds, skip_short, report)
             continue
         report.steps.append(Step(j, 1 if target > q[j] else -1, seconds, target))
     return report
@@ -91,18 +91,23 @@ def _limited(
 def _short(
     timing: TimingModel,
     name: str,
-    start: float,
-    target: float,
+    move: tuple[F64, int, float, float],
     seconds: float,
     skip: bool,
     report: MoveReport,
 ) -> None:
-    delta = math.degrees(target - start)
+    q, j, target, motor_s = move
+    delta = math.degrees(target - q[j])
     minimum = timing.min_move_s * 1000
+    direction = 1 if target > q[j] else -1
+    smallest = abs(timing.advance(q, j, direction, timing.min_move_s, motor_s) - q[j])
     text = (
         f"{name} by {delta:+.1f} deg needs {seconds * 1000:.0f} ms of motor time, "
         f"under the {minimum:.0f} ms minimum"
     )
     if not skip:
-        raise ShortMoveError(f"{text}; turn it further (or not at all)")
+        raise ShortMoveError(
+            f"{text}; turn it further (or not at all): its smallest step is "
+            f"{math.degrees(smallest):.1f} deg"
+        )
     report.notes.append(f"{text}: left where it is")

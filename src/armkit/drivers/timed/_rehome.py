@@ -24,7 +24,7 @@ def rehome(driver: TimedDriver, say: Say = print, joints: tuple[str, ...] | None
         direction = 1 if cfg.rehome_to[name] == "upper" else -1
         say(f"re-homing the {name}: driving it against its {cfg.rehome_to[name]} limit")
         driver.drive_to_limit(name, direction)
-    driver.move_report(driver.model.home, table=False)
-    if joints is None or set(joints) == set(driver.joint_names):
+    if joints is None or set(joints) == set(driver.joint_names):  # every angle is a limit now
         driver.set_state(driver.state.with_(uncertain=False, reason="re-homed"))
+    driver.move_report(driver.model.home, table=False)
     say("re-homed: the joint angles are known again")

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from ..._errors import ArmkitError
+from ..._errors import ArmkitError, InputError
 from ..._files import config_dir, write_atomic
 from ._timing import JointTiming, TimingModel
 
@@ -62,7 +62,7 @@ class ArmState:
 def state_path(unit: str) -> Path:
     """The state file of OWI unit ``unit``."""
     if not unit or any(c in unit for c in "/\\") or unit.startswith("."):
-        raise ValueError(f"OWI unit name {unit!r} must be a plain name like 'default' or 'desk'")
+        raise InputError(f"OWI unit name {unit!r} must be a plain name like 'default' or 'desk'")
     return config_dir() / "owi535" / f"{unit}.json"
 
 
@@ -83,7 +83,7 @@ def load(path: Path) -> ArmState:
     except (OSError, ValueError, KeyError, TypeError) as exc:
         raise ArmkitError(
             f"OWI state file {path} is unreadable ({exc}); "
-            "delete it and run 'calibrate' or 'rehome'"
+            "delete it, then re-home the arm (rehome) or calibrate it"
         ) from None
 
 
@@ -108,7 +108,7 @@ def to_dict(state: ArmState) -> dict[str, Any]:
 def from_dict(d: dict[str, Any]) -> ArmState:
     """Inverse of :func:`to_dict`."""
     if d.get("version") != VERSION:
-        raise ValueError(f"version {d.get('version')!r}, expected {VERSION}")
+        raise InputError(f"version {d.get('version')!r}, expected {VERSION}")
     return ArmState(
         unit=str(d["unit"]),
         timing=timing_from_dict(d["timing"]),
@@ -179,7 +179,7 @@ def timing_from_dict(d: dict[str, Any]) -> TimingModel:
     )
     lengths = tuple(float(x) for x in d["lengths_m"])
     if len(lengths) != 3 or any(r <= 0 for jt in joints for r in jt.rates):
-        raise ValueError("timing needs 3 lengths and positive rates")
+        raise InputError("timing needs 3 lengths and positive rates")
     return TimingModel(
         joints=joints,
         lower=tuple(math.radians(float(lo)) for lo, _ in d["limits_deg"]),

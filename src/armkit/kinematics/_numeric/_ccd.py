@@ -8,29 +8,27 @@ No restarts: CCD is shown as it is, local minima included.
 
 from __future__ import annotations
 
-from ...model import ArmModel
+from .._chain import Chain
 from ._outcome import Attempt, within
 from ._residual import Task, residual
-from ._sampling import clamp_to_limits
-from ._scalar_chain import chain_state, scalar_chain
+from ._sampling import clamp
 from ._turn import best_turn
 
 MAX_SWEEPS = 200
 
 
 def solve_ccd(
-    model: ArmModel, task: Task, q_seed: list[float], tol_pos: float, tol_ang: float, rng_seed: int
+    chain: Chain, task: Task, q_seed: list[float], tol_pos: float, tol_ang: float, rng_seed: int
 ) -> Attempt:
     """CCD from ``q_seed`` [rad]; ``rng_seed`` is unused (CCD is deterministic)."""
-    sc = scalar_chain(model)
-    q = clamp_to_limits(model, q_seed)
-    res = residual(task, chain_state(sc, q), jac=False)
+    state = chain.state
+    q = clamp(q_seed, chain.lower, chain.upper)
+    res = residual(task, state(q), jac=False)
     for sweep in range(MAX_SWEEPS):
         if within(res, tol_pos, tol_ang):
             return Attempt(q, res, sweep, 0, True)
         for i in reversed(range(len(q))):
-            st = chain_state(sc, q)
-            j = model.joints[i]
-            q[i] = min(max(q[i] + best_turn(task, st, i), j.lower), j.upper)
-        res = residual(task, chain_state(sc, q), jac=False)
+            turned = q[i] + best_turn(task, state(q), i)
+            q[i] = min(max(turned, chain.lower[i]), chain.upper[i])
+        res = residual(task, state(q), jac=False)
     return Attempt(q, res, MAX_SWEEPS, 0, within(res, tol_pos, tol_ang))

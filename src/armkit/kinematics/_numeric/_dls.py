@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from operator import mul
 
 import numpy as np
 
@@ -45,16 +44,11 @@ def _step(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[flo
         return _step3(cols, e, lam)
     if m == 4 and n >= 4:
         return _step4(cols, e, lam)
-    if max(m, n) >= 5 and min(m, n) >= 5:
-        return _step_numpy(cols, e, lam)
-    if m <= n:
-        y = cholesky_solve(_gram([list(r) for r in zip(*cols, strict=True)], lam), e)
-        return [sum(map(mul, col, y)) for col in cols]
-    return cholesky_solve(_gram(cols, lam), [sum(map(mul, c, e)) for c in cols])
+    return _step_numpy(cols, e, lam)
 
 
 def _step_numpy(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[float]:
-    """The damped step by numpy, cheaper than plain floats from about 5 x 5 on."""
+    """The damped step by numpy, for the sizes without an unrolled form."""
     Jt = np.array(cols)  # (n, m)
     if Jt.shape[1] <= Jt.shape[0]:
         A = Jt.T @ Jt
@@ -99,45 +93,6 @@ def _step4(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[fl
         (s00 + lam, s01, s02, s03, s11 + lam, s12, s13, s22 + lam, s23, s33 + lam), e
     )
     return [x * y0 + y * y1 + z * y2 + w * y3 for x, y, z, w in cols]
-
-
-def _gram(V: Sequence[Sequence[float]], lam: float) -> list[list[float]]:
-    """V V^T + lam I for the rows of V."""
-    k = len(V)
-    A = [[0.0] * k for _ in range(k)]
-    for r in range(k):
-        vr, Ar = V[r], A[r]
-        for c in range(r):
-            Ar[c] = A[c][r] = sum(map(mul, vr, V[c]))
-        Ar[r] = sum(map(mul, vr, vr)) + lam
-    return A
-
-
-def cholesky_solve(A: Sequence[Sequence[float]], b: Sequence[float]) -> list[float]:
-    """x with A x = b for a symmetric positive definite A (k x k, k small)."""
-    k = len(b)
-    if k == 3:
-        return _solve3(A, b)
-    L = [[0.0] * k for _ in range(k)]
-    for i in range(k):
-        Li = L[i]
-        for j in range(i + 1):
-            Lj = L[j]
-            s = A[i][j]
-            for t in range(j):
-                s -= Li[t] * Lj[t]
-            Li[j] = math.sqrt(max(s, 1e-300)) if i == j else s / Lj[j]
-    y = list(b)
-    for i in range(k):
-        Li = L[i]
-        for t in range(i):
-            y[i] -= Li[t] * y[t]
-        y[i] /= Li[i]
-    for i in reversed(range(k)):
-        for t in range(i + 1, k):
-            y[i] -= L[t][i] * y[t]
-        y[i] /= L[i][i]
-    return y
 
 
 def _solve4(u: tuple[float, ...], b: Sequence[float]) -> tuple[float, float, float, float]:

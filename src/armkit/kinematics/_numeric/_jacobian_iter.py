@@ -8,12 +8,11 @@ method LM improves on, shown as it is.
 
 from __future__ import annotations
 
-from ...model import ArmModel
+from .._chain import Chain
 from ._dls import dls_step
 from ._outcome import Attempt, within
 from ._residual import Task, residual
-from ._sampling import clamp_to_limits
-from ._scalar_chain import chain_state, scalar_chain
+from ._sampling import clamp
 
 MAX_ITERATIONS = 300
 MAX_STEP = 0.2  # [rad]
@@ -21,14 +20,12 @@ EPS = 1e-9  # [task unit^2]
 
 
 def solve_jacobian(
-    model: ArmModel, task: Task, q_seed: list[float], tol_pos: float, tol_ang: float, rng_seed: int
+    chain: Chain, task: Task, q_seed: list[float], tol_pos: float, tol_ang: float, rng_seed: int
 ) -> Attempt:
     """Pseudo-inverse iteration from ``q_seed`` [rad]; ``rng_seed`` is unused."""
-    sc = scalar_chain(model)
-    lo = [j.lower for j in model.joints]
-    hi = [j.upper for j in model.joints]
-    q = clamp_to_limits(model, q_seed)
-    res = residual(task, chain_state(sc, q))
+    lo, hi = chain.lower, chain.upper
+    q = clamp(q_seed, lo, hi)
+    res = residual(task, chain.state(q))
     for it in range(MAX_ITERATIONS):
         if within(res, tol_pos, tol_ang):
             return Attempt(q, res, it, 0, True)
@@ -37,5 +34,5 @@ def solve_jacobian(
         big = max(abs(v) for v in dq)
         k = MAX_STEP / big if big > MAX_STEP else 1.0
         q = [min(max(v + k * d, a), b) for v, d, a, b in zip(q, dq, lo, hi, strict=True)]
-        res = residual(task, chain_state(sc, q))
+        res = residual(task, chain.state(q))
     return Attempt(q, res, MAX_ITERATIONS, 0, within(res, tol_pos, tol_ang))

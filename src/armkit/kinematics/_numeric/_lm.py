@@ -8,9 +8,10 @@ adapted Marquardt-style: accepted steps shrink it, rejected ones grow it.
 Every run starts by turning the first joint alone to its exact best angle
 (``_turn_first_joint``). A run that stops improving is restarted from a
 seeded random q inside the limits (alternately the best of a few samples and
-a plain one). Plain-float arithmetic on unrolled per-model code (see
-``_scalar_chain`` and ``_unrolled``): 60-75 microseconds per call on the
-4-5 joint arms from their home pose, a Jacobian only where a step is taken.
+a plain one). Plain-float arithmetic on the chain's scalar fast path
+(``_scalar``): 60-75 microseconds per call on the 4-5 joint arms from their
+home pose, a Jacobian only where a step is taken. The batch form
+(``_lm_batch``) runs the same method with the same settings on arrays.
 """
 
 from __future__ import annotations
@@ -19,12 +20,12 @@ import math
 from dataclasses import dataclass
 from operator import ge, le
 
-from ...model import ArmModel
+from .._chain import Chain
+from .._scalar import ChainState, State
 from ._dls import dls_step
 from ._outcome import Attempt, beyond_reach, within
 from ._residual import Residual, Task, residual, task_jacobian
 from ._sampling import JointSampler, clamp
-from ._scalar_chain import ChainState, ScalarChain, chain_state, scalar_chain
 from ._turn import best_turn
 
 
@@ -56,17 +57,17 @@ CANDIDATES = 8  # random joint vectors drawn per restart; the best one starts th
 
 @dataclass(slots=True)
 class _Problem:
-    sc: ScalarChain
+    state: State
     task: Task
-    lower: list[float]
-    upper: list[float]
+    lower: tuple[float, ...]
+    upper: tuple[float, ...]
     tol_pos: float
     tol_ang: float
     settings: LMSettings
 
 
 def solve_lm(
-    model: ArmModel, task: Task, q_seed: list[float], tol_pos: float, tol_ang: float, rng_seed: int
+    chain: Chain, task: Task, q_seed: list[float], tol_pos: float, tol_ang: float, rng_seed: int
 ) -> Attempt:
     """LM from ``q_seed`` [rad] (clamped into the limits), restarting when stalled.
 
@@ -74,14 +75,14 @@ def solve_lm(
         The converged ``Attempt``, or the best one found when the budget ran out.
     """
     settings = DEFAULT_SETTINGS
-    lower, upper = _limits(model)
-    prob = _Problem(scalar_chain(model), task, lower, upper, tol_pos, tol_ang, settings)
+    lower, upper = chain.lower, chain.upper
+    prob = _Problem(chain.state, task, lower, upper, tol_pos, tol_ang, settings)
     q, res, total = lm_run(prob, clamp(q_seed, lower, upper))
     if within(res, tol_pos, tol_ang):
         return Attempt(q, res, total, 0, True)
     best = Attempt(q, res, total, 0, False)
-    sampler = JointSampler(model, rng_seed)
-    restarts = settings.max_restarts if not beyond_reach(model, task) else 0
+    sampler = JointSampler(chain, rng_seed)
+    restarts = settings.max_restarts if not beyond_reach(chain, task) else 0
     for k in range(1, restarts + 1):
         q, res, its = lm_run(prob, _restart_point(prob, sampler, k))
         total += its
@@ -103,7 +104,7 @@ def _restart_point(prob: _Problem, sampler: JointSampler, k: int) -> list[float]
         return best
     for _ in range(CANDIDATES):
         q = sampler.sample()
-        c = residual(prob.task, chain_state(prob.sc, q), jac=False).cost
+        c = residual(prob.task, prob.state(q), jac=False).cost
         if c < cost:
             best, cost = q, c
     return best
@@ -112,8 +113,8 @@ def _restart_point(prob: _Problem, sampler: JointSampler, k: int) -> list[float]
 def lm_run(prob: _Problem, q: list[float]) -> tuple[list[float], Residual, int]:
     """One LM run from q [rad] (first joint turned, see ``_turn_first_joint``):
     (final q, its residual, iterations)."""
-    task, sc, settings = prob.task, prob.sc, prob.settings
-    st = chain_state(sc, q)
+    task, state, settings = prob.task, prob.state, prob.settings
+    st = state(q)
     res = residual(task, st, jac=False)
     if not within(res, prob.tol_pos, prob.tol_ang):
         q, st, res = _turn_first_joint(prob, q, st, res)
@@ -125,7 +126,7 @@ def lm_run(prob: _Problem, q: list[float]) -> tuple[list[float], Residual, int]:
         if cols is None:
             cols = task_jacobian(task, st)
         trial = _step(prob, q, cols, res.e, mu * res.cost + 1e-12)
-        trial_st = sc.state(trial)
+        trial_st = state(trial)
         new = residual(task, trial_st, jac=False)
         if new.cost < res.cost:
             q, st, res, cols = trial, trial_st, new, None
@@ -161,7 +162,7 @@ def _turn_first_joint(
         turned[0] += -math.pi if turned[0] > hi else math.pi
         if not lo <= turned[0] <= hi:
             return q, st, res
-    turned_st = chain_state(prob.sc, turned)
+    turned_st = prob.state(turned)
     new = residual(prob.task, turned_st, jac=False)
     return (turned, turned_st, new) if flip or new.cost < res.cost else (q, st, res)
 
@@ -186,12 +187,3 @@ def _step(
         t = v + k * d
         trial.append(a if t < a else (b if t > b else t))
     return trial
-
-
-def _limits(model: ArmModel) -> tuple[list[float], list[float]]:
-    """Lower and upper joint limits [rad] as Python floats (numpy scalars are slow here)."""
-    limits = model._cache.get("limit_lists")
-    if limits is None:
-        limits = [float(j.lower) for j in model.joints], [float(j.upper) for j in model.joints]
-        model._cache["limit_lists"] = limits
-    return limits  # type: ignore[no-any-return]

@@ -16,11 +16,9 @@ from dataclasses import dataclass, fields
 import numpy as np
 from numpy.typing import NDArray
 
-from ...model import ArmModel
-from .._fk import fk
-from ._batch_chain import jacobian_and_pose_lean
+from .._chain import Chain
+from .._forward import sweep
 from ._lm import CANDIDATES, LMSettings
-from ._residual import reach_bound
 from ._residual_batch import BatchResidual, BatchTask, residual_batch, task_cost
 from ._turn_batch import turn_first_joint
 
@@ -74,16 +72,16 @@ class BatchOutcome:
 
 
 def solve_lm_batch(
-    model: ArmModel, task: BatchTask, q0: F64, tol_pos: float, tol_ang: float, rng_seed: int
+    chain: Chain, task: BatchTask, q0: F64, tol_pos: float, tol_ang: float, rng_seed: int
 ) -> BatchOutcome:
     """LM on N targets from seeds q0 [rad], shape (N, dof) (clamped into the limits)."""
     st, n = BATCH_SETTINGS, len(task.P)
     rng = np.random.default_rng(rng_seed)
     out = BatchOutcome(q0.copy(), np.zeros(n, bool), np.zeros(n, np.int64), np.zeros(n, np.int64))
-    far = np.linalg.norm(task.P, axis=1) > reach_bound(model)
+    far = np.linalg.norm(task.P, axis=1) > chain.reach
     budget = np.where(far, 0, st.max_restarts)
-    q = turn_first_joint(model, task, np.clip(q0, model.lower, model.upper))
-    runs = _new_runs(np.arange(n), q, _evaluate(model, task, q), st)
+    q = turn_first_joint(chain, task, np.clip(q0, chain.lower_a, chain.upper_a))
+    runs = _new_runs(np.arange(n), q, _evaluate(chain, task, q), st)
     while runs.owner.size:
         conv = (runs.pos <= tol_pos) & (runs.ang <= tol_ang)
         out.converged[runs.owner[conv]] = True
@@ -93,14 +91,15 @@ def solve_lm_batch(
         if not runs.owner.size:
             break
         out.iterations[:] += np.bincount(runs.owner, minlength=n) > 0
-        _iterate(model, task.take(runs.owner), runs, st)
-        runs = _respawn(model, task, runs, out, budget, rng, st)
+        _iterate(chain, task.take(runs.owner), runs, st)
+        runs = _respawn(chain, task, runs, out, budget, rng, st)
     return out
 
 
-def _evaluate(model: ArmModel, task: BatchTask, q: F64) -> BatchResidual:
-    J, T = jacobian_and_pose_lean(model, q)
-    return residual_batch(task, J, T)
+def _evaluate(chain: Chain, task: BatchTask, q: F64) -> BatchResidual:
+    out = sweep(chain, q, jacobian=True)
+    assert out.J is not None
+    return residual_batch(task, out.J, out.T)
 
 
 def _new_runs(owner: IDX, q: F64, r: BatchResidual, st: LMSettings) -> _Runs:
@@ -159,9 +158,9 @@ def cholesky_solve_lanes(gram: list[list[F64]], b: list[F64], lam: F64) -> list[
     return y
 
 
-def _iterate(model: ArmModel, task: BatchTask, s: _Runs, st: LMSettings) -> None:
+def _iterate(chain: Chain, task: BatchTask, s: _Runs, st: LMSettings) -> None:
     """One damped step for every run (in place); accepted where the cost fell."""
-    lo, hi = model.lower, model.upper
+    lo, hi = chain.lower_a, chain.upper_a
     lam = s.mu * s.cost + 1e-12
     dq = damped_steps(s.J, s.e, lam)
     frozen = ((s.q <= lo) & (dq < 0.0)) | ((s.q >= hi) & (dq > 0.0))
@@ -171,7 +170,7 @@ def _iterate(model: ArmModel, task: BatchTask, s: _Runs, st: LMSettings) -> None
     big = np.abs(dq).max(axis=1)
     dq *= np.minimum(1.0, st.max_step / np.maximum(big, 1e-300))[:, None]
     trial = np.clip(s.q + dq, lo, hi)
-    r = _evaluate(model, task, trial)
+    r = _evaluate(chain, task, trial)
     acc = r.cost < s.cost
     s.q[acc], s.e[acc], s.J[acc], s.cost[acc] = trial[acc], r.e[acc], r.J[acc], r.cost[acc]
     s.pos[acc], s.ang[acc] = r.position_error[acc], r.angle_error[acc]
@@ -183,7 +182,7 @@ def _iterate(model: ArmModel, task: BatchTask, s: _Runs, st: LMSettings) -> None
 
 
 def _respawn(
-    model: ArmModel,
+    chain: Chain,
     task: BatchTask,
     runs: _Runs,
     out: BatchOutcome,
@@ -203,7 +202,7 @@ def _respawn(
     if owners.size == 0:
         return runs
     np.add.at(out.restarts, owners, 1)
-    q, r = _restart_points(model, task.take(owners), out.restarts[owners], rng)
+    q, r = _restart_points(chain, task.take(owners), out.restarts[owners], rng)
     return runs.join(_new_runs(owners, q, r, st))
 
 
@@ -221,13 +220,13 @@ def _restart_owners(waiting: IDX, live: NDArray[np.int64], left: NDArray[np.int6
 
 
 def _restart_points(
-    model: ArmModel, task: BatchTask, restarts: NDArray[np.int64], rng: np.random.Generator
+    chain: Chain, task: BatchTask, restarts: NDArray[np.int64], rng: np.random.Generator
 ) -> tuple[F64, BatchResidual]:
     """Per run, where it begins (as ``_lm._restart_point``): the lowest-cost of CANDIDATES
     random joint vectors for an odd restart count, else one uniform sample."""
     k, c = len(task.P), CANDIDATES
-    q = rng.uniform(model.lower, model.upper, size=(k, c, model.dof))
-    cost = task_cost(task.take(np.repeat(np.arange(k), c)), fk(model, q.reshape(k * c, -1)))
+    q = rng.uniform(chain.lower_a, chain.upper_a, size=(k, c, chain.dof))
+    cost = task_cost(task.take(np.repeat(np.arange(k), c)), sweep(chain, q.reshape(k * c, -1)).T)
     pick = np.where(restarts % 2 == 1, cost.reshape(k, c).argmin(axis=1), 0)
     start = q[np.arange(k), pick]
-    return start, _evaluate(model, task, start)
+    return start, _evaluate(chain, task, start)

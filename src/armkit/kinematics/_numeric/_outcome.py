@@ -8,9 +8,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..._errors import NoSolutionError, UnreachableError
-from ...model import ArmModel
-from .._result import IKResult
-from ._residual import Residual, Task, reach_bound
+from .._chain import Chain
+from .._result import IKResult, Method
+from .._target import Goal
+from ._residual import Residual, Task
 
 
 @dataclass(slots=True)
@@ -35,12 +36,12 @@ def within(res: Residual, tol_pos: float, tol_ang: float) -> bool:
     return res.position_error <= tol_pos and res.angle_error <= tol_ang
 
 
-def beyond_reach(model: ArmModel, task: Task) -> bool:
+def beyond_reach(chain: Chain, task: Task) -> bool:
     """True when the target point is farther from the base than any pose can reach."""
-    return math.sqrt(sum(v * v for v in task.p)) > reach_bound(model)
+    return math.sqrt(sum(v * v for v in task.p)) > chain.reach
 
 
-def finish(model: ArmModel, method: str, task: Task, attempt: Attempt) -> IKResult:
+def finish(chain: Chain, method: Method, task: Task, attempt: Attempt) -> IKResult:
     """The ``IKResult`` of a converged attempt; raises otherwise.
 
     Raises:
@@ -50,27 +51,21 @@ def finish(model: ArmModel, method: str, task: Task, attempt: Attempt) -> IKResu
     """
     res = attempt.residual
     if attempt.converged:  # q's arrays are built when read (see IKResult)
-        return IKResult(
-            q=attempt.q,
-            solutions=[attempt.q],
-            method=method,
-            iterations=attempt.iterations,
-            restarts=attempt.restarts,
-            position_error=res.position_error,
-            angle_error=res.angle_error,
-        )
+        goal = Goal(task.p, task.pitch, task.R)
+        ranked = ((0.0, tuple(attempt.q)),)
+        return IKResult(ranked, method, attempt.iterations, attempt.restarts, goal, chain)
     q = np.array(attempt.q)
     miss = f"{res.position_error * 1000:.3f} mm, {math.degrees(res.angle_error):.3f} deg"
-    if beyond_reach(model, task):
+    if beyond_reach(chain, task):
         raise UnreachableError(
-            f"target is out of {model.name}'s reach (closest pose found misses by {miss}); "
+            f"target is out of {chain.name}'s reach (closest pose found misses by {miss}); "
             "move the target closer to the base",
             reason="too_far",
             closest=q,
         )
     hint = "another q_seed" if method == "lm" else "method='lm'"
     raise NoSolutionError(
-        f"{method} did not converge for {model.name} after {attempt.iterations} iterations and "
+        f"{method} did not converge for {chain.name} after {attempt.iterations} iterations and "
         f"{attempt.restarts} restarts (closest pose misses by {miss}); the target may be outside "
         f"the joint limits, or try {hint}",
         reason="no_convergence",

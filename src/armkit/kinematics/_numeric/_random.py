@@ -11,26 +11,24 @@ from __future__ import annotations
 
 import random
 
-from ...model import ArmModel
+from .._chain import Chain
 from ._outcome import Attempt, within
-from ._residual import Task, reach_bound, residual
-from ._sampling import clamp_to_limits
-from ._scalar_chain import chain_state, scalar_chain
+from ._residual import Task, residual
+from ._sampling import clamp
 
 MAX_TRIES = 2000
 MAX_SIGMA = 0.1  # [rad]
 
 
 def solve_random(
-    model: ArmModel, task: Task, q_seed: list[float], tol_pos: float, tol_ang: float, rng_seed: int
+    chain: Chain, task: Task, q_seed: list[float], tol_pos: float, tol_ang: float, rng_seed: int
 ) -> Attempt:
     """Random search from ``q_seed`` [rad], reproducible from ``rng_seed``."""
-    sc = scalar_chain(model)
     rnd = random.Random(rng_seed)
-    bounds = [(j.lower, j.upper) for j in model.joints]
-    reach = reach_bound(model)
-    q = clamp_to_limits(model, q_seed)
-    res = residual(task, chain_state(sc, q), jac=False)
+    bounds = list(zip(chain.lower, chain.upper, strict=True))
+    reach, state = chain.reach, chain.state
+    q = clamp(q_seed, chain.lower, chain.upper)
+    res = residual(task, state(q), jac=False)
     for it in range(MAX_TRIES):
         if within(res, tol_pos, tol_ang):
             return Attempt(q, res, it, 0, True)
@@ -39,7 +37,7 @@ def solve_random(
             min(max(v + rnd.gauss(0.0, sigma), lo), hi)
             for v, (lo, hi) in zip(q, bounds, strict=True)
         ]
-        new = residual(task, chain_state(sc, trial), jac=False)
+        new = residual(task, state(trial), jac=False)
         if new.cost < res.cost:
             q, res = trial, new
     return Attempt(q, res, MAX_TRIES, 0, within(res, tol_pos, tol_ang))

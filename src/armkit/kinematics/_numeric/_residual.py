@@ -15,11 +15,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
-
-from ...model import ArmModel
-from .._target import Target
-from ._scalar_chain import ChainState, Vec3
+from .._scalar import ChainState, Vec3
 
 
 @dataclass(frozen=True, slots=True)
@@ -56,29 +52,6 @@ class Residual:
     position_error: float
     angle_error: float
     cost: float
-
-
-def angle_weight(model: ArmModel) -> float:
-    """Half the arm's reach bound [m/rad], the angle rows' weight."""
-    return 0.5 * reach_bound(model)
-
-
-def reach_bound(model: ArmModel) -> float:
-    """Upper bound on the tool point's distance from the world origin [m] (cached)."""
-    bound = model._cache.get("reach_bound")
-    if bound is None:
-        links = sum(math.hypot(r.a, r.d) for r in model.dh)
-        bound = links + float(np.linalg.norm(model.T_flange_tool[:3, 3]))
-        model._cache["reach_bound"] = bound
-    return float(bound)
-
-
-def task_of(model: ArmModel, target: Target) -> Task:
-    """The ``Task`` of a validated target."""
-    p = target.position
-    R = None if target.orientation is None else tuple(float(v) for v in target.orientation.ravel())
-    pitch = None if target.pitch is None else float(target.pitch)
-    return Task((float(p[0]), float(p[1]), float(p[2])), pitch, R, angle_weight(model))
 
 
 def residual(task: Task, st: ChainState, jac: bool = True) -> Residual:

@@ -4,20 +4,20 @@ from __future__ import annotations
 
 import random
 
-from ...model import ArmModel
+from .._chain import Chain
 
 
 class JointSampler:
     """Uniform joint vectors inside a model's limits, reproducible from a seed.
 
     Args:
-        model: the arm.
+        chain: the arm's compiled chain.
         seed: the random seed; the same seed gives the same sequence.
     """
 
-    def __init__(self, model: ArmModel, seed: int) -> None:
+    def __init__(self, chain: Chain, seed: int) -> None:
         self._random = random.Random(seed)
-        self._bounds = [(j.lower, j.upper) for j in model.joints]
+        self._bounds = list(zip(chain.lower, chain.upper, strict=True))
 
     def sample(self) -> list[float]:
         """One joint vector [rad], dof floats, each inside its joint's limits."""
@@ -25,12 +25,7 @@ class JointSampler:
         return [uniform(lo, hi) for lo, hi in self._bounds]
 
 
-def clamp_to_limits(model: ArmModel, q: list[float]) -> list[float]:
-    """q [rad] with every joint clamped into its limits."""
-    return clamp(q, [j.lower for j in model.joints], [j.upper for j in model.joints])
-
-
-def clamp(q: list[float], lower: list[float], upper: list[float]) -> list[float]:
+def clamp(q: list[float], lower: tuple[float, ...], upper: tuple[float, ...]) -> list[float]:
     """q [rad] with every joint clamped into [lower, upper], as Python floats."""
     out = []
     for v, a, b in zip(q, lower, upper, strict=True):

@@ -12,8 +12,8 @@ from __future__ import annotations
 
 import math
 
+from .._scalar import ChainState, Vec3
 from ._residual import Task
-from ._scalar_chain import ChainState, Vec3
 
 
 def best_turn(task: Task, st: ChainState, i: int) -> float:

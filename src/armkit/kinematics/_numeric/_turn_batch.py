@@ -12,18 +12,18 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-from ...model import ArmModel
-from .._fk import fk
+from .._chain import Chain
+from .._forward import sweep
 from ._residual_batch import BatchTask, task_cost
-from ._scalar_chain import chain_state, scalar_chain
 
 F64 = NDArray[np.float64]
 
 
-def turn_first_joint(model: ArmModel, task: BatchTask, q: F64) -> F64:
+def turn_first_joint(chain: Chain, task: BatchTask, q: F64) -> F64:
     """q (k, dof) [rad] with joint 0 turned to its best angle where that helps."""
-    T = fk(model, q)
-    z, o = _first_axis(model)
+    T = sweep(chain, q).T
+    st = chain.state(list(chain.home))  # joint 0's axis never moves
+    z, o = np.array(st.jw[0]), np.array(st.origins[0])
     u, v = _reject(T[:, :3, 3] - o, z), _reject(task.P - o, z)
     num, den = _triple(z, u, v), np.einsum("ki,ki->k", u, v)
     w2 = task.weight * task.weight
@@ -31,20 +31,14 @@ def turn_first_joint(model: ArmModel, task: BatchTask, q: F64) -> F64:
         a, b = _reject(a, z), _reject(b, z)
         num += w2 * _triple(z, a, b)
         den += w2 * np.einsum("ki,ki->k", a, b)
-    lo, hi = model.lower[0], model.upper[0]
+    lo, hi = chain.lower[0], chain.upper[0]
     turned = q.copy()
     turned[:, 0] += np.arctan2(num, den)
     flip = (turned[:, 0] < lo) | (turned[:, 0] > hi)
     turned[flip, 0] += np.where(turned[flip, 0] > hi, -np.pi, np.pi)
     inside = (turned[:, 0] >= lo) & (turned[:, 0] <= hi)
-    better = task_cost(task, fk(model, turned)) < task_cost(task, T)
+    better = task_cost(task, sweep(chain, turned).T) < task_cost(task, T)
     return np.where((inside & (flip | better))[:, None], turned, q)
-
-
-def _first_axis(model: ArmModel) -> tuple[F64, F64]:
-    """Joint 0's signed unit axis and a point on it [m], each shape (3,)."""
-    st = chain_state(scalar_chain(model), model.home.tolist())
-    return np.array(st.jw[0]), np.array(st.origins[0])
 
 
 def _axis_pairs(task: BatchTask, T: F64) -> list[tuple[F64, F64]]:

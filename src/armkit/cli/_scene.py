@@ -1,0 +1,78 @@
+"""``armkit scene list`` and ``armkit --scene FILE scene show`` (text and a top view)."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import Any
+
+from .._errors import ArmkitError
+
+SCENE_HELP = (
+    "scenes are TOML files in millimetres and degrees (see the README's 'Scenes and tasks'); "
+    "shipped: empty, board_001, search_002"
+)
+
+
+def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
+    """Add ``scene list`` and ``scene show``."""
+    scene = sub.add_parser("scene", help="what is on the table: list shipped scenes, show one")
+    verbs = scene.add_subparsers(dest="verb", metavar="VERB", required=True)
+    p = verbs.add_parser("list", help="the shipped scenes")
+    p.set_defaults(func=_list)
+    p = verbs.add_parser(
+        "show",
+        help="print the scene given with --scene and draw it from above",
+        description="Print every object of the scene (mm, deg) and write a top view.",
+        epilog=SCENE_HELP,
+    )
+    p.add_argument(
+        "-o",
+        "--output",
+        metavar="FILE.png",
+        help="top view picture (.png, .svg, .pdf; default <scene>_top.png; needs matplotlib)",
+    )
+    p.add_argument("--no-picture", action="store_true", help="print only, write no picture")
+    p.set_defaults(func=_show)
+
+
+def scene_of(args: argparse.Namespace, required: bool = True) -> Any:
+    """The scene named by the global ``--scene`` (None if not given and not required)."""
+    from ..scene import load_scene, shipped_scenes
+
+    if args.scene is None:
+        if not required:
+            return None
+        raise ArmkitError(
+            f"'{args.command}' needs a scene: give --scene FILE|NAME before the command "
+            f"(shipped: {', '.join(shipped_scenes())})"
+        )
+    return load_scene(args.scene)
+
+
+def _list(args: argparse.Namespace) -> int:
+    from ..scene import load_scene, shipped_scenes
+
+    for name in shipped_scenes():
+        scene = load_scene(name)
+        print(
+            f"{name:12s} {len(scene.names())} objects: {', '.join(scene.names()) or 'empty table'}"
+        )
+    return 0
+
+
+def _show(args: argparse.Namespace) -> int:
+    from ..model import load_model
+    from ..scene._picture import check_output, top_view
+    from ..scene._show import describe
+
+    scene = scene_of(args)
+    model = load_model(args.arm)
+    out = None if args.no_picture else Path(args.output or f"{scene.name}_top.png")
+    if out is not None:
+        check_output(out)
+    print("\n".join(describe(scene)))
+    if out is not None:
+        top_view(scene, out, model)
+        print(f"top view written to {out}")
+    return 0

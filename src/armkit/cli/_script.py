@@ -1,0 +1,200 @@
+"""The command language: ``armkit run FILE``, ``armkit check FILE``, ``armkit shell``.
+
+A script's ``arm``/``driver``/``scene`` lines choose what the global options
+would; a global option left at its default gives way to the script, one set to
+something else must agree with it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from .._errors import ArmkitError, InputError
+from .._files import config_dir
+from ._motion import _open as open_arm
+
+if TYPE_CHECKING:
+    from ..arm import Arm
+    from ..script import Source
+    from ..script._ast import Header, Statement
+    from ..script._backend import Frame
+    from ..script._check import Setup
+    from ..script._resolve import SceneInfo
+
+DEFAULTS = {"arm": "openmanipulator_x", "driver": "sim"}
+UNITS_NOTE = (
+    "Scripts are in mm, degrees and seconds unless a unit is written (cm, m, in, rad, ms, "
+    "min, %, mm/s). The grammar: 'armkit shell' then 'help', or the README's section."
+)
+
+
+def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
+    """Add run, check and shell."""
+    p = sub.add_parser(
+        "run", help="check a .arm script whole, then run it", epilog=UNITS_NOTE,
+        description="Check the whole script (every problem listed, nothing moves if there is "
+        "one), then run it on the arm, printing each line as it runs.",
+    )  # fmt: skip
+    p.add_argument("file", metavar="FILE", help="the script (.arm)")
+    p.add_argument(
+        "--dry-run", action="store_true", help="print the plan and its time [s]; move nothing"
+    )
+    p.add_argument(
+        "--repeat",
+        type=int,
+        default=1,
+        metavar="N",
+        help="run the whole script N times (default 1)",
+    )
+    p.add_argument("-q", "--quiet", action="store_true", help="do not print each line as it runs")
+    p.set_defaults(func=_run)
+    p = sub.add_parser(
+        "check", help="check a .arm script without moving: every error with line and column",
+        epilog=UNITS_NOTE,
+    )  # fmt: skip
+    p.add_argument("file", metavar="FILE", help="the script (.arm)")
+    p.add_argument(
+        "--plan", action="store_true", help="also print the plan (from home) and its time [s]"
+    )
+    p.set_defaults(func=_check)
+    p = sub.add_parser(
+        "shell", help="the script language interactively: history, Tab completion, jog, teach",
+        epilog=UNITS_NOTE,
+    )  # fmt: skip
+    p.add_argument(
+        "--no-history", action="store_true", help="do not read or write the history file"
+    )
+    p.set_defaults(func=_shell)
+
+
+def _check(args: argparse.Namespace) -> int:
+    from ..model import load_model
+    from ..script import check_source
+
+    source, setup = _read(args.file)
+    arm = _choose(args, "arm", setup.arm, source)
+    scene = _scene(args)
+    model = load_model(arm) if arm != (setup.arm.value if setup.arm else None) else None
+    result = check_source(source, model=model, scene=scene)
+    _report(result)
+    result.raise_if_failed()
+    if args.plan:
+        print(result.plan.format(source))
+    plan = result.plan
+    later = f" (+{plan.unknown} timed when run)" if plan.unknown else ""
+    print(
+        f"{source.name}: ok for {result.model.name}: {len(plan.steps)} steps, {plan.total:.2f} s from home{later}"
+    )
+    return 0
+
+
+def _run(args: argparse.Namespace) -> int:
+    from ..script import check_source, run_checked
+
+    if args.repeat < 1:
+        raise InputError(f"--repeat must be 1 or more, got {args.repeat}")
+    source, setup = _read(args.file)
+    with _open(args, setup, source) as arm:
+        result = check_source(
+            source, model=arm.model, scene=_scene(args), q0=arm.driver.read(),
+            require_jobs=not args.dry_run, repeat=args.repeat,
+        )  # fmt: skip
+        _report(result)
+        result.raise_if_failed()
+        if args.dry_run:
+            print(result.plan.format(source))
+            print("dry run: nothing moved")
+            return 0
+        t0 = arm.clock.now()
+        hook = None if args.quiet else _progress(source)
+        run_checked(arm, result, repeat=args.repeat, on_step=hook)
+        print(f"done: {source.name} in {arm.clock.now() - t0:.2f} s")
+    return 0
+
+
+def _shell(args: argparse.Namespace) -> int:
+    from ..script._session import Session
+    from ..script._shell import Shell
+
+    with _open(args, None, None) as arm:
+        session = Session(arm, scene=_scene(args))
+        history = None if args.no_history else config_dir() / "shell_history"
+        return Shell(session, history=history).loop()
+
+
+def _read(name: str) -> tuple[Source, Setup]:
+    from ..script import Source, parse
+    from ..script._check import setup_of
+
+    path = Path(name)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ArmkitError(
+            f"cannot read the script {name}: {getattr(exc, 'strerror', exc)}"
+        ) from None
+    source = Source(name, text)
+    program, _ = parse(source)
+    return source, setup_of(program)
+
+
+def _choose(args: argparse.Namespace, what: str, header: Header | None, source: Source) -> str:
+    """The script's choice where the option was left at its default, else the option."""
+    option: str = getattr(args, what)
+    if header is None:
+        return option
+    value = header.value
+    if what == "arm" and value.endswith(".toml"):
+        local = Path(source.name).parent / value
+        value = str(local) if local.exists() else value
+    if option in (DEFAULTS[what], value, Path(value).stem):
+        return value
+    raise InputError(
+        f"{source.name}:{header.loc.line}: the script chooses {what} {header.value} but "
+        f"--{what} says {option}; drop the option or change the script"
+    )
+
+
+def _open(args: argparse.Namespace, setup: Setup | None, source: Source | None) -> Arm:
+    ns = argparse.Namespace(**vars(args))
+    if setup is not None and source is not None:
+        ns.arm = _choose(args, "arm", setup.arm, source)
+        ns.driver = _choose(args, "driver", setup.driver, source)
+        if setup.driver is not None and setup.driver.port is not None and args.port is None:
+            ns.port = setup.driver.port
+    return open_arm(ns)
+
+
+def _scene(args: argparse.Namespace) -> SceneInfo | None:
+    label = getattr(args, "scene", None)
+    if not label:
+        return None
+    from ..script._ast import Loc
+    from ..script._check import load_scene_info
+
+    problems: list[Any] = []
+    info = load_scene_info(str(label), Path.cwd(), Loc(1, 1), problems)
+    for d in problems:
+        print(f"armkit: {d.severity}: --scene {label}: {d.message}", file=sys.stderr)
+    if info is None:
+        raise ArmkitError(f"cannot load the scene {label}")
+    return info
+
+
+def _report(result: Any) -> None:
+    for d in result.diagnostics:
+        print(d.format(result.program.source), file=sys.stderr)
+
+
+def _progress(source: Source) -> Any:
+    def show(stmt: Statement, frames: tuple[Frame, ...]) -> None:
+        text = source.line(stmt.loc.line).split("#")[0].strip()
+        where = " ".join(
+            f"{f.iteration}/{f.count}" if f.kind == "repeat" else f.name for f in frames
+        )
+        print(f"{stmt.loc.line:>5}  {text}" + (f"  [{where}]" if where else ""), flush=True)
+
+    return show

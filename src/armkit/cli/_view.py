@@ -1,0 +1,228 @@
+"""``armkit view``: the arm in 3D in the browser, to watch, teach, and take pictures.
+
+viser (the ``web`` extra) and matplotlib are imported only when the command runs.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .._errors import ArmkitError, InputError
+
+EPILOG = """\
+The page is served from this computer (no network needed): open the printed URL.
+--host 127.0.0.1 (default) lets only this computer see it; 0.0.0.0 serves every network.
+Units: target and poses in mm and degrees.
+
+examples:
+  armkit view                                   # the simulated OpenManipulator-X, teach from the page
+  armkit view --cubes --target 200 -80 60 --pitch -90
+  armkit view --cubes --pose 0 20 10 -40 --screenshot view.png
+  armkit --arm lynx6 view --gif tour.gif --pose 90 90 90 90 90 --pose 60 110 70 80 90
+"""
+
+
+def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
+    """Add ``view``."""
+    p = sub.add_parser(
+        "view",
+        help="a live 3D view of the arm in the browser; teach poses; pictures (web extra)",
+        description="Serve a 3D page of the arm on its table: links as the clearance capsules, "
+        "the gripper, the tool's trail, a target marker (green: reachable and clear; red: why "
+        "not). Joint sliders and a draggable target move the arm; 'Record pose' keeps poses.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("--host", default="127.0.0.1", help="address to serve on (default 127.0.0.1)")
+    p.add_argument(
+        "--port",
+        dest="http_port",
+        type=int,
+        default=8080,
+        help="TCP port of the page (default 8080; 0 = any free); the driver's port is the "
+        "global --port before 'view'",
+    )
+    p.add_argument("--rate", type=float, default=30.0, metavar="HZ", help="updates per second [Hz]")
+    p.add_argument("--frames", action="store_true", help="draw every joint frame's axes")
+    p.add_argument("--cubes", action="store_true", help="show a board with three cubes")
+    p.add_argument("--target", nargs=3, type=float, metavar=("X", "Y", "Z"), help="target [mm]")
+    p.add_argument("--pitch", type=float, metavar="DEG", help="target pitch [deg] (default any)")
+    p.add_argument(
+        "--pose",
+        nargs="+",
+        type=float,
+        action="append",
+        metavar="DEG",
+        help="joint angles [deg], one per joint; repeat for a path (moves the arm)",
+    )
+    p.add_argument("--screenshot", metavar="FILE.png", help="write a picture of the view and exit")
+    p.add_argument(
+        "--size", nargs=2, type=int, default=(1024, 768), metavar=("W", "H"), help="picture [px]"
+    )
+    p.add_argument(
+        "--gif", metavar="FILE.gif", help="write an animation of the --pose path and exit"
+    )
+    p.add_argument("--fps", type=float, default=15.0, help="animation frames per second [1/s]")
+    p.set_defaults(func=run_view)
+
+
+def run_view(args: argparse.Namespace) -> int:
+    """Check every input and output first, then open the arm and serve or draw."""
+    from ..model import load_model
+
+    model = load_model(args.arm)
+    poses = _poses(args.pose, model)
+    outputs = _outputs(args)
+    target = _target(args)
+    if args.gif:
+        return _gif(args, model, poses, Path(args.gif))
+    web = _web()
+    from ..viz import DriverSource, cubes_scene
+    from ..viz._target import describe
+
+    arm = _open_arm(args, model)
+    scene = cubes_scene(model.table_z) if args.cubes else []
+    view = web.View(
+        DriverSource(model, arm.driver),
+        scene=scene,
+        host=args.host,
+        port=args.http_port,
+        rate_hz=args.rate,
+        frames=args.frames,
+    )
+    try:
+        teach = web.Teach(view, arm)
+        view.start()
+        for q in poses:
+            teach.move_joints(q)
+            teach.mover.wait_idle()
+        view.update()
+        if target is not None:
+            teach.drag_target(target[0], target[1])
+            teach.mover.wait_idle()
+            print(f"armkit view: {describe(view.target)}")
+        if outputs:
+            path = web.render_png(view, outputs[0], *args.size)
+            print(f"armkit view: wrote {path}")
+            return 0
+        return _serve(view, teach)
+    finally:
+        view.close()
+        arm.close()
+
+
+def _serve(view: Any, teach: Any) -> int:
+    print(f"armkit view: {view.url}  (Ctrl-C stops)", flush=True)
+    if view.host not in ("127.0.0.1", "localhost", "::1"):
+        print(f"armkit view: serving on {view.host}: other computers can open it and move the arm")
+    try:
+        while True:
+            time.sleep(0.5)
+    except KeyboardInterrupt:
+        print("\narmkit view: stopped")
+    finally:
+        teach.close()
+    for pose in teach.poses.values():
+        print(f"  {pose.line()}")
+    return 0
+
+
+def _web() -> Any:
+    try:
+        from ..viz import web
+    except ImportError as exc:
+        raise ArmkitError(f"the 3D view needs viser ({exc}): pip install 'armkit[web]'") from None
+    return web
+
+
+def _open_arm(args: argparse.Namespace, model: Any) -> Any:
+    """The Arm of --arm/--driver/--port; a simulated arm keeps its pose between runs in
+    its state file, as for 'move' (``armkit.connect.open_driver(..., keep=True)``)."""
+    from ..arm import Arm
+    from ..connect import open_driver
+
+    return Arm(model, open_driver(model, args.driver, args.port, keep=True))
+
+
+def _poses(given: list[list[float]] | None, model: Any) -> list[Any]:
+    poses = []
+    for angles in given or []:
+        if len(angles) != model.dof or not all(math.isfinite(a) for a in angles):
+            names = ", ".join(model.joint_names)
+            raise InputError(f"--pose needs {model.dof} angles in degrees ({names}), got {angles}")
+        q = np.radians(angles)
+        if not model.within_limits(q):
+            raise InputError(
+                f"--pose {angles} deg is outside {model.name}'s joint limits; see 'armkit show'"
+            )
+        poses.append(q)
+    return poses
+
+
+def _target(args: argparse.Namespace) -> tuple[Any, float | None] | None:
+    if args.target is None:
+        if args.pitch is not None:
+            raise InputError("--pitch needs --target X Y Z [mm]")
+        return None
+    if not all(math.isfinite(v) for v in args.target):
+        raise InputError(f"--target must be 3 finite numbers [mm], got {args.target}")
+    return np.array(args.target) / 1000.0, args.pitch
+
+
+def _outputs(args: argparse.Namespace) -> list[Path]:
+    """Every output file checked before anything moves: suffix, folder, writable."""
+    if not 1 <= args.rate <= 240:
+        raise InputError(f"--rate must be 1..240 Hz, got {args.rate}")
+    if not 0 <= args.http_port <= 65535:
+        raise InputError(f"--port must be 0..65535, got {args.http_port}")
+    if args.screenshot and args.gif:
+        raise InputError("give --screenshot or --gif, not both")
+    w, h = args.size
+    if not (64 <= w <= 4096 and 64 <= h <= 4096):
+        raise InputError(f"--size must be 64..4096 px each, got {w} {h}")
+    if not 1 <= args.fps <= 60:
+        raise InputError(f"--fps must be 1..60, got {args.fps}")
+    out = []
+    for given, suffix, flag in (
+        (args.screenshot, ".png", "--screenshot"),
+        (args.gif, ".gif", "--gif"),
+    ):
+        if given:
+            out.append(check_output(Path(given), suffix, flag))
+    return out
+
+
+def check_output(path: Path, suffix: str, flag: str) -> Path:
+    """``path`` if it can be written as a ``suffix`` file, else ValueError saying why."""
+    if path.suffix.lower() != suffix:
+        raise InputError(f"{flag} {path}: the file name must end in {suffix}")
+    folder = path.parent if str(path.parent) else Path(".")
+    if not folder.is_dir():
+        raise InputError(f"{flag} {path}: folder {folder} does not exist; create it first")
+    if (
+        path.is_dir()
+        or not os.access(folder, os.W_OK)
+        or (path.exists() and not os.access(path, os.W_OK))
+    ):
+        raise InputError(f"{flag} {path}: cannot write there; choose another file")
+    return path
+
+
+def _gif(args: argparse.Namespace, model: Any, poses: list[Any], path: Path) -> int:
+    from ..arm import Arm
+    from ..viz import cubes_scene, default_tour, record_path, write_gif
+
+    scene = cubes_scene(model.table_z) if args.cubes else []
+    with Arm(model, args.driver, args.port) as arm:
+        path_q = poses or default_tour(model)
+        times, q = record_path(arm, path_q, args.fps)
+    write_gif(model, times, q, path, scene=scene, fps=args.fps)
+    print(f"armkit view: wrote {path} ({len(times)} frames, {times[-1]:.1f} s of motion)")
+    return 0

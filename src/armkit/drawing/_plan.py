@@ -1,0 +1,193 @@
+"""The drawing pipeline's entry point: a source onto a sheet, as ordered strokes.
+
+``plan_drawing(source, sheet, fit, tolerance)`` reads (SVG, G-code or a
+``Figure`` of shapes), flattens curves, fits the drawing onto the sheet, cuts
+what falls outside its printable area, joins strokes whose ends meet,
+simplifies, and orders the strokes to cut pen-up travel. Everything stays
+within ``tolerance`` of the source: flattening and simplifying get half each.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Protocol
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ._errors import DrawingError, DrawingWarning
+from ._figure import Figure
+from ._fit import Fit, apply, clip_to_box, fit_transform
+from ._gcode import read_gcode
+from ._merge import merge_strokes
+from ._order import order_strokes, pen_up_length
+from ._simplify import simplify
+from ._svg import read_svg
+
+F64 = NDArray[np.float64]
+GCODE_SUFFIXES = (".gcode", ".nc", ".ngc", ".gc", ".g", ".tap")
+
+
+class SheetLike(Protocol):
+    """Anything with a sheet's size: ``armkit.scene.Sheet`` or ``PaperSize``."""
+
+    @property
+    def width(self) -> float: ...  # [m], along u
+    @property
+    def height(self) -> float: ...  # [m], along v
+
+
+class SheetPlane(Protocol):
+    """A sheet placed in the world: ``armkit.scene.Sheet``."""
+
+    def to_world(self, uv: F64) -> F64: ...  # (N, 2) [m] -> (N, 3) [m]
+
+
+@dataclass(frozen=True)
+class PaperSize:
+    """A sheet's size alone [m] (the scene's ``Sheet`` also places it)."""
+
+    width: float
+    height: float
+
+
+@dataclass(frozen=True)
+class DrawingPlan:
+    """What to draw, in order.
+
+    Attributes:
+        strokes: pen-down polylines in drawing order, each (N, 2), sheet (u, v) [m].
+        size: the sheet's (width, height) [m].
+        transform: (3, 3) map from the source's metres (y up) to (u, v).
+        tolerance: the largest distance of the strokes from the source [m].
+        source: the file's name or a label.
+        notes: what was left out or cut, one line each.
+        start: where the pen starts (u, v) [m], or None (anywhere).
+        dwell: pauses the source asks for [s].
+    """
+
+    strokes: tuple[F64, ...]
+    size: tuple[float, float]
+    transform: F64
+    tolerance: float
+    source: str
+    notes: tuple[str, ...] = ()
+    start: F64 | None = None
+    dwell: float = 0.0
+
+    @property
+    def pen_down_length(self) -> float:
+        """Length of every stroke [m]."""
+        return float(sum(np.linalg.norm(np.diff(s, axis=0), axis=1).sum() for s in self.strokes))
+
+    @property
+    def pen_up_length(self) -> float:
+        """Pen-up travel between strokes (and from ``start``, if set) [m]."""
+        return pen_up_length(self.strokes, self.start)
+
+    @property
+    def pen_lifts(self) -> int:
+        """How often the pen is lifted: once after each stroke."""
+        return len(self.strokes)
+
+    def world_strokes(self, sheet: SheetPlane) -> tuple[F64, ...]:
+        """The strokes on the sheet's plane in the world, (N, 3) each [m]."""
+        return tuple(np.asarray(sheet.to_world(s), dtype=np.float64) for s in self.strokes)
+
+
+def read_drawing(path: str | Path, *, z_down: float = 0.0) -> Figure:
+    """Read an SVG or G-code file (by its suffix) into a ``Figure``."""
+    suffix = Path(path).suffix.lower()
+    if suffix == ".svg":
+        return read_svg(path)
+    if suffix in GCODE_SUFFIXES:
+        return read_gcode(path, z_down=z_down)
+    raise DrawingError(
+        f"cannot tell the format from the suffix {suffix or '(none)'!r}; "
+        f"give a .svg or a G-code file ({' '.join(GCODE_SUFFIXES)})",
+        file=str(path),
+    )
+
+
+def plan_drawing(
+    source: Figure | str | Path,
+    sheet: SheetLike | tuple[float, float],
+    fit: Fit | None = None,
+    tolerance: float = 1e-4,
+    *,
+    start: ArrayLike | None = None,
+) -> DrawingPlan:
+    """Plan ``source`` on ``sheet`` (or a (width, height) [m]) within ``tolerance`` [m];
+    the pen starts at ``start`` (u, v) [m] if given. Raise ``DrawingError``."""
+    fig = source if isinstance(source, Figure) else read_drawing(source)
+    fit = fit or Fit()
+    size = (
+        (float(sheet[0]), float(sheet[1]))
+        if isinstance(sheet, tuple)
+        else (sheet.width, sheet.height)
+    )
+    if not (math.isfinite(tolerance) and tolerance > 0):
+        raise DrawingError(f"tolerance must be > 0 m, got {tolerance}")
+    if not all(math.isfinite(v) and v > 0 for v in size):
+        raise DrawingError(f"the sheet's width and height must be > 0 m, got {size}")
+    M, strokes = _fitted(fig, size, fit, tolerance)
+    margin = np.full(2, fit.margin)
+    kept = clip_to_box(strokes, margin - 1e-9, np.array(size) - margin + 1e-9)
+    notes = fig.notes + _cut_note(fig.source, strokes, kept, fit)
+    if not kept:
+        raise DrawingError(
+            "everything lies outside the sheet; fit it to the sheet", file=fig.source
+        )
+    uv0 = _start(start)
+    strokes = simplify(merge_strokes(kept, tolerance / 2), tolerance / 2)
+    ordered = order_strokes(strokes, uv0)
+    return DrawingPlan(tuple(ordered), size, M, tolerance, fig.source, notes, uv0, fig.dwell)
+
+
+def _start(start: ArrayLike | None) -> F64 | None:
+    if start is None:
+        return None
+    uv = np.asarray(start, dtype=np.float64)
+    if uv.shape != (2,) or not np.all(np.isfinite(uv)):
+        raise DrawingError(f"start must be 2 finite sheet coordinates (u, v) [m], got {start!r}")
+    return uv
+
+
+def _fitted(
+    fig: Figure, size: tuple[float, float], fit: Fit, tolerance: float
+) -> tuple[F64, list[F64]]:
+    """The fit's map and the strokes flattened within tolerance / 2 on the sheet."""
+    extent = fig.extent()
+    if not fig.paths:
+        gcode = Path(fig.source).suffix.lower() in GCODE_SUFFIXES
+        hint = " (the pen never goes down: Z <= z_down, M3 or M300 S30)" if gcode else ""
+        raise DrawingError("nothing to draw" + hint, file=fig.source)
+    if not math.isfinite(extent):
+        raise DrawingError("coordinates are not finite", file=fig.source)
+    coarse = fig.flatten(max(extent, 1e-9) / 2000)
+    M = fit_transform(coarse, size, fit)
+    k = float(np.sqrt(abs(np.linalg.det(M[:2, :2]))))
+    fine = fig.flatten(tolerance / 2 / max(k, 1e-12))
+    M = fit_transform(fine, size, fit)
+    strokes = apply(M, fine)
+    if not all(np.all(np.isfinite(s)) for s in strokes):
+        raise DrawingError("coordinates overflow after the transforms", file=fig.source)
+    return M, strokes
+
+
+def _cut_note(source: str, before: list[F64], after: list[F64], fit: Fit) -> tuple[str, ...]:
+    def length(strokes: list[F64]) -> float:
+        return float(sum(np.linalg.norm(np.diff(s, axis=0), axis=1).sum() for s in strokes))
+
+    cut = length(before) - length(after)
+    if cut <= 1e-6:
+        return ()
+    note = (
+        f"{source}: cut {cut * 1e3:.1f} mm of {length(before) * 1e3:.1f} mm of line outside the "
+        f"sheet's printable area (margin {fit.margin * 1e3:g} mm); scale it down or fit it"
+    )
+    warnings.warn(note, DrawingWarning, stacklevel=3)
+    return (note,)

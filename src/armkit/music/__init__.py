@@ -1,0 +1,53 @@
+"""Music: scores, instrument mapping, strike planning and listening (pure, SI units).
+
+Scores come from MIDI files (the ``midi`` extra), RTTTL or a plain note list and
+become one typed ``Score`` (onsets in seconds, MIDI pitches). Notes map to the
+bars and drums of a scene's instruments; ``plan_performance`` schedules every
+strike backwards from its note time with the arm's motion model, and lists the
+notes it cannot reach in time. Contacts (time, note, speed) become a WAV file
+and onset-error statistics.
+"""
+
+from ._layout import Bars as Bars
+from ._layout import DrumLike as DrumLike
+from ._layout import RangeError as RangeError
+from ._layout import Target as Target
+from ._layout import best_transpose as best_transpose
+from ._layout import map_notes as map_notes
+from ._load import load_score as load_score
+from ._midi import midi_bytes as midi_bytes
+from ._midi import parse_midi as parse_midi
+from ._midi import read_midi as read_midi
+from ._notelist import parse_notelist as parse_notelist
+from ._onsets import Contact as Contact
+from ._onsets import LatencyTable as LatencyTable
+from ._onsets import NoteError as NoteError
+from ._onsets import OnsetStats as OnsetStats
+from ._onsets import match as match
+from ._onsets import onset_stats as onset_stats
+from ._performance import Move as Move
+from ._performance import Performance as Performance
+from ._performance import PerformanceError as PerformanceError
+from ._performance import Problem as Problem
+from ._performance import Strike as Strike
+from ._performance import check_performance as check_performance
+from ._plan import plan_performance as plan_performance
+from ._plot import plot_onsets as plot_onsets
+from ._predict import JointProfile as JointProfile
+from ._predict import LinearMove as LinearMove
+from ._predict import Predictor as Predictor
+from ._predict import group_move_predictor as group_move_predictor
+from ._predict import time_based_predictor as time_based_predictor
+from ._predict import trapezoid_predictor as trapezoid_predictor
+from ._rtttl import parse_rtttl as parse_rtttl
+from ._score import Note as Note
+from ._score import Score as Score
+from ._score import ScoreError as ScoreError
+from ._score import note_name as note_name
+from ._score import parse_pitch as parse_pitch
+from ._strike import StrikeParams as StrikeParams
+from ._strike import StrikePoses as StrikePoses
+from ._synth import check_output as check_output
+from ._synth import frequency as frequency
+from ._synth import render as render
+from ._synth import write_wav as write_wav

@@ -1,0 +1,55 @@
+"""One entry point for every score format, chosen by the file's suffix."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ._midi import read_midi
+from ._notelist import parse_notelist
+from ._rtttl import parse_rtttl, position
+from ._score import Score, ScoreError
+
+MIDI_SUFFIXES = (".mid", ".midi")
+RTTTL_SUFFIXES = (".rtttl", ".rtx")
+NOTELIST_SUFFIXES = (".txt", ".notes")
+
+
+def load_score(path: str | Path, transpose: int = 0) -> Score:
+    """Read a score: MIDI (``.mid``, ``.midi``), RTTTL (``.rtttl``, ``.rtx``) or a note
+    list (``.txt``, ``.notes``), then move pitched notes by ``transpose`` semitones.
+
+    Raises:
+        ScoreError: unknown suffix, unreadable file, or a mistake in it (file:line:column, token).
+    """
+    source, suffix = str(path), Path(path).suffix.lower()
+    if suffix in MIDI_SUFFIXES:
+        score = read_midi(path)
+    elif suffix in RTTTL_SUFFIXES + NOTELIST_SUFFIXES:
+        text = read_text(path)
+        score = (
+            parse_rtttl(text, source) if suffix in RTTTL_SUFFIXES else parse_notelist(text, source)
+        )
+    else:
+        known = ", ".join(MIDI_SUFFIXES + RTTTL_SUFFIXES + NOTELIST_SUFFIXES)
+        raise ScoreError(
+            source, 0, 0, suffix, f"unknown score format; name the file with one of {known}"
+        )
+    return score.transposed(transpose) if transpose else score
+
+
+def read_text(path: str | Path) -> str:
+    """The UTF-8 text of ``path``; ScoreError names the first byte that is not UTF-8."""
+    source = str(path)
+    try:
+        data = Path(path).read_bytes()
+    except OSError as exc:
+        raise ScoreError(source, 0, 0, "", f"cannot read the file: {exc.strerror or exc}") from exc
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        prefix = data[: exc.start].decode("utf-8")
+        line, column = position(prefix, len(prefix))
+        bad = data[exc.start : exc.start + 4].hex(" ")
+        raise ScoreError(
+            source, line, column, bad, "not UTF-8 text; save the file as UTF-8"
+        ) from exc

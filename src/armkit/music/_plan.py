@@ -1,0 +1,219 @@
+"""Plan a performance: every strike scheduled backwards from its note time.
+
+For each note: the stroke from the hover pose is predicted (the predictor is the
+servos' own motion model), the time from its start to the contact found, and the
+stroke started that long (plus the bar's latency) before the note. The move to
+the hover pose starts as soon as the arm is free after the previous rebound; a
+note the arm cannot reach in time even at the lowest hover is a Problem with
+the time it has and the time it would need. Times are performance time [s]:
+0 is the first command, a note sounds at ``onset + offset``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .._errors import UnreachableError
+from ..model import ArmModel
+from ._layout import Instrument, Target, map_notes
+from ._onsets import LatencyTable
+from ._performance import Move, Performance, Problem, Strike
+from ._predict import JointProfile, Predictor
+from ._score import Score
+from ._strike import StrikeParams, StrikePoses, contact, lowest_tip, strike_poses
+
+F64 = NDArray[np.float64]
+
+
+@dataclass
+class _Cursor:
+    """Where the planner is: the arm's pose and when it is free [s, score time]."""
+
+    q: F64
+    free: float
+    top: float = -np.inf
+    moves: list[Move] = field(default_factory=list)
+    strikes: list[Strike] = field(default_factory=list)
+    problems: list[Problem] = field(default_factory=list)
+    previous: float | None = None
+    rebound: tuple[float, F64, tuple[str, int]] | None = None  # last rebound: when, from, bar
+
+
+def plan_performance(
+    score: Score,
+    layout: Sequence[Instrument],
+    model: ArmModel,
+    predictor: Predictor,
+    *,
+    tool_length: float | None = None,
+    params: StrikeParams | None = None,
+    latency: LatencyTable | None = None,
+    start: ArrayLike | None = None,
+    T_world_base: ArrayLike | None = None,
+    tempo: float = 1.0,
+) -> Performance:
+    """Plan every strike of ``score`` on ``layout``.
+
+    Args:
+        score: the piece; ``tempo`` scales it (2.0 = twice as fast).
+        layout: xylophones and drums (scene frame [m]); RangeError if a note has none.
+        model: the arm; ``tool_length`` [m] replaces its tool (the stick as held).
+        predictor: the servos' motion model (``time_based_predictor(model)`` ...),
+            made for the same arm and tool.
+        params: how to strike; latency: per-bar delays [s] from a calibration run.
+        start: the arm's pose when the performance starts [rad], default home.
+        T_world_base: the arm's base in the scene frame, shape (4, 4), default identity.
+
+    Returns:
+        The Performance; ``check_performance`` refuses it if any note is infeasible.
+    """
+    arm = model.with_tool_length(tool_length) if tool_length is not None else model
+    p = params or StrikeParams()
+    delays = latency or LatencyTable()
+    T_base_world = np.linalg.inv(
+        np.eye(4) if T_world_base is None else np.asarray(T_world_base, dtype=np.float64)
+    )
+    begin = arm.home if start is None else np.asarray(start, dtype=np.float64).reshape(arm.dof)
+    cursor = _Cursor(begin, -np.inf)
+    for target in map_notes(score.at_tempo(tempo) if tempo != 1.0 else score, layout):
+        point = (T_base_world @ np.append(target.point, 1.0))[:3]
+        _plan_note(arm, predictor, p, target, point, delays.of(target.key), cursor)
+    return _shifted(cursor, arm, score.source, tempo)
+
+
+@dataclass(frozen=True)
+class _Option:
+    """One way to play a note: its poses, predicted stroke, contact and travel."""
+
+    poses: StrikePoses
+    down: JointProfile
+    hit: float  # contact time from the stroke's start [s]
+    speed: float  # tip speed at contact [m/s]
+    travel: JointProfile  # to the hover pose (from the last contact if ``again``)
+    stroke_start: float  # score time [s]
+    ready: float  # earliest stroke start the arm can make [s]
+    again: bool  # the same bar as the last note: its rebound goes straight to this hover
+
+    @property
+    def fits(self) -> bool:
+        return self.ready <= self.stroke_start + 1e-9
+
+
+def _plan_note(
+    arm: ArmModel,
+    predictor: Predictor,
+    p: StrikeParams,
+    target: Target,
+    point: F64,
+    lag: float,
+    cursor: _Cursor,
+) -> None:
+    """Schedule one note after the previous one, at the highest hover that fits."""
+    best, why = None, "no stroke reaches the top"
+    for height in p.heights(target.note.velocity):
+        try:
+            depth = p.aim(target.note.velocity, float(height), float(point[2]) - arm.table_z)
+            poses = strike_poses(arm, point, float(height), depth, p.pitch, cursor.q)
+        except UnreachableError as exc:
+            why = str(exc)
+            continue
+        option = _option(arm, predictor, p, target, float(point[2]), lag, cursor, poses)
+        best = option or best
+        if best is not None and best.fits:
+            break
+    if best is None:
+        cursor.problems.append(Problem(target.note, "unreachable", detail=why))
+    else:
+        _schedule(arm, predictor, p, target, float(point[2]), lag, cursor, best)
+
+
+def _option(
+    arm: ArmModel,
+    predictor: Predictor,
+    p: StrikeParams,
+    target: Target,
+    top: float,
+    lag: float,
+    cursor: _Cursor,
+    poses: StrikePoses,
+) -> _Option | None:
+    """The timing of a strike from ``poses``, or None if its stroke never reaches ``top``.
+    On the bar of the last note, the last rebound goes straight to the new hover."""
+    last = cursor.rebound
+    again = last is not None and last[2] == target.key
+    since, q_from = (last[0], last[1]) if last is not None and again else (cursor.free, cursor.q)
+    travel = predictor(q_from, poses.hover, p.travel_speed)
+    down = predictor(end_of(travel), poses.through, p.stroke_speed(target.note.velocity))
+    hit = contact(arm, down, top)
+    if hit is None:
+        return None
+    stroke_start = target.note.onset - lag - hit[0]
+    ready = since + travel.duration + p.settle
+    return _Option(poses, down, hit[0], hit[1], travel, stroke_start, ready, again)
+
+
+def _schedule(
+    arm: ArmModel,
+    predictor: Predictor,
+    p: StrikeParams,
+    target: Target,
+    top: float,
+    lag: float,
+    cursor: _Cursor,
+    o: _Option,
+) -> None:
+    """Append the travel, down stroke and rebound of ``o`` and move the cursor on."""
+    note, index = target.note, len(cursor.strikes)
+    if not o.fits and cursor.previous is not None:
+        needed = o.ready + o.hit + lag - cursor.previous
+        cursor.problems.append(Problem(note, "too soon", note.onset - cursor.previous, needed))
+    if o.again:  # the last rebound goes straight to this note's hover
+        last = cursor.moves.pop()
+        cursor.moves.append(
+            Move(last.t, o.poses.hover, o.travel, last.speed, last.kind, last.strike)
+        )
+    elif not np.isfinite(cursor.free):
+        send = o.stroke_start - p.settle - o.travel.duration
+        cursor.moves.append(Move(send, o.poses.hover, o.travel, p.travel_speed, "travel", index))
+    elif o.travel.duration > 0:
+        cursor.moves.append(
+            Move(cursor.free, o.poses.hover, o.travel, p.travel_speed, "travel", index)
+        )
+        if lowest_tip(arm, o.travel) < max(cursor.top, top) + p.clearance:
+            detail = "the stick passes too close to the bar tops on the way; raise the hover"
+            cursor.problems.append(Problem(note, "low travel", detail=detail))
+    speed = p.stroke_speed(note.velocity)
+    cursor.moves.append(Move(o.stroke_start, o.poses.through, o.down, speed, "down", index))
+    rebound_at = note.onset - lag + p.rebound_delay
+    q_now = o.down.sample(np.array([rebound_at - o.stroke_start]))[0][0]
+    rebound = predictor(q_now, o.poses.hover, p.travel_speed)
+    cursor.moves.append(Move(rebound_at, o.poses.hover, rebound, p.travel_speed, "rebound", index))
+    cursor.strikes.append(Strike(target, note.onset, o.poses.height, o.poses, o.speed, lag))
+    cursor.q, cursor.free, cursor.top = end_of(rebound), rebound_at + rebound.duration, top
+    cursor.previous = note.onset
+    cursor.rebound = (rebound_at, q_now, target.key)
+
+
+def end_of(profile: JointProfile) -> F64:
+    """Where ``profile`` ends [rad], shape (dof,): the goal as the servos resolve it."""
+    end: F64 = profile.sample(np.array([profile.duration]))[0][0]
+    return end
+
+
+def _shifted(cursor: _Cursor, arm: ArmModel, source: str, tempo: float) -> Performance:
+    """Shift score time so that the first command is sent at 0."""
+    offset = max(0.0, -min((m.t for m in cursor.moves), default=0.0))
+    moves = tuple(sorted((_later(m, offset) for m in cursor.moves), key=lambda m: m.t))
+    strikes = tuple(
+        Strike(s.target, s.time + offset, s.hover, s.poses, s.speed, s.latency)
+        for s in cursor.strikes
+    )
+    return Performance(strikes, moves, tuple(cursor.problems), offset, arm, source, tempo)
+
+
+def _later(move: Move, offset: float) -> Move:
+    return Move(move.t + offset, move.q, move.profile, move.speed, move.kind, move.strike)

@@ -1,0 +1,31 @@
+"""What is on the table: boards with sockets, cubes, containers, places, pens,
+sheets and instruments (pure data and geometry, SI units inside), loaded from
+TOML scene files written in millimetres and degrees; and the clearance check of
+the arm's links against them."""
+
+from ._capsules import Capsules as Capsules
+from ._capsules import arm_capsules as arm_capsules
+from ._capsules import link_names as link_names
+from ._clearance import Collision as Collision
+from ._clearance import Held as Held
+from ._clearance import check_clear as check_clear
+from ._clearance import joint_sweep as joint_sweep
+from ._errors import SceneError as SceneError
+from ._instruments import Drum as Drum
+from ._instruments import Xylophone as Xylophone
+from ._instruments import note_name as note_name
+from ._load import load_scene as load_scene
+from ._load import shipped_scenes as shipped_scenes
+from ._objects import Board as Board
+from ._objects import Container as Container
+from ._objects import Cube as Cube
+from ._objects import Pen as Pen
+from ._objects import PenStand as PenStand
+from ._objects import Place as Place
+from ._physics import SceneEvent as SceneEvent
+from ._physics import ScenePhysics as ScenePhysics
+from ._scene import Scene as Scene
+from ._support import Settled as Settled
+from ._support import settle as settle
+from ._surfaces import PAPER_SIZES as PAPER_SIZES
+from ._surfaces import Sheet as Sheet

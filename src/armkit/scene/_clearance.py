@@ -1,0 +1,214 @@
+"""Clearance: is every link of the arm (and the object it holds) clear of the
+table and of the scene's boards, cubes and containers, at every pose of a path?
+
+numpy only: the links are capsules, the objects boxes; a bounding-box test
+keeps the few pairs that can touch, then the exact signed distance from each
+capsule's segment to each box (convex along the segment: a golden-section
+search) decides. The held object is a box moving with the gripper, checked
+with separating axes against the boxes and by its corners against the table.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ..model import ArmModel
+from ._capsules import Capsules, clearance_capsules, frame_origins, link_names
+from ._distance import box_box_gap, box_corners, segment_box_distance
+from ._objects import Cube
+from ._obstacles import Obstacles, obstacles
+from ._scene import Scene
+
+F64 = NDArray[np.float64]
+TOUCH = 0.2e-3  # [m]: surfaces this far into each other still only touch
+SWEEP_STEP = 0.0175  # [rad] (1 deg): joint-space sampling of a move for the check
+
+
+@dataclass(frozen=True)
+class Held:
+    """An object in the gripper: the cube and its pose in the tool frame, (4, 4) [m]."""
+
+    cube: Cube
+    T_tool_object: F64
+
+
+@dataclass(frozen=True)
+class Collision:
+    """The first pose of a path where something is not clear.
+
+    Attributes:
+        step: index of the pose in the path (0 for a single pose).
+        link: the link's name (``"elbow-wrist link"``, ``"gripper"``) or ``"held <name>"``.
+        object: ``"table"`` or the scene object's name.
+        distance: signed clearance [m]; negative = that far into the object.
+    """
+
+    step: int
+    link: str
+    object: str
+    distance: float
+
+    def describe(self) -> str:
+        """One line: ``the gripper would be 3.2 mm into board``."""
+        mm = self.distance * 1000.0
+        where = f"{-mm:.1f} mm into" if mm < 0 else f"only {mm:.1f} mm from"
+        return f"the {self.link} would be {where} the {self.object}"
+
+
+def check_clear(
+    model: ArmModel,
+    q: ArrayLike,
+    scene: Scene | None = None,
+    held: Held | None = None,
+    *,
+    ignore: frozenset[str] = frozenset(),
+    margin: float = 0.0,
+) -> Collision | None:
+    """The first collision along joint angles ``q`` [rad], shape (dof,) or (N, dof), or None.
+
+    Checks every link but the base column against the table (``scene.table_z``,
+    else ``model.table_z``), every link against the scene's boxes (the gripper
+    not against the objects in ``ignore``: the one it is closing on), and the held
+    object against the table and the boxes. ``margin`` [m]: clearance required.
+    """
+    qa = np.atleast_2d(np.asarray(q, dtype=np.float64))
+    origins, R_tool = frame_origins(model, qa)
+    T = scene.T_world_base if scene is not None else np.eye(4)
+    table_z = scene.table_z if scene is not None else model.table_z
+    caps = _moved(clearance_capsules(model, origins, R_tool), T)
+    names = link_names(model)
+    found = [_table(caps, table_z, margin, names)]
+    if scene is not None:
+        found.append(_boxes(caps, obstacles(scene), ignore, model.dof, margin, names))
+    if held is not None:
+        T_tool = np.zeros((qa.shape[0], 4, 4))
+        T_tool[:, :3, :3] = T[:3, :3] @ R_tool
+        T_tool[:, :3, 3] = origins[:, -1, :] @ T[:3, :3].T + T[:3, 3]
+        T_tool[:, 3, 3] = 1.0
+        found.append(_held(T_tool @ held.T_tool_object, held.cube, scene, table_z, margin))
+    hits = [c for c in found if c is not None]
+    return min(hits, key=lambda c: (c.step, c.distance)) if hits else None
+
+
+def _moved(caps: Capsules, T: F64) -> Capsules:
+    """Capsules from the base frame to the scene frame by ``T`` (4, 4)."""
+    if np.array_equal(T, np.eye(4)):
+        return caps
+    R, t = T[:3, :3], T[:3, 3]
+    return Capsules(caps.p0 @ R.T + t, caps.p1 @ R.T + t, caps.radii, caps.links)
+
+
+def _table(
+    caps: Capsules, table_z: float, margin: float, names: tuple[str, ...]
+) -> Collision | None:
+    low = np.minimum(caps.p0[..., 2], caps.p1[..., 2]) - caps.radii - table_z  # (N, K)
+    low[:, caps.links == 0] = np.inf  # the base column stands on the table
+    return _first(low, caps.links, names, margin)
+
+
+def _boxes(
+    caps: Capsules,
+    obs: Obstacles,
+    ignore: frozenset[str],
+    dof: int,
+    margin: float,
+    names: tuple[str, ...],
+) -> Collision | None:
+    if not obs.owners:
+        return None
+    r = caps.radii + margin + TOUCH
+    lo = np.minimum(caps.p0, caps.p1) - r[:, None]  # (N, K, 3)
+    low = np.flatnonzero(lo[..., 2].ravel() <= obs.hi[:, 2].max())  # most links are high up
+    if low.size == 0:
+        return None
+    hi = np.maximum(caps.p0, caps.p1).reshape(-1, 3)[low] + np.tile(r, len(caps.p0))[low, None]
+    near = np.all(
+        (lo.reshape(-1, 3)[low, None] <= obs.hi[None]) & (hi[:, None] >= obs.lo[None]), axis=-1
+    )
+    nk, m = np.nonzero(near)
+    n, k = np.divmod(low[nk], caps.p0.shape[1])
+    if ignore:
+        keep = ~(
+            (caps.links[k] == dof)
+            & np.isin(m, [i for i, o in enumerate(obs.owners) if o in ignore])
+        )
+        n, k, m = n[keep], k[keep], m[keep]
+    if n.size == 0:
+        return None
+    Rt = np.transpose(obs.rotations[m], (0, 2, 1))
+    a = np.einsum("pij,pj->pi", Rt, caps.p0[n, k] - obs.centers[m])
+    b = np.einsum("pij,pj->pi", Rt, caps.p1[n, k] - obs.centers[m])
+    d = segment_box_distance(a, b, obs.halves[m]) - caps.radii[k]
+    bad = np.flatnonzero(d < margin - TOUCH)
+    if bad.size == 0:
+        return None
+    first = bad[n[bad] == n[bad].min()]
+    worst = first[np.argmin(d[first])]
+    return Collision(
+        int(n[worst]), names[caps.links[k[worst]]], obs.owners[m[worst]], float(d[worst])
+    )
+
+
+def _held(
+    T_obj: F64, cube: Cube, scene: Scene | None, table_z: float, margin: float
+) -> Collision | None:
+    """The held cube, centre poses (N, 4, 4), against the table and the scene's boxes."""
+    n = T_obj.shape[0]
+    c, R = T_obj[:, :3, 3], T_obj[:, :3, :3]
+    h = np.full((n, 3), cube.size / 2)
+    low = box_corners(c, R, h)[..., 2].min(axis=1) - table_z
+    hits = [(int(i), "table", float(low[i])) for i in np.flatnonzero(low < margin - TOUCH)[:1]]
+    if scene is not None and obstacles(scene).owners:
+        hits.extend(_held_boxes(c, R, h, obstacles(scene), margin))
+    if not hits:
+        return None
+    step, obj, dist = min(hits)
+    return Collision(step, f"held {cube.name}", obj, dist)
+
+
+def _first(
+    dist: F64, links: NDArray[np.intp], names: tuple[str, ...], margin: float
+) -> Collision | None:
+    bad = dist < margin - TOUCH
+    if not np.any(bad):
+        return None
+    step = int(np.flatnonzero(bad.any(axis=1))[0])
+    k = int(np.argmin(dist[step]))
+    return Collision(step, names[links[k]], "table", float(dist[step, k]))
+
+
+def _held_boxes(
+    c: F64, R: F64, h: F64, obs: Obstacles, margin: float
+) -> list[tuple[int, str, float]]:
+    """The first pose where the held box (centres (N, 3), rotations (N, 3, 3), half
+    sizes (N, 3)) overlaps a scene box: bounding boxes first, then separating axes."""
+    extent = np.einsum("nij,nj->ni", np.abs(R), h) + margin + TOUCH
+    near = np.all(
+        ((c - extent)[:, None, :] <= obs.hi[None]) & ((c + extent)[:, None, :] >= obs.lo[None]),
+        axis=-1,
+    )
+    ii, mm = np.nonzero(near)
+    if ii.size == 0:
+        return []
+    gap = box_box_gap(c[ii], R[ii], h[ii], obs.centers[mm], obs.rotations[mm], obs.halves[mm])
+    bad = np.flatnonzero(gap < margin - TOUCH)
+    if bad.size == 0:
+        return []
+    j = bad[0]
+    return [(int(ii[j]), obs.owners[mm[j]], float(gap[j]))]
+
+
+def joint_sweep(q_from: ArrayLike, targets: ArrayLike, step: float = SWEEP_STEP) -> F64:
+    """The poses a straight joint-space move from ``q_from`` (dof,) through each of
+    ``targets`` (K, dof) [rad] passes, at most ``step`` [rad] apart, shape (N, dof)
+    (``q_from`` left out, every target in)."""
+    prev = np.asarray(q_from, dtype=np.float64)
+    out = []
+    for q in np.atleast_2d(np.asarray(targets, dtype=np.float64)):
+        n = max(1, int(np.ceil(float(np.max(np.abs(q - prev))) / step)))
+        out.append(prev + (q - prev) * (np.arange(1, n + 1) / n)[:, None])
+        prev = q
+    return np.vstack(out)

@@ -1,0 +1,278 @@
+"""Check a whole script before anything moves: parse it, choose the arm and scene
+its header names, and walk it on the model (``ModelArm``), collecting every
+problem and the plan with its time."""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .._errors import ArmkitError
+from ..connect import driver_names
+from ..model import ArmModel, load_model, shipped_models
+from ._ast import Define, Header, Job, Loc, Num, Program, Repeat, Source, Statement
+from ._diagnostics import Diagnostic, ScriptCheckError, sorted_unique, suggest
+from ._jobs import JobUnavailable, job_function
+from ._model_arm import ModelArm
+from ._parse import parse
+from ._plan import Plan
+from ._resolve import Resolver, SceneInfo, Target
+from ._walk import Walker
+
+F64 = NDArray[np.float64]
+DEFAULT_ARM = "openmanipulator_x"
+RUN_LOOP = Loc(0, 0)  # where ``--repeat N`` puts its loop
+
+
+@dataclass(frozen=True)
+class Setup:
+    """What the script's header chose (None: not written)."""
+
+    arm: Header | None = None
+    driver: Header | None = None
+    scene: Header | None = None
+
+
+@dataclass
+class Env:
+    """Poses and procedures known before a script starts (the shell's session)."""
+
+    poses: dict[str, Target | None] = field(default_factory=dict)
+    procs: dict[str, Define] = field(default_factory=dict)
+
+
+@dataclass
+class CheckResult:
+    """A checked script.
+
+    Attributes:
+        program: the statements.  model: the arm it was checked for.
+        plan: every motion with its time.  diagnostics: every problem, in line order.
+        setup: the header.  scene: the scene, if one was chosen.
+    """
+
+    program: Program
+    model: ArmModel
+    plan: Plan
+    setup: Setup
+    scene: SceneInfo | None
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    @property
+    def ok(self) -> bool:
+        """No errors (warnings allowed)."""
+        return not any(d.severity == "error" for d in self.diagnostics)
+
+    def raise_if_failed(self) -> None:
+        """``ScriptCheckError`` listing every problem, if there is an error."""
+        if not self.ok:
+            raise ScriptCheckError(self.program.source, self.diagnostics)
+
+
+def setup_of(program: Program) -> Setup:
+    """The ``arm``, ``driver`` and ``scene`` lines of ``program``."""
+    found = {s.kind: s for s in program.statements if isinstance(s, Header)}
+    return Setup(found.get("arm"), found.get("driver"), found.get("scene"))
+
+
+def check_source(
+    source: Source,
+    *,
+    model: ArmModel | None = None,
+    scene: SceneInfo | None = None,
+    q0: F64 | None = None,
+    grip0: float | None = None,
+    require_jobs: bool = False,
+    repeat: int = 1,
+    base_dir: Path | None = None,
+    env: Env | None = None,
+) -> CheckResult:
+    """Parse and check ``source`` whole.
+
+    Args:
+        model: the arm (None: the script's ``arm`` line, else openmanipulator_x).
+        scene: the scene (None: the script's ``scene`` line, if any).
+        q0: joint angles at the start [rad], shape (dof,) (None: the model's home).
+        grip0: gripper opening at the start [m] (None: not set yet, so the model's own
+            grip length, as ``Arm`` before its first ``grip``; timed as if open).
+        require_jobs: a job whose function is missing is an error (``run``), not a warning.
+        repeat: run the whole script this many times (``--repeat``).
+        base_dir: where relative file names start (default: the script's folder).
+        env: poses and procedures already defined (copied, not changed).
+    """
+    program, diagnostics = parse(source)
+    setup = setup_of(program)
+    here = base_dir or Path(source.name).parent
+    if model is None:
+        model = _model_from(setup.arm, here, diagnostics)
+    if model is None:
+        return CheckResult(
+            program, load_model(DEFAULT_ARM), Plan(()), setup, None, sorted_unique(diagnostics)
+        )
+    _check_arm(setup.arm, model, diagnostics)
+    _check_driver(setup.driver, diagnostics)
+    if scene is None and setup.scene is not None:
+        scene = load_scene_info(setup.scene.value, here, setup.scene.value_loc, diagnostics)
+    arm = ModelArm(model, model.home if q0 is None else q0, grip0)
+    walker = Walker(Resolver(model, scene, here), arm, source.name, checking=True)
+    _seed(walker, program, env)
+    walker.walk(looped(program.statements, repeat))
+    walker.finish()
+    diagnostics += walker.diagnostics + _job_diagnostics(program, require_jobs)
+    return CheckResult(program, model, arm.plan, setup, scene, sorted_unique(diagnostics))
+
+
+def _seed(walker: Walker, program: Program, env: Env | None) -> None:
+    """What the walk knows before the first statement: the session's poses and
+    procedures, and the names whose definitions did not parse (not reported again)."""
+    if env is not None:
+        walker.resolver.poses.update(env.poses)
+        walker.procs.update(env.procs)
+        walker.called.update(env.procs)
+        walker.redefine = True
+    walker.resolver.poses.update(dict.fromkeys(program.broken))
+    walker.broken = set(program.broken)
+
+
+def looped(statements: tuple[Statement, ...], repeat: int) -> tuple[Statement, ...]:
+    """The statements run ``repeat`` times (``--repeat``): procedures are defined once,
+    before the loop."""
+    if repeat == 1:
+        return statements
+    defines = tuple(s for s in statements if isinstance(s, Define))
+    rest = tuple(s for s in statements if not isinstance(s, Define))
+    return (*defines, Repeat(Num(repeat, None, RUN_LOOP), rest, RUN_LOOP))
+
+
+def check_file(path: str | Path, **options: Any) -> CheckResult:
+    """``check_source`` on a file (same options)."""
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ScriptCheckError(
+            Source(str(p), ""), [Diagnostic(Loc(1, 1), f"cannot read {p}: {exc}")]
+        ) from None
+    return check_source(Source(str(p), text), **options)
+
+
+def _model_from(
+    header: Header | None, here: Path, diagnostics: list[Diagnostic]
+) -> ArmModel | None:
+    if header is None:
+        return load_model(DEFAULT_ARM)
+    name = header.value
+    local = here / name
+    try:
+        return load_model(local if name.endswith(".toml") and local.exists() else name)
+    except (ArmkitError, ValueError, OSError) as exc:
+        hint = suggest(name, shipped_models())
+        message = (
+            f"unknown arm {name!r}{hint} (shipped: {', '.join(shipped_models())}, or a .toml file)"
+        )
+        if name.endswith(".toml"):
+            message = str(exc)
+        diagnostics.append(Diagnostic(header.value_loc, message))
+        return None
+
+
+def _check_arm(header: Header | None, model: ArmModel, diagnostics: list[Diagnostic]) -> None:
+    if header is not None and model.name not in (header.value, Path(header.value).stem):
+        diagnostics.append(
+            Diagnostic(
+                header.value_loc,
+                f"this script is for {header.value}, but the arm is {model.name}; "
+                f"run it with --arm {header.value} or change its 'arm' line",
+            )
+        )
+
+
+def _check_driver(header: Header | None, diagnostics: list[Diagnostic]) -> None:
+    if header is not None and header.value not in driver_names():
+        names = driver_names()
+        diagnostics.append(
+            Diagnostic(
+                header.value_loc,
+                f"unknown driver {header.value!r}{suggest(header.value, names)} (drivers: {', '.join(names)})",
+            )
+        )
+
+
+def load_scene_info(
+    label: str, here: Path, loc: Loc, diagnostics: list[Diagnostic]
+) -> SceneInfo | None:
+    """The scene a ``scene`` line names (a file next to the script, or a shipped
+    scene's name); a warning if this armkit has no ``armkit.scene`` yet."""
+    try:
+        module = importlib.import_module("armkit.scene")
+    except ImportError:
+        diagnostics.append(
+            Diagnostic(
+                loc,
+                "this armkit has no scenes yet (armkit.scene); the names of scene objects are not checked",
+                "warning",
+            )
+        )
+        return SceneInfo(label, None, None)
+    try:
+        scene = module.load_scene(_scene_path(label, here, module))
+    except (ArmkitError, ValueError, OSError) as exc:
+        diagnostics.append(Diagnostic(loc, f"scene {label!r}: {exc}"))
+        return None
+    return SceneInfo(label, frozenset(scene_names(scene)), scene)
+
+
+def _scene_path(label: str, here: Path, module: Any) -> Path:
+    """A file next to the script, a path, or a shipped scene's name (``board_001``)."""
+    for candidate in (here / label, Path(label)):
+        if candidate.is_file():
+            return candidate
+    shipped = Path(module.__file__).parent / "scenes" / f"{Path(label).stem}.toml"
+    return shipped if shipped.is_file() else here / label
+
+
+def scene_names(scene: object) -> Iterator[str]:
+    """Every named thing of a scene: boards, cubes, containers, pens, stands, sheets, instruments, places."""
+    for group in (
+        "boards",
+        "cubes",
+        "containers",
+        "pens",
+        "pen_stands",
+        "sheets",
+        "instruments",
+        "places",
+    ):
+        items = getattr(scene, group, ())
+        for item in items.values() if isinstance(items, dict) else items:
+            name = getattr(item, "name", None)
+            if isinstance(name, str):
+                yield name
+
+
+def _job_diagnostics(program: Program, required: bool) -> list[Diagnostic]:
+    out: list[Diagnostic] = []
+    seen: set[str] = set()
+    for job in _jobs_in(program.statements):
+        if job.command in seen:
+            continue
+        seen.add(job.command)
+        try:
+            job_function(job.command)
+        except JobUnavailable as exc:
+            out.append(Diagnostic(job.loc, str(exc), "error" if required else "warning"))
+    return out
+
+
+def _jobs_in(statements: tuple[Statement, ...]) -> Iterator[Job]:
+    for s in statements:
+        if isinstance(s, Job):
+            yield s
+        elif isinstance(s, Repeat | Define):
+            yield from _jobs_in(s.body)

@@ -1,0 +1,170 @@
+"""The job commands (``pick``, ``place``, ``move-item``, ``rotate-cube``, ``stack``,
+``search``, ``draw``, ``play``): one table entry each, its arguments and the
+function that does it.
+
+Adding a job is one entry in ``JOBS``: the parameters (how they are written and
+checked) and ``call``, ``"module:function"``, imported only when the job runs.
+The function is called as ``function(arm, scene, **arguments)`` with
+
+- ``where`` arguments: a scene object's or place's name (str), or a gripper
+  point [m], shape (3,) (a pose or ``xyz`` target; joint poses through FK);
+- ``object``: a scene name (str); ``objects``: a tuple of them;
+- ``file``: a ``pathlib.Path`` (relative paths are relative to the script);
+- ``choice``: the word; ``angle`` [rad]; ``length`` [m]; ``percent`` as a
+  fraction; ``count`` an int. Optional arguments not written are not passed.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Literal
+
+from .._errors import ScriptError
+from ._units import Dim
+
+ParamKind = Literal[
+    "where", "object", "objects", "file", "choice", "angle", "length", "percent", "count"
+]
+QUANTITY_KINDS: dict[str, Dim] = {
+    "angle": "angle",
+    "length": "length",
+    "percent": "percent",
+    "count": "count",
+}
+
+
+@dataclass(frozen=True)
+class JobParam:
+    """One parameter of a job.
+
+    Attributes:
+        name: the keyword argument passed to the function.
+        kind: how it is written and checked (see the module doc).
+        keyword: the word written before it (``to``), or None for a positional one.
+        required: must be written.
+        choices: the words of a ``choice``, or the suffixes a ``file`` may have.
+    """
+
+    name: str
+    kind: ParamKind
+    keyword: str | None = None
+    required: bool = True
+    choices: tuple[str, ...] = ()
+
+    @property
+    def usage(self) -> str:
+        """How it is written, e.g. ``[to WHERE]``."""
+        shown = "|".join(self.choices) if self.kind == "choice" else self.name.upper()
+        if self.kind == "objects":
+            shown += " ..."
+        text = f"{self.keyword} {shown}" if self.keyword else shown
+        return text if self.required else f"[{text}]"
+
+
+@dataclass(frozen=True)
+class JobSpec:
+    """A job: its parameters, the function that runs it, one line of help."""
+
+    params: tuple[JobParam, ...]
+    call: str
+    help: str
+
+    def usage(self, command: str) -> str:
+        """``move-item ITEM to WHERE``."""
+        return " ".join([command, *(p.usage for p in self.params)])
+
+
+DRAW_SUFFIXES = (".svg", ".gcode", ".nc", ".ngc", ".gc")
+PLAY_SUFFIXES = (".mid", ".midi", ".rtttl", ".txt")
+
+JOBS: dict[str, JobSpec] = {
+    "pick": JobSpec(
+        (JobParam("item", "where"),),
+        "armkit.tasks:pick",
+        "pick up a scene object, or what is at a pose or xyz point",
+    ),
+    "place": JobSpec(
+        (JobParam("where", "where"),),
+        "armkit.tasks:place",
+        "put the held object down at a scene place, a pose or an xyz point",
+    ),
+    "move-item": JobSpec(
+        (JobParam("item", "where"), JobParam("to", "where", keyword="to")),
+        "armkit.tasks:move_item",
+        "000: pick an item up, lift it, carry it and put it down",
+    ),
+    "rotate-cube": JobSpec(
+        (
+            JobParam("cube", "object"),
+            JobParam("direction", "choice", required=False, choices=("forward", "backward")),
+        ),
+        "armkit.tasks:rotate_cube",
+        "001: turn a cube onto its side (forward) or back up (backward) where it stands",
+    ),
+    "stack": JobSpec(
+        (JobParam("cubes", "objects"), JobParam("on", "where", keyword="on", required=False)),
+        "armkit.tasks:stack",
+        "001: stack cubes, each on the one before (the first on WHERE if given)",
+    ),
+    "search": JobSpec(
+        (
+            JobParam("start", "angle", keyword="from", required=False),
+            JobParam("stop", "angle", keyword="to", required=False),
+            JobParam("step", "angle", keyword="step", required=False),
+            JobParam("into", "object", keyword="into", required=False),
+        ),
+        "armkit.tasks:search",
+        "002: scan with the distance sensor, pick up what is found, drop it in a container",
+    ),
+    "draw": JobSpec(
+        (
+            JobParam("file", "file", choices=DRAW_SUFFIXES),
+            JobParam("sheet", "object", keyword="on", required=False),
+            JobParam("pen", "object", keyword="with", required=False),
+        ),
+        "armkit.drawing:draw",
+        "draw an SVG or G-code file on a sheet (picking the pen up and putting it back)",
+    ),
+    "play": JobSpec(
+        (
+            JobParam("file", "file", choices=PLAY_SUFFIXES),
+            JobParam("on", "object", keyword="on", required=False),
+            JobParam("tempo", "percent", keyword="tempo", required=False),
+            JobParam("transpose", "count", keyword="transpose", required=False),
+        ),
+        "armkit.music:play",
+        "play a MIDI, RTTTL or note-list tune on the scene's instrument",
+    ),
+}
+
+
+def job_keywords() -> set[str]:
+    """Every word written before a job argument."""
+    return {p.keyword for spec in JOBS.values() for p in spec.params if p.keyword}
+
+
+class JobUnavailable(ScriptError):
+    """A job's function is not in this armkit (yet)."""
+
+
+def job_function(command: str) -> Callable[..., object]:
+    """The function that runs ``command`` (imported now).
+
+    Raises:
+        JobUnavailable: its module or function does not exist in this armkit.
+    """
+    spec = JOBS[command]
+    module_name, _, func_name = spec.call.partition(":")
+    try:
+        module = importlib.import_module(module_name)
+    except ImportError:
+        module = None
+    func = getattr(module, func_name, None)
+    if not callable(func):
+        raise JobUnavailable(
+            f"the job {command!r} is not available in this armkit ({spec.call} is missing); "
+            "'armkit check' accepts it, 'armkit run' cannot run it yet"
+        )
+    return func  # type: ignore[no-any-return]

@@ -1,0 +1,256 @@
+"""The checker's arm: the model's kinematics and timing instead of a device.
+
+It follows the script statement by statement, solving every target (reach,
+joint limits, the table plane, straight lines point by point) and timing every
+motion with ``armkit.motion``, so a script is known good, and how long it
+takes, before anything moves.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Hashable, Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass, replace
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .._errors import JointLimitError, UnreachableError
+from ..kinematics import fk, fk_frames, ik
+from ..model import ArmModel
+from ..motion import line, plan_path, time_path, trapezoid
+from ._ast import Loc, Statement
+from ._backend import Frame
+from ._plan import Plan, PlanStep
+from ._resolve import JointPose, Point, Target
+
+F64 = NDArray[np.float64]
+GRIP_SPEED = 0.05  # gripper opening speed assumed for timing [m/s]
+TOOL_ACCEL = 0.5  # tool acceleration of straight lines [m/s^2] (TimedStreaming's default)
+LINE_SPACING = 0.002  # straight lines are checked every 2 mm [m]
+SWEEP_SAMPLES = 16  # points checked against the table along a joint move
+TABLE_TOLERANCE = 1e-4  # [m]
+
+
+@dataclass(frozen=True)
+class ArmState:
+    """What the checker knows of the arm; None = not known before it runs (``grip``:
+    not set yet, the model's own grip length)."""
+
+    q: F64 | None
+    grip: float | None
+    speed: float = 1.0
+    tool_speed: float = 0.05
+    light: bool | None = None
+
+
+class ModelArm:
+    """A ``Backend`` that simulates the script on the model and builds the ``Plan``."""
+
+    def __init__(self, model: ArmModel, q0: F64 | None, grip0: float | None) -> None:
+        self.model = model
+        self.state = ArmState(None if q0 is None else np.array(q0, dtype=np.float64), grip0)
+        self.plan = Plan(model.joint_names)
+        self.time = 0.0  # sum of the known durations so far [s]
+        self._line, self._context, self._recording = 0, "", True
+
+    def begin(self, stmt: Statement, frames: tuple[Frame, ...]) -> None:
+        self._line = stmt.loc.line
+        self._context = " ".join(
+            f"{f.iteration}/{f.count}" if f.kind == "repeat" else f.name for f in frames
+        )
+
+    def here(self) -> JointPose | None:
+        return None if self.state.q is None else JointPose(self.state.q.copy())
+
+    def move(self, target: Target | None, straight: bool) -> None:
+        q0 = self.state.q
+        if target is None:
+            self._step(None, None)
+        elif straight and q0 is not None:
+            self._line_to(q0, self._point(target))
+        else:
+            q1 = self._solve(target)
+            self._step(q1, self._joint_time(q0, q1))
+
+    def turn(self, joint: str, angle: float | None, relative: bool) -> None:
+        q0 = self.state.q
+        j = self.model.joint_index(joint)
+        if angle is not None and not relative:
+            self._check_pose(self.model.home, only=(j, angle))
+        if angle is None or q0 is None:
+            self._step(None, None)
+            return
+        q1 = q0.copy()
+        q1[j] = q0[j] + angle if relative else angle
+        self._check_pose(q1)
+        self._step(q1, self._joint_time(q0, q1))
+
+    def grip(self, width: float | None) -> None:
+        before = self.model.gripper.width_max if self.state.grip is None else self.state.grip
+        took = None if width is None else abs(width - before) / GRIP_SPEED
+        self.state = replace(self.state, grip=width)
+        self._step(self.state.q, took)
+
+    def home(self) -> None:
+        q1 = self.model.home
+        self._check_pose(q1)
+        self._step(q1, self._joint_time(self.state.q, q1))
+
+    def wait(self, seconds: float | None) -> None:
+        self._step(self.state.q, seconds)
+
+    def speed(self, value: float | None, tool: bool) -> None:
+        if tool:
+            self.state = replace(self.state, tool_speed=0.05 if value is None else value)
+        else:
+            self.state = replace(self.state, speed=1.0 if value is None else value)
+
+    def light(self, on: bool) -> None:
+        self.state = replace(self.state, light=on)
+        self._step(self.state.q, 0.0)
+
+    def run_motor(self, joint: str, direction: int, seconds: float | None) -> None:
+        q0 = self.state.q
+        if q0 is None or seconds is None:
+            self._step(None, seconds)
+            return
+        j = self.model.joint_index(joint)
+        q1 = q0.copy()
+        limit = self.model.joints[j]
+        q1[j] = float(
+            np.clip(q0[j] + direction * limit.max_velocity * seconds, limit.lower, limit.upper)
+        )
+        self._step(q1, seconds)
+
+    def job(self, command: str, args: dict[str, object]) -> None:
+        seed = self.model.home if self.state.q is None else self.state.q
+        for name, value in args.items():
+            if isinstance(value, np.ndarray):
+                try:
+                    ik(self._kin(), value, None, seed)
+                except UnreachableError as exc:
+                    raise UnreachableError(f"{command} {name}: {exc}", reason=exc.reason) from None
+        self.state = replace(self.state, q=None, grip=None)
+        self._step(None, None)
+
+    def snapshot(self) -> Hashable | None:
+        s = self.state
+        q = None if s.q is None else tuple(np.round(s.q, 9).tolist())
+        return q, s.grip, s.speed, s.tool_speed, s.light
+
+    def elapsed(self) -> float:
+        return self.time
+
+    def skip(self, iterations: int, seconds: float, loc: Loc) -> None:
+        note = f"x{iterations} more iterations, each as the last"
+        if self._recording:
+            step = PlanStep(loc.line, "", self.time, iterations * seconds, self.state.q, note)
+            self.plan.steps.append(step)
+        self.time += iterations * seconds
+        self.plan.total += iterations * seconds
+
+    def lose_track(self) -> None:
+        """After a failed statement: where the arm is is no longer known."""
+        self.state = replace(self.state, q=None)
+
+    @contextmanager
+    def blind(self) -> Iterator[None]:
+        saved = (self.state, self.time, self._recording)
+        self.state = ArmState(None, None)
+        self._recording = False
+        try:
+            yield
+        finally:
+            self.state, self.time, self._recording = saved
+
+    # -- kinematics --------------------------------------------------------
+    def _kin(self) -> ArmModel:
+        g = self.state.grip
+        return self.model if g is None else self.model.with_grip_width(g)
+
+    def _solve(self, target: Target) -> F64:
+        if isinstance(target, JointPose):
+            q = target.q
+        else:
+            seed = self.model.home if self.state.q is None else self.state.q
+            q = np.asarray(ik(self._kin(), target.xyz, target.pitch, seed).q, dtype=np.float64)
+        self._check_pose(q)
+        if self.state.q is not None and self.model.gripper.kind != "timed":
+            for s in np.linspace(0.0, 1.0, SWEEP_SAMPLES)[1:-1]:
+                self._check_table(self.state.q + s * (q - self.state.q), "on the way there ")
+        return q
+
+    def _point(self, target: Target) -> Point:
+        if isinstance(target, Point):
+            return target
+        T = fk(self._kin(), target.q)
+        return Point(np.asarray(T[:3, 3], dtype=np.float64), None)
+
+    def _line_to(self, q0: F64, goal: Point) -> None:
+        kin = self._kin()
+        start = np.asarray(fk(kin, q0)[:3, 3], dtype=np.float64)
+        if np.linalg.norm(goal.xyz - start) < 1e-9:
+            self._step(q0, 0.0)
+            return
+        points = line(start, goal.xyz, LINE_SPACING)
+        path = plan_path(kin, points, goal.pitch, q0)
+        for q in path.q:
+            self._check_table(q, "along the line ")
+        took = time_path(self.model, path, self.state.tool_speed, TOOL_ACCEL).duration
+        self._step(path.q[-1].copy(), took)
+
+    def _check_pose(self, q: F64, only: tuple[int, float] | None = None) -> None:
+        """Joint limits and the table for ``q`` [rad]; with ``only`` = (joint, angle),
+        just that joint's limits."""
+        if only is not None:
+            q = q.copy()
+            q[only[0]] = only[1]
+        for joint, angle in zip(self.model.joints, q, strict=True):
+            if not joint.lower - 1e-9 <= angle <= joint.upper + 1e-9:
+                raise JointLimitError(
+                    f"{joint.name} {math.degrees(angle):.2f} deg is outside its limits "
+                    f"{math.degrees(joint.lower):.2f}..{math.degrees(joint.upper):.2f} deg"
+                )
+        if only is None:
+            self._check_table(q, "")
+
+    def _check_table(self, q: F64, where: str) -> None:
+        z = fk_frames(self._kin(), q)[1:, 2, 3]
+        k = int(np.argmin(z))
+        table = self.model.table_z
+        if z[k] < table - TABLE_TOLERANCE:
+            raise UnreachableError(
+                f"{where}the {self._part(k + 1)} would be {(table - z[k]) * 1000:.1f} mm below "
+                f"the table (z {table * 1000:g} mm); choose a higher target",
+                reason="table",
+            )
+
+    def _part(self, frame: int) -> str:
+        dof = self.model.dof
+        if frame == dof + 1:
+            return "gripper point"
+        if frame == dof:
+            return "flange"
+        k = frame if self.model.convention == "standard" else frame - 1
+        return f"{self.model.joint_names[k]} joint"
+
+    def _joint_time(self, q0: F64 | None, q1: F64) -> float | None:
+        if q0 is None:
+            return None
+        if self.model.gripper.kind == "timed":  # one joint at a time (the OWI's driver)
+            v = np.array([j.max_velocity for j in self.model.joints])
+            return float(np.sum(np.abs(q1 - q0) / v))
+        return trapezoid(self.model, q0, q1, self.state.speed).duration
+
+    def _step(self, q: F64 | None, duration: float | None) -> None:
+        self.state = replace(self.state, q=q)
+        if not self._recording:
+            return
+        self.plan.steps.append(PlanStep(self._line, self._context, self.time, duration, q))
+        if duration is None:
+            self.plan.unknown += 1
+        else:
+            self.plan.total += duration
+            self.time += duration

@@ -1,0 +1,192 @@
+"""Run a checked script on an ``Arm``: every statement through the public ``Arm``
+API (``move_to``, ``move_joints``, ``follow``, ``turn_to``, ``grip``, ``home``),
+so it runs on every driver. A failure names the line and the repeat iteration."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Hashable
+from contextlib import AbstractContextManager, nullcontext
+from pathlib import Path
+from typing import TypeVar
+
+import numpy as np
+
+from .._errors import DeviceError, ScriptError
+from ..arm import Arm
+from ..kinematics import fk
+from ..motion import TimedStreaming, line
+from ._ast import Loc, Source, Statement
+from ._backend import Frame
+from ._check import CheckResult, check_source, looped
+from ._jobs import job_function
+from ._model_arm import LINE_SPACING
+from ._resolve import JointPose, Point, Resolver, SceneInfo, Target
+from ._walk import Walker
+
+T = TypeVar("T")
+StepHook = Callable[[Statement, tuple[Frame, ...]], None]
+
+
+class ArmBackend:
+    """A ``Backend`` that moves a real (or simulated) arm."""
+
+    def __init__(self, arm: Arm, scene: SceneInfo | None, on_step: StepHook | None = None):
+        self.arm, self.scene, self.on_step = arm, scene, on_step
+        self.fraction: float | None = None  # joint moves: fraction of max speed (None: 1)
+        self.tool_speed = TimedStreaming().speed  # straight lines [m/s]
+        self.grip_width: float | None = None
+
+    def begin(self, stmt: Statement, frames: tuple[Frame, ...]) -> None:
+        if self.on_step is not None:
+            self.on_step(stmt, frames)
+
+    def here(self) -> JointPose | None:
+        return JointPose(np.asarray(self.arm.driver.read(), dtype=np.float64))
+
+    def move(self, target: Target | None, straight: bool) -> None:
+        if target is None:
+            raise ScriptError("the target is not known when this statement runs")
+        goal = target
+        if straight:
+            self._line(goal)
+        elif isinstance(goal, Point):
+            x, y, z = (float(v) * 1000.0 for v in goal.xyz)
+            pitch = None if goal.pitch is None else math.degrees(goal.pitch)
+            self.arm.move_to(x, y, z, pitch, speed=self.fraction)
+        else:
+            self.arm.move_joints([math.degrees(a) for a in goal.q], speed=self.fraction)
+
+    def turn(self, joint: str, angle: float | None, relative: bool) -> None:
+        deg = math.degrees(_known(angle, "the angle"))
+        if relative:
+            self.arm.turn_by(joint, deg, speed=self.fraction)
+        else:
+            self.arm.turn_to(joint, deg, speed=self.fraction)
+
+    def grip(self, width: float | None) -> None:
+        w = _known(width, "the width")
+        self.arm.grip(w * 1000.0)
+        self.grip_width = w
+
+    def home(self) -> None:
+        self.arm.home(speed=self.fraction)
+
+    def wait(self, seconds: float | None) -> None:
+        self.arm.clock.sleep(_known(seconds, "the time"))
+
+    def speed(self, value: float | None, tool: bool) -> None:
+        if tool:
+            self.tool_speed = _known(value, "the speed")
+        else:
+            self.fraction = _known(value, "the speed")
+
+    def light(self, on: bool) -> None:
+        _driver_call(self.arm, "set_light", "a light")(on)
+
+    def run_motor(self, joint: str, direction: int, seconds: float | None) -> None:
+        _driver_call(self.arm, "turn_for", "timed motors")(
+            joint, direction, _known(seconds, "the time")
+        )
+
+    def job(self, command: str, args: dict[str, object]) -> None:
+        func = job_function(command)
+        scene = None if self.scene is None else self.scene.scene
+        func(self.arm, scene, **args)
+
+    def snapshot(self) -> Hashable | None:
+        return None
+
+    def elapsed(self) -> float:
+        return 0.0
+
+    def skip(self, iterations: int, seconds: float, loc: Loc) -> None:
+        """Never called: the runner's snapshot is None, so every iteration runs."""
+
+    def blind(self) -> AbstractContextManager[None]:
+        return nullcontext()
+
+    def lose_track(self) -> None:
+        """Never called: a failure stops the run."""
+
+    def _line(self, target: Target) -> None:
+        kin = (
+            self.arm.model
+            if self.grip_width is None
+            else self.arm.model.with_grip_width(self.grip_width)
+        )
+        start = np.asarray(fk(kin, self.arm.driver.read())[:3, 3], dtype=np.float64)
+        if isinstance(target, Point):
+            goal, pitch = target.xyz, target.pitch
+        else:
+            goal, pitch = np.asarray(fk(kin, target.q)[:3, 3], dtype=np.float64), None
+        if np.linalg.norm(goal - start) < 1e-9:
+            return
+        points = line(start, goal, LINE_SPACING) * 1000.0
+        pitch_deg = None if pitch is None else math.degrees(pitch)
+        self.arm.follow(points, pitch_deg, streamer=TimedStreaming(speed=self.tool_speed))
+
+
+def _known(value: T | None, what: str) -> T:
+    if value is None:  # the check resolves every value before anything runs
+        raise ScriptError(f"{what} is not known when this statement runs")
+    return value
+
+
+def _driver_call(arm: Arm, name: str, what: str) -> Callable[..., None]:
+    func = getattr(arm.driver, name, None)
+    if not callable(func):
+        raise DeviceError(f"the {type(arm.driver).__name__} driver has no {what}")
+    return func  # type: ignore[no-any-return]
+
+
+def run_source(
+    arm: Arm,
+    source: Source,
+    *,
+    repeat: int = 1,
+    scene: SceneInfo | None = None,
+    base_dir: Path | None = None,
+    on_step: StepHook | None = None,
+) -> CheckResult:
+    """Check ``source`` whole for ``arm`` from where it is now, then run it.
+
+    Raises:
+        ScriptCheckError: the check failed (every problem listed); nothing moved.
+        ScriptRunError: a statement failed while running (its line and iteration named);
+            the arm is stopped.
+    """
+    result = check_source(
+        source,
+        model=arm.model,
+        scene=scene,
+        q0=arm.driver.read(),
+        require_jobs=True,
+        repeat=repeat,
+        base_dir=base_dir,
+    )
+    result.raise_if_failed()
+    run_checked(arm, result, repeat=repeat, base_dir=base_dir, on_step=on_step)
+    return result
+
+
+def run_checked(
+    arm: Arm,
+    result: CheckResult,
+    *,
+    repeat: int = 1,
+    base_dir: Path | None = None,
+    on_step: StepHook | None = None,
+) -> None:
+    """Run a script that passed its check (``result.ok``) on ``arm``; the arm is
+    stopped if anything goes wrong (an error or Ctrl-C)."""
+    result.raise_if_failed()
+    source = result.program.source
+    resolver = Resolver(arm.model, result.scene, base_dir or Path(source.name).parent)
+    walker = Walker(resolver, ArmBackend(arm, result.scene, on_step), source.name, checking=False)
+    statements = looped(result.program.statements, repeat)
+    try:
+        walker.walk(statements)
+    except BaseException:
+        arm.stop()
+        raise

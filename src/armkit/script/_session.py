@@ -1,0 +1,217 @@
+"""The shell's session: the language one line (or block) at a time on an open arm,
+each chunk checked before it moves, plus the shell's own words (``where``,
+``poses``, ``save``, ``write``, ``jog``, ``run FILE``, ``help``, ``quit``).
+
+No process is started per command: the arm stays open, and a chunk costs a
+parse, a check on the model and the motion itself.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from pathlib import Path
+
+from .._errors import ArmkitError
+from .._files import write_atomic
+from ..arm import Arm
+from ._ast import Header, Source
+from ._backend import ScriptRunError
+from ._check import Env, check_source
+from ._diagnostics import ScriptCheckError
+from ._grammar import RESERVED, usage_of
+from ._lexer import LexError, Token, tokenize
+from ._resolve import JointPose, Resolver, SceneInfo
+from ._run import ArmBackend, run_source
+from ._teach import Jog, Teaching, joints_line, pose_now
+from ._walk import Walker
+
+SHELL_WORDS = ("where", "poses", "save", "write", "jog", "help", "quit", "exit")
+HELP = """\
+the language: move, line, joints, turn, grip, home, wait, speed, light, run, pose,
+  repeat N ... end, define NAME(P, ...) ... end, and the jobs (help WORD for one)
+the shell: where | poses | save NAME | write FILE | jog [STEP_DEG] | run FILE |
+  help [WORD] | quit      (Tab completes; history with the arrow keys)"""
+
+
+@dataclass
+class Reply:
+    """What the shell prints after a line, and what to do next."""
+
+    text: str = ""
+    more: bool = False  # a block is open: read more lines
+    quit: bool = False
+    jog: float | None = None  # enter jog mode with this step [deg]
+
+
+class Session:
+    """The language, interactively, on ``arm`` (see the module doc)."""
+
+    def __init__(self, arm: Arm, *, scene: SceneInfo | None = None, base_dir: Path | None = None):
+        self.arm, self.scene = arm, scene
+        self.base_dir = base_dir or Path.cwd()
+        self.backend = ArmBackend(arm, scene)
+        self.resolver = Resolver(arm.model, scene, self.base_dir)
+        self.walker = Walker(self.resolver, self.backend, "<shell>", checking=False)
+        self.walker.redefine = True
+        self.teaching = Teaching(arm.model.name, pose_now(arm))
+        self.next_line = 1
+        self._pending: list[str] = []
+        self._depth = 0
+
+    @property
+    def names(self) -> list[str]:
+        """Pose and procedure names defined so far (for completion)."""
+        return [*self.resolver.poses, *self.walker.procs]
+
+    def handle(self, line: str) -> Reply:
+        """One line typed: a shell word, a statement, or part of a block."""
+        words = line.split()
+        if not self._pending and words and words[0] in SHELL_WORDS:
+            return self._shell_word(words)
+        if not self._pending and len(words) == 2 and words[0] == "run":
+            return self._run_file(words[1])
+        self._pending.append(line)
+        self._depth += _depth_change(line)
+        if self._depth > 0:
+            return Reply(more=True)
+        text = "\n".join(self._pending)
+        self._pending, self._depth = [], 0
+        return self.execute(text) if text.strip() else Reply()
+
+    def cancel(self) -> None:
+        """Drop a half-typed block (Ctrl-C at the prompt)."""
+        self._pending, self._depth = [], 0
+
+    def execute(self, text: str) -> Reply:
+        """Check ``text`` against the arm as it is now, then run it."""
+        source = Source("<shell>", text, self.next_line)
+        self.next_line += max(1, len(source.lines))
+        env = Env(self.resolver.poses, self.walker.procs)
+        result = check_source(
+            source, model=self.arm.model, scene=self.scene, q0=self.arm.driver.read(),
+            grip0=self.backend.grip_width, require_jobs=True, base_dir=self.base_dir, env=env,
+        )  # fmt: skip
+        if any(isinstance(s, Header) for s in result.program.statements):
+            return Reply("error: choose the arm, driver and scene when starting: "
+                         "armkit --arm NAME --driver NAME shell")  # fmt: skip
+        if not result.ok:
+            return Reply(ScriptCheckError(source, result.diagnostics).report())
+        try:
+            self.walker.walk(result.program.statements)
+        except (ArmkitError, KeyboardInterrupt) as exc:
+            self.arm.stop()
+            return Reply(f"error: {exc}" if isinstance(exc, ScriptRunError) else "stopped")
+        self.teaching.record(text)
+        return Reply()
+
+    def jog(self, keys: Iterable[str], step: float, show: Callable[[str], None]) -> None:
+        """Jog with each key of ``keys`` until ``q``, Enter or end of input, calling
+        ``show`` with each message and the status after each key; record the result."""
+        jog = Jog(self.arm, step)
+        show(self.status())
+        for key in keys:
+            if key in ("q", "\n", "\r", "\x04", ""):
+                break
+            message = jog.key(key, self._free_name())
+            if jog.saved:
+                name, q = jog.saved[-1]
+                self.resolver.poses[name] = JointPose(q)
+            if message:
+                show(message)
+            show(self.status())
+        self.teaching.lines += jog.finish()
+
+    def status(self) -> str:
+        """One line: joint angles [deg] and the gripper point [mm]."""
+        x, y, z, pitch = self.arm.position()
+        angles = " ".join(f"{n[:5]} {a:+.1f}" for n, a in self.arm.angles().items())
+        return f"{angles} | x {x:.0f} y {y:.0f} z {z:.0f} mm pitch {pitch:.0f}"
+
+    def _free_name(self) -> str:
+        k = 1
+        while f"p{k}" in self.resolver.poses:
+            k += 1
+        return f"p{k}"
+
+    def where(self) -> str:
+        """The gripper point and joint angles now."""
+        x, y, z, pitch = self.arm.position()
+        angles = "  ".join(f"{n} {a:.2f}" for n, a in self.arm.angles().items())
+        return f"gripper at x {x:.1f} y {y:.1f} z {z:.1f} mm, pitch {pitch:.1f} deg\njoints {angles} deg"
+
+    def _shell_word(self, words: list[str]) -> Reply:
+        word, args = words[0], words[1:]
+        if word in ("quit", "exit"):
+            return Reply(quit=True)
+        if word == "where":
+            return Reply(self.where())
+        if word == "poses":
+            poses = self.resolver.poses.items()
+            lines = [f"pose {n} = {'?' if p is None else p.describe()}" for n, p in poses]
+            return Reply("\n".join(lines) or "no poses yet")
+        if word == "help":
+            if not args:
+                return Reply(HELP)
+            return Reply(usage_of(args[0]) or f"no command {args[0]!r}; type help")
+        if word == "jog":
+            return self._jog_word(args)
+        if len(args) != 1:
+            return Reply(f"error: usage: {word} {'NAME' if word == 'save' else 'FILE'}")
+        return self._save(args[0]) if word == "save" else self._write(args[0])
+
+    def _jog_word(self, args: list[str]) -> Reply:
+        try:
+            step = float(args[0]) if args else 5.0
+        except ValueError:
+            return Reply(f"error: jog takes a step in degrees, got {args[0]!r}")
+        if not 0.1 <= step <= 45.0:
+            return Reply(f"error: the jog step must be in 0.1..45 deg, got {step:g}")
+        return Reply(jog=step)
+
+    def _save(self, name: str) -> Reply:
+        if not Token("word", name, 1).is_name or name in RESERVED:
+            return Reply(
+                f"error: {name!r} cannot name a pose (a letter, then letters, digits, _ or -; "
+                "not a word of the language)"
+            )
+        q = pose_now(self.arm)
+        self.resolver.poses[name] = JointPose(q)
+        return Reply("saved: " + self.teaching.save(name, q))
+
+    def _write(self, name: str) -> Reply:
+        path = (self.base_dir / name).expanduser()
+        if not path.parent.is_dir():
+            return Reply(f"error: cannot write {path}: no folder {path.parent}")
+        try:
+            write_atomic(path, self.teaching.script(), durable=False)
+        except OSError as exc:
+            return Reply(f"error: cannot write {path}: {exc.strerror}")
+        return Reply(
+            f"wrote {len(self.teaching.lines)} lines to {path}; replay with: armkit run {name}"
+        )
+
+    def _run_file(self, name: str) -> Reply:
+        path = self.base_dir / name
+        try:
+            text = path.read_text(encoding="utf-8")
+            run_source(self.arm, Source(str(path), text), scene=self.scene)
+        except ScriptCheckError as exc:
+            return Reply(exc.report())
+        except (ArmkitError, OSError, KeyboardInterrupt) as exc:
+            self.arm.stop()
+            return Reply(f"error: {exc}")
+        self.teaching.lines += [f"# ran {name}; it ended here:", joints_line(pose_now(self.arm))]
+        return Reply(f"ran {name}")
+
+
+def _depth_change(line: str) -> int:
+    """+1 for a line opening a block (repeat, define), -1 for 'end', else 0."""
+    try:
+        tokens = tokenize(line)
+    except LexError:
+        return 0
+    if not tokens:
+        return 0
+    first = tokens[0].text
+    return 1 if first in ("repeat", "define") else -1 if first == "end" else 0

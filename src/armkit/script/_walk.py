@@ -1,0 +1,281 @@
+"""Walk a program's statements: bind parameters, loop repeats, call procedures,
+and hand each motion to a backend — the checker (a model of the arm) or the
+runner (a real ``Arm``). One walker for both, so what is checked is what runs.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Hashable, Iterable
+from typing import Literal
+
+from .._errors import ArmkitError
+from ._ast import (
+    Call,
+    Define,
+    Grip,
+    Header,
+    Job,
+    Loc,
+    Move,
+    Num,
+    PoseDef,
+    PoseName,
+    Repeat,
+    RunMotor,
+    Simple,
+    Statement,
+    Turn,
+)
+from ._backend import Backend, Frame, ScriptRunError
+from ._diagnostics import Diagnostic, suggest
+from ._grammar import BLOCKS, COMMANDS
+from ._jobs import JOBS
+from ._resolve import UNKNOWN, Arg, Fail, Resolver
+
+MAX_CALL_DEPTH = 50
+CHECK_BUDGET = 20_000  # statements the checker simulates before it stops unrolling repeats
+
+
+class Walker:
+    """Executes statements on a backend; with ``checking``, problems are collected
+    as diagnostics and the walk goes on, else the first raises ``ScriptRunError``."""
+
+    def __init__(self, resolver: Resolver, backend: Backend, source: str, *, checking: bool):
+        self.resolver, self.backend, self.source, self.checking = (
+            resolver,
+            backend,
+            source,
+            checking,
+        )
+        self.procs: dict[str, Define] = {}
+        self.called: set[str] = set()
+        self.frames: list[Frame] = []
+        self.diagnostics: list[Diagnostic] = []
+        self.steps = 0
+        self.budget = CHECK_BUDGET
+        self.broken: set[str] = set()  # procedures whose definition did not parse
+        self.redefine = False  # a procedure may be defined again (the shell)
+
+    def walk(self, statements: Iterable[Statement]) -> None:
+        """Execute ``statements`` in order."""
+        for s in statements:
+            self._one(s)
+
+    def finish(self) -> None:
+        """Checking: walk every procedure never called, with unknown arguments."""
+        if self.checking:
+            for name, proc in self.procs.items():
+                if name not in self.called:
+                    self._blind(proc.body, dict.fromkeys(proc.params, UNKNOWN))
+
+    def _one(self, s: Statement) -> None:
+        self.steps += 1
+        try:
+            self._dispatch(s)
+        except ScriptRunError:
+            raise
+        except Fail as f:
+            self._failed(s)
+            self._report(f.loc, f.message)
+        except (ArmkitError, ValueError) as exc:
+            self._failed(s)
+            self._report(s.loc, str(exc))
+
+    def _failed(self, s: Statement) -> None:
+        """Checking goes on after a failed statement without cascading: a pose it meant
+        to define and the arm's position become unknown."""
+        if isinstance(s, PoseDef):
+            self.resolver.poses[s.name] = None
+        if self.checking:
+            self.backend.lose_track()
+
+    def _report(
+        self, loc: Loc, message: str, severity: Literal["error", "warning"] = "error"
+    ) -> None:
+        if not self.checking:
+            raise ScriptRunError(self.source, loc, message, tuple(self.frames))
+        notes = tuple(
+            f.describe() for f in reversed(self.frames) if f.kind == "call" or f.iteration > 1
+        )
+        self.diagnostics.append(Diagnostic(loc, message, severity, notes))
+
+    def _dispatch(self, s: Statement) -> None:
+        if isinstance(s, Repeat):
+            self._repeat(s)
+        elif isinstance(s, Define):
+            self._define(s)
+        elif isinstance(s, Call):
+            self._call(s)
+        elif not isinstance(s, Header):
+            self.backend.begin(s, tuple(self.frames))
+            self._motion(s)
+
+    def _motion(self, s: Statement) -> None:
+        r, b = self.resolver, self.backend
+        if isinstance(s, Move):
+            b.move(r.target(s.target, b.here()), s.straight)
+        elif isinstance(s, PoseDef):
+            r.poses[s.name] = r.target(s.target, b.here())
+        elif isinstance(s, Turn):
+            b.turn(r.joint(s.joint, s.joint_loc), r.number(s.angle, "angle"), s.relative)
+        elif isinstance(s, Grip):
+            b.grip(self._width(s))
+        elif isinstance(s, RunMotor):
+            self._run_motor(s)
+        elif isinstance(s, Job):
+            b.job(s.command, r.job_args(s.command, s.args, b.here()))
+        elif isinstance(s, Simple):
+            self._simple(s)
+
+    def _simple(self, s: Simple) -> None:
+        b, model = self.backend, self.resolver.model
+        if s.command == "home":
+            b.home()
+        elif s.command == "light":
+            self._needs_timed("light", s.loc)
+            b.light(s.flag)
+        elif s.value is not None and s.command == "wait":
+            seconds = self.resolver.number(s.value, "time")
+            if seconds is not None and seconds < 0:
+                raise Fail(s.loc, f"wait needs a time of 0 s or more, got {seconds:g} s")
+            b.wait(seconds)
+        elif s.value is not None:
+            tool = s.command == "tool-speed"
+            v = self.resolver.number(s.value, "speed" if tool else "percent")
+            if v is not None and tool and not 0 < v <= 1.0:
+                raise Fail(s.loc, f"a tool speed must be in (0, 1000] mm/s, got {v * 1000:g} mm/s")
+            if v is not None and not tool and not 0 < v <= 1.0:
+                raise Fail(
+                    s.loc,
+                    f"speed must be in (0, 100] % of {model.name}'s joint speeds, got {v * 100:g} %",
+                )
+            b.speed(v, tool)
+
+    def _width(self, s: Grip) -> float | None:
+        g, name = self.resolver.model.gripper, self.resolver.model.name
+        if s.width is None:
+            return g.width_max if s.state == "open" else g.width_min
+        w = self.resolver.number(s.width, "length")
+        if w is not None and not g.width_min - 1e-9 <= w <= g.width_max + 1e-9:
+            raise Fail(
+                s.width.loc,
+                f"grip {w * 1000:g} mm is outside {name}'s {g.width_min * 1000:g}..{g.width_max * 1000:g} mm; "
+                "choose a width in that range (or grip open / grip close)",
+            )
+        return w
+
+    def _run_motor(self, s: RunMotor) -> None:
+        r = self.resolver
+        joint = r.joint(s.joint, s.joint_loc)
+        self._needs_timed("run", s.loc)
+        base = r.model.joint_index(joint) == 0
+        if base != (s.word in ("left", "right")):
+            words = "left or right" if base else "forward or backward"
+            raise Fail(s.loc, f"the {joint} turns {words}, not {s.word}")
+        seconds = r.number(s.seconds, "time")
+        if seconds is not None and not 0 < seconds <= 60:
+            raise Fail(s.loc, f"run needs a time in (0, 60] s, got {seconds:g} s")
+        self.backend.run_motor(joint, s.direction, seconds)
+
+    def _needs_timed(self, command: str, loc: Loc) -> None:
+        model = self.resolver.model
+        if model.gripper.kind != "timed":
+            hint = "; use 'turn JOINT by ANGLE'" if command == "run" else ""
+            raise Fail(
+                loc,
+                f"'{command}' needs an arm with timed motors (the OWI-535), not {model.name}{hint}",
+            )
+
+    def _repeat(self, s: Repeat) -> None:
+        n = self.resolver.number(s.count, "count")
+        if n is not None and n < 0:
+            raise Fail(s.count.loc, f"a repeat count must be 0 or more, got {n:g}")
+        if n is None or n == 0:
+            if self.checking:
+                self._blind(s.body, None)
+            return
+        count = int(n)
+        before: tuple[Hashable | None, float] = (None, 0.0)
+        for i in range(1, count + 1):
+            now = (self._snapshot(), self.backend.elapsed())
+            if now[0] is not None and now[0] == before[0]:
+                self.backend.skip(count - i + 1, now[1] - before[1], s.loc)
+                return
+            if self.checking and self.steps > self.budget:
+                self._report(
+                    s.loc,
+                    f"checked the first {i - 1} of {count} iterations only (too many "
+                    "to simulate); the rest are checked as they run",
+                    "warning",
+                )
+                return
+            before = now
+            self.frames.append(Frame("repeat", "repeat", s.loc, i, count))
+            try:
+                self.walk(s.body)
+            finally:
+                self.frames.pop()
+
+    def _snapshot(self) -> Hashable | None:
+        state = self.backend.snapshot()
+        if state is None:
+            return None
+        return state, tuple(sorted((k, repr(v)) for k, v in self.resolver.poses.items()))
+
+    def _define(self, s: Define) -> None:
+        if s.name in self.procs and not self.redefine:
+            first = self.procs[s.name].loc.line
+            raise Fail(s.loc, f"procedure {s.name!r} is already defined on line {first}")
+        self.procs[s.name] = s
+
+    def _call(self, s: Call) -> None:
+        proc = self.procs.get(s.name)
+        if proc is None and s.name in self.broken:
+            return  # its definition was already reported
+        if proc is None:
+            raise Fail(s.loc, self._unknown(s.name))
+        if len(s.args) != len(proc.params):
+            params = ", ".join(proc.params) or "none"
+            raise Fail(
+                s.loc, f"{s.name} takes {len(proc.params)} arguments ({params}), got {len(s.args)}"
+            )
+        if sum(f.kind == "call" for f in self.frames) >= MAX_CALL_DEPTH:
+            raise Fail(
+                s.loc,
+                f"procedures call each other more than {MAX_CALL_DEPTH} deep; "
+                f"{s.name} must not call itself, directly or through another",
+            )
+        binding = {p: self._arg(a) for p, a in zip(proc.params, s.args, strict=True)}
+        self.called.add(s.name)
+        self.resolver.bindings.append(binding)
+        self.frames.append(Frame("call", s.name, s.loc))
+        try:
+            self.walk(proc.body)
+        finally:
+            self.frames.pop()
+            self.resolver.bindings.pop()
+
+    def _arg(self, a: Num | PoseName) -> Arg:
+        if isinstance(a, PoseName):
+            scope = self.resolver.bindings[-1]
+            return scope.get(a.name, a.name)
+        return a
+
+    def _unknown(self, name: str) -> str:
+        if name in self.resolver.poses:
+            return f"{name!r} is a pose, not a command; write 'move {name}'"
+        words = [*COMMANDS, *JOBS, *BLOCKS, *self.procs]
+        return f"unknown command {name!r}{suggest(name, words)}"
+
+    def _blind(self, body: tuple[Statement, ...], binding: dict[str, Arg] | None) -> None:
+        """Check names and units of ``body`` without a known arm state (nothing recorded)."""
+        poses = dict(self.resolver.poses)
+        if binding is not None:
+            self.resolver.bindings.append(binding)
+        try:
+            with self.backend.blind():
+                self.walk(body)
+        finally:
+            if binding is not None:
+                self.resolver.bindings.pop()
+            self.resolver.poses = poses

@@ -1,0 +1,236 @@
+"""The tasks: functions of an Arm and a Scene, each planned whole (every IK, every
+clearance check) before anything moves, then carried out unless ``dry_run``.
+Millimetres and degrees in their arguments, like ``Arm``; each returns its Plan."""
+
+from __future__ import annotations
+
+import itertools
+import math
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import replace
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from .._errors import InputError
+from ..kinematics import fk
+from ..scene import Cube, Scene
+from ._calibration import Calibration, calibration_for
+from ._choose import pick_any, place_any, rotate
+from ._plan import Plan
+from ._points import move_point
+from ._run import run_plan
+from ._state import Context, Options, State
+from ._targets import resolve
+
+if TYPE_CHECKING:
+    from ..arm import Arm
+
+Body = Callable[[Context, State], State]
+CalibrationLike = Calibration | str | Path | None
+
+
+def plan_task(
+    arm: Arm,
+    scene: Scene,
+    task: str,
+    body: Body,
+    *,
+    clearance: float = 30.0,
+    calibration: CalibrationLike = None,
+    held: str | None = None,
+) -> Plan:
+    """Plan ``body`` from the arm's joints now; nothing moves.
+
+    Args:
+        clearance: height of the first waypoint above each grasp and release [mm],
+            30..500 (001: at least 30), then three waypoints down.
+        calibration: the unit's offsets, a calibration file, or None: the arm's
+            default file if there is one (``armkit.tasks.default_calibration_file``).
+        held: a cube already in the gripper (picked by ``pick`` from where the scene has it).
+
+    Raises:
+        TaskError: a step is unreachable or would collide (naming the step, link, object).
+        ValueError: a bad argument.
+    """
+    if not (math.isfinite(clearance) and 30.0 <= clearance <= 500.0):
+        raise InputError(f"clearance must be 30..500 mm (001: at least 30), got {clearance}")
+    if isinstance(calibration, Calibration):
+        cal = calibration
+    else:
+        cal = calibration_for(arm.model.name, calibration)
+    ctx = Context(arm.model, Options(clearance=clearance / 1000.0, calibration=cal), task)
+    start = time.perf_counter()
+    q0 = arm.driver.read()
+    st = State(q0, scene, None, None)
+    if held is not None:
+        picked = pick_any(ctx, st, held, None)
+        st = replace(st, held=picked.held, scene=picked.scene, opening=arm.model.gripper.width_min)
+    st = body(ctx, st)
+    after = (
+        st.scene
+        if st.held is None
+        else replace(st.scene, cubes=(*st.scene.cubes, _carried(ctx, st)))
+    )
+    return Plan(task, arm.model.name, st.steps, q0, scene, after, time.perf_counter() - start)
+
+
+def _carried(ctx: Context, st: State) -> Cube:
+    """The held cube where the gripper holds it at the end of the plan."""
+    assert st.held is not None
+    kin = ctx.model.with_grip_width(st.held.cube.size)
+    T = st.scene.T_world_base @ fk(kin, st.q) @ st.held.T_tool_object
+    return st.held.cube.moved(T)
+
+
+def _deg(pitch: float | None) -> float | None:
+    if pitch is None:
+        return None
+    if not (math.isfinite(pitch) and -90.0 <= pitch <= 90.0):
+        raise InputError(f"pitch must be -90..90 deg, got {pitch}")
+    return math.radians(pitch)
+
+
+def _done(arm: Arm, plan: Plan, dry_run: bool) -> Plan:
+    if not dry_run:
+        run_plan(arm, plan)
+    return plan
+
+
+def pick(
+    arm: Arm,
+    scene: Scene,
+    cube: str,
+    *,
+    pitch: float | None = None,
+    clearance: float = 30.0,
+    calibration: CalibrationLike = None,
+    dry_run: bool = False,
+) -> Plan:
+    """Pick ``cube`` up (001: from the top where reachable, else from the side with
+    the grasp point shifted up; ``pitch`` [deg] forces one) and stay above it."""
+    p = _deg(pitch)
+    plan = plan_task(
+        arm, scene, f"pick {cube}", lambda c, s: pick_any(c, s, cube, p),
+        clearance=clearance, calibration=calibration,
+    )  # fmt: skip
+    return _done(arm, plan, dry_run)
+
+
+def place(
+    arm: Arm,
+    scene: Scene,
+    cube: str,
+    to: str | Sequence[float],
+    *,
+    pitch: float | None = None,
+    clearance: float = 30.0,
+    calibration: CalibrationLike = None,
+    dry_run: bool = False,
+) -> Plan:
+    """Put ``cube`` (in the gripper, picked by ``pick`` from where ``scene`` has it)
+    down at ``to``: a place, ``board[row, col]``, a cube to stack on, a container,
+    or (x, y, z) [mm]; then go back up."""
+    target = resolve(scene, to)
+    p = _deg(pitch) if pitch is not None else target.pitch
+    plan = plan_task(
+        arm, scene, f"place {cube}", lambda c, s: place_any(c, s, target.bottom, target.label, p),
+        clearance=clearance, calibration=calibration, held=cube,
+    )  # fmt: skip
+    return _done(arm, plan, dry_run)
+
+
+def move_item(
+    arm: Arm,
+    scene: Scene,
+    item: str | Sequence[float],
+    to: str | Sequence[float],
+    *,
+    lift: float = 40.0,
+    pitch: float | None = None,
+    clearance: float = 30.0,
+    calibration: CalibrationLike = None,
+    dry_run: bool = False,
+) -> Plan:
+    """000's moveItem: pick ``item`` up, lift it ``lift`` [mm] (at least the
+    clearance) before travelling, carry it to ``to`` (as ``place``), put it down.
+
+    ``item`` is a cube of the scene, or the grip point (x, y, z) [mm] of an item the
+    scene does not know (then ``to`` must be a point or a place too, and the grasp
+    and the item's own clearance cannot be checked).
+    """
+    target = resolve(scene, to)
+    p = _deg(pitch)
+    height = max(lift, clearance)
+    if isinstance(item, str):
+        name = item
+
+        def body(c: Context, s: State) -> State:
+            s = pick_any(c, s, item, p)
+            return place_any(
+                c, s, target.bottom, target.label, p if p is not None else target.pitch
+            )
+
+    else:
+        name = "the item"
+        start = resolve(scene, item).bottom
+
+        def body(c: Context, s: State) -> State:
+            return move_point(c, s, start, target.bottom, p)
+
+    plan = plan_task(arm, scene, f"move {name}", body, clearance=height, calibration=calibration)
+    return _done(arm, plan, dry_run)
+
+
+def rotate_cube(
+    arm: Arm,
+    scene: Scene,
+    cube: str,
+    direction: str = "forward",
+    *,
+    clearance: float = 30.0,
+    calibration: CalibrationLike = None,
+    dry_run: bool = False,
+) -> Plan:
+    """001: turn ``cube`` a quarter turn in place: ``"forward"`` picks it from the
+    side (pitch 0) and puts it down from the top (pitch -90), its top face then
+    facing away from the arm; ``"backward"`` the other way round."""
+    plan = plan_task(
+        arm, scene, f"rotate {cube} {direction}", lambda c, s: rotate(c, s, cube, direction),
+        clearance=clearance, calibration=calibration,
+    )  # fmt: skip
+    return _done(arm, plan, dry_run)
+
+
+def stack(
+    arm: Arm,
+    scene: Scene,
+    cubes: Sequence[str],
+    *,
+    rotate_first: str | None = "forward",
+    clearance: float = 30.0,
+    calibration: CalibrationLike = None,
+    dry_run: bool = False,
+) -> Plan:
+    """001: turn every cube in place (``rotate_first``: ``"forward"``,
+    ``"backward"`` or None), then stack them on the first one, each one cube
+    higher than the last."""
+    names = list(cubes)
+    if len(names) < 2 or len(set(names)) != len(names):
+        raise InputError(f"stack needs two or more different cubes, got {names}")
+
+    def body(c: Context, s: State) -> State:
+        for name in names if rotate_first else ():
+            s = rotate(c, s, name, str(rotate_first))
+        for below, name in itertools.pairwise(names):
+            s = pick_any(c, s, name, None)
+            top = s.scene.cube(below)
+            s = place_any(c, s, top.position + np.array([0.0, 0.0, top.size]), f"on {below}", None)
+        return s
+
+    plan = plan_task(
+        arm, scene, "stack " + " ".join(names), body, clearance=clearance, calibration=calibration
+    )
+    return _done(arm, plan, dry_run)

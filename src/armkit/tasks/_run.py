@@ -1,0 +1,44 @@
+"""Carrying out a plan on an arm, step by step (every step was checked when planned)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from .._errors import ArmkitError
+from ._plan import Plan, Step
+
+if TYPE_CHECKING:
+    from ..arm import Arm
+
+START_TOLERANCE = math.radians(0.5)  # the arm must be where the plan starts
+
+
+def run_plan(arm: Arm, plan: Plan, say: Callable[[int, Step], None] | None = None) -> None:
+    """Move ``arm`` through ``plan``: joint moves and gripper commands in order.
+
+    Raises:
+        ArmkitError: the arm is not where the plan starts (it moved since planning);
+            nothing moves then.
+    """
+    now = arm.driver.read()
+    off = float(np.max(np.abs(now - plan.q_start)))
+    if off > START_TOLERANCE:
+        raise ArmkitError(
+            f"the arm moved {math.degrees(off):.1f} deg since the plan '{plan.task}' was made; "
+            "plan it again"
+        )
+    scene, arm.scene = arm.scene, None  # checked when planned, with the grasps allowed
+    try:
+        for k, step in enumerate(plan.steps, 1):
+            if say is not None:
+                say(k, step)
+            if step.grip is not None:
+                arm.grip(step.grip * 1000.0)
+            elif step.q is not None:
+                arm.move_joints(np.degrees(step.q).tolist())  # the table is checked again
+    finally:
+        arm.scene = scene

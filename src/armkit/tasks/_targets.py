@@ -1,0 +1,59 @@
+"""Where a task puts a cube: a named place, a board socket, on top of a cube,
+into a container, or a point in millimetres."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .._errors import InputError
+from ..scene import Scene
+
+F64 = NDArray[np.float64]
+_SOCKET = re.compile(r"^\s*([\w-]+)\s*\[\s*(\d+)\s*,\s*(\d+)\s*\]\s*$")
+
+
+@dataclass(frozen=True)
+class Target:
+    """Where the lowest face's centre of a cube goes (scene frame) [m], (3,), how
+    to say it (``"in board[0, 1]"``), and the pitch the scene asks for [rad] or None."""
+
+    bottom: F64
+    label: str
+    pitch: float | None = None
+
+
+def resolve(scene: Scene, to: str | Sequence[float]) -> Target:
+    """A target from a name in the scene (a place, ``board[row, col]``, a cube to
+    stack on, a container) or from ``(x, y, z)`` [mm] in the scene frame.
+
+    Raises:
+        ValueError: unknown name (the message lists what there is) or a bad point.
+    """
+    if not isinstance(to, str):
+        p = np.asarray(to, dtype=np.float64)
+        if p.shape != (3,) or not np.all(np.isfinite(p)) or np.any(np.abs(p) > 10_000):
+            raise InputError(f"a target point is 3 finite coordinates in mm, got {to!r}")
+        return Target(p / 1000.0, "at ({:.1f}, {:.1f}, {:.1f}) mm".format(*p))
+    socket = _SOCKET.match(to)
+    if socket:
+        board = scene.board(socket.group(1))
+        row, col = int(socket.group(2)), int(socket.group(3))
+        return Target(board.socket(row, col), f"in {board.name}[{row}, {col}]")
+    for place in scene.places:
+        if place.name == to:
+            return Target(place.position, f"at {to}", place.pitch)
+    for cube in scene.cubes:
+        if cube.name == to:
+            return Target(cube.position + np.array([0.0, 0.0, cube.size]), f"on {to}")
+    for box in scene.containers:
+        if box.name == to:
+            return Target(np.array([*box.position[:2], box.floor_z]), f"in {to}")
+    raise InputError(
+        f"scene {scene.name!r} has no place, cube or container {to!r} "
+        f"(and it is not board[row, col]); it has: {', '.join(scene.names()) or 'nothing'}"
+    )

@@ -1,0 +1,101 @@
+"""An arm as primitives: the link capsules of the clearance check, the jaws, the frames.
+
+The links are exactly ``ArmModel.link_radii``'s capsules: capsule i joins the
+origins of frames i and i + 1 of ``fk_frames`` (capsule 0 the base column,
+the last one the flange to the tool point), so what the view shows is what the
+clearance check tests.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ..kinematics import fk_frames
+from ..model import ArmModel
+from ._primitives import RGB, Axes, Box, Capsule, Primitive, pose
+
+F64 = NDArray[np.float64]
+
+LINK_COLOUR: RGB = (232, 118, 16)  # orange: every link
+BASE_COLOUR: RGB = (70, 70, 78)  # dark grey: the base column
+JAW_COLOUR: RGB = (40, 40, 46)
+TABLE_COLOUR: RGB = (214, 208, 196)
+TRAIL_COLOUR: RGB = (30, 110, 230)
+DEFAULT_RADIUS = 0.015  # [m] when a model has no link radii
+JAW_LENGTH = 0.03  # [m] along the approach axis, ending at the tool point
+JAW_THICKNESS = 0.006  # [m]
+
+
+@dataclass(frozen=True, eq=False)
+class Capsules:
+    """Link capsules of one pose: segments ``p0``, ``p1`` [m], shape (K, 3) each,
+    ``radii`` [m], shape (K,); K = dof + 1."""
+
+    p0: F64
+    p1: F64
+    radii: F64
+
+
+def link_capsules(model: ArmModel, q: ArrayLike) -> Capsules:
+    """The arm's link capsules at joint angles ``q`` [rad], shape (dof,)."""
+    origins = fk_frames(model, q)[:, :3, 3]
+    radii = model.link_radii or (DEFAULT_RADIUS,) * (model.dof + 1)
+    return Capsules(origins[:-1].copy(), origins[1:].copy(), np.array(radii, dtype=np.float64))
+
+
+def arm_primitives(
+    model: ArmModel, q: ArrayLike, grip: float | None = None, *, frames: bool = False
+) -> list[Primitive]:
+    """The arm at joint angles ``q`` [rad] with its jaws open to ``grip`` [m] (None:
+    fully open), named ``/arm/link_<i>``, ``/arm/jaw_<l|r>``, ``/arm/frame_<i>``."""
+    F = fk_frames(model, q)
+    caps = link_capsules(model, q)
+    shapes: list[Primitive] = [
+        Capsule(
+            f"/arm/link_{i}",
+            caps.p0[i],
+            caps.p1[i],
+            float(caps.radii[i]),
+            BASE_COLOUR if i == 0 else LINK_COLOUR,
+        )
+        for i in range(len(caps.radii))
+    ]
+    width = model.gripper.width_max if grip is None else grip
+    shapes += jaw_boxes(F[-1], width, float(caps.radii[-1]))
+    if frames:
+        shapes += [Axes(f"/arm/frame_{i}", T, 0.04) for i, T in enumerate(F)]
+    return shapes
+
+
+def jaw_boxes(T_tool: F64, width: float, radius: float) -> list[Primitive]:
+    """Two jaws either side of the tool point along the tool's y axis, ``width`` [m]
+    apart, reaching from the tool point back along the approach (x) axis."""
+    height = max(radius, 0.008)
+    size = np.array([JAW_LENGTH, JAW_THICKNESS, height])
+    jaws: list[Primitive] = []
+    for side, sign in (("l", 1.0), ("r", -1.0)):
+        offset = pose((-JAW_LENGTH / 2, sign * (width / 2 + JAW_THICKNESS / 2), 0.0))
+        jaws.append(Box(f"/arm/jaw_{side}", size, T_tool @ offset, JAW_COLOUR))
+    palm = np.array([JAW_THICKNESS, width + 2 * JAW_THICKNESS, height])
+    back = pose((-JAW_LENGTH - JAW_THICKNESS / 2, 0.0, 0.0))
+    jaws.append(Box("/arm/palm", palm, T_tool @ back, JAW_COLOUR))
+    return jaws
+
+
+def table_primitive(model: ArmModel, half_width: float | None = None) -> Box:
+    """The table: a thin slab whose top is the plane ``model.table_z``, wide enough
+    for the arm's reach (or ``half_width`` [m])."""
+    reach = half_width or max(0.2, 1.1 * reach_of(model))
+    thickness = 0.01
+    T = pose((0.0, 0.0, model.table_z - thickness / 2))
+    return Box("/table", np.array([2 * reach, 2 * reach, thickness]), T, TABLE_COLOUR)
+
+
+def reach_of(model: ArmModel) -> float:
+    """How far the tool point can get from the base column [m]: the link lengths
+    summed beyond the first frame (an upper bound)."""
+    origins = fk_frames(model, model.home)[1:, :3, 3]
+    return float(np.sum(np.linalg.norm(np.diff(origins, axis=0), axis=1)))

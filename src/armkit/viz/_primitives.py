@@ -1,0 +1,186 @@
+"""The shapes every picture of armkit is drawn from (pure data, SI units).
+
+A view (the web page, a GIF) is a list of primitives; anything that wants to be
+seen (an arm, a scene object, a trail, a target) turns itself into them. Each
+primitive has a ``name``: a path such as ``"/scene/cube_a"`` that stays the
+same from one frame to the next, so a renderer moves what it has instead of
+drawing it again. Colours are RGB in 0..255.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .._errors import InputError
+
+F64 = NDArray[np.float64]
+RGB = tuple[int, int, int]
+
+
+def pose(position: ArrayLike = (0.0, 0.0, 0.0), yaw: float = 0.0) -> F64:
+    """A transform [m], shape (4, 4): turned by ``yaw`` [rad] about z, then moved to
+    ``position`` [m], shape (3,)."""
+    T = np.eye(4)
+    c, s = math.cos(yaw), math.sin(yaw)
+    T[:2, :2] = [[c, -s], [s, c]]
+    T[:3, 3] = _vec3(position, "position")
+    return T
+
+
+@dataclass(frozen=True, eq=False)
+class Box:
+    """A box of ``size`` (x, y, z) [m], shape (3,), centred on the frame ``T`` (4, 4)."""
+
+    name: str
+    size: F64
+    T: F64
+    color: RGB
+    opacity: float = 1.0
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "size", _array(self.size, (3,), "size"))
+        object.__setattr__(self, "T", _array(self.T, (4, 4), "T"))
+
+
+@dataclass(frozen=True, eq=False)
+class Cylinder:
+    """A cylinder of ``radius`` and ``height`` [m] along the z axis of ``T`` (4, 4),
+    centred on its origin."""
+
+    name: str
+    radius: float
+    height: float
+    T: F64
+    color: RGB
+    opacity: float = 1.0
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "T", _array(self.T, (4, 4), "T"))
+
+
+@dataclass(frozen=True, eq=False)
+class Capsule:
+    """Every point within ``radius`` [m] of the segment ``p0``-``p1`` [m], shape (3,)
+    each: the link shape of the clearance check."""
+
+    name: str
+    p0: F64
+    p1: F64
+    radius: float
+    color: RGB
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "p0", _array(self.p0, (3,), "p0"))
+        object.__setattr__(self, "p1", _array(self.p1, (3,), "p1"))
+
+
+@dataclass(frozen=True, eq=False)
+class Sphere:
+    """A ball of ``radius`` [m] around ``center`` [m], shape (3,)."""
+
+    name: str
+    center: F64
+    radius: float
+    color: RGB
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "center", _array(self.center, (3,), "center"))
+
+
+@dataclass(frozen=True, eq=False)
+class Polyline:
+    """A line through ``points`` [m], shape (N, 3), ``width`` in screen pixels."""
+
+    name: str
+    points: F64
+    color: RGB
+    width: float = 2.0
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "points", _array(self.points, (-1, 3), "points"))
+
+
+@dataclass(frozen=True, eq=False)
+class Axes:
+    """The x, y, z axes of the frame ``T`` (4, 4) drawn red, green, blue, ``length`` [m]."""
+
+    name: str
+    T: F64
+    length: float = 0.03
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "T", _array(self.T, (4, 4), "T"))
+
+
+@dataclass(frozen=True, eq=False)
+class Label:
+    """Text shown at ``position`` [m], shape (3,)."""
+
+    name: str
+    position: F64
+    text: str
+    color: RGB = field(default=(0, 0, 0))
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "position", _array(self.position, (3,), "position"))
+
+
+Primitive = Box | Cylinder | Capsule | Sphere | Polyline | Axes | Label
+
+
+def capsule_mesh(length: float, radius: float, segments: int = 16) -> tuple[F64, NDArray[np.int32]]:
+    """A capsule's triangle mesh along +z from 0 to ``length`` [m]: vertices (V, 3) [m]
+    and faces (F, 3) (indices, counter-clockwise seen from outside)."""
+    rings = segments // 2
+    # latitude angles: bottom cap (-pi/2..0) at z = 0, top cap (0..pi/2) at z = length
+    lat = np.concatenate(
+        [np.linspace(-math.pi / 2, 0, rings + 1), np.linspace(0, math.pi / 2, rings + 1)]
+    )
+    z_off = np.concatenate([np.zeros(rings + 1), np.full(rings + 1, length)])
+    lon = np.linspace(0, 2 * math.pi, segments, endpoint=False)
+    cl, sl = np.cos(lat)[:, None], np.sin(lat)[:, None]
+    x = radius * cl * np.cos(lon)[None, :]
+    y = radius * cl * np.sin(lon)[None, :]
+    z = radius * sl + z_off[:, None] + 0 * lon[None, :]
+    vertices = np.stack([x, y, z], axis=-1).reshape(-1, 3)
+    faces = []
+    for i in range(len(lat) - 1):
+        for j in range(segments):
+            a, b = i * segments + j, i * segments + (j + 1) % segments
+            c, d = a + segments, b + segments
+            faces += [(a, b, d), (a, d, c)]
+    return vertices, np.array(faces, dtype=np.int32)
+
+
+def segment_frame(p0: ArrayLike, p1: ArrayLike) -> tuple[F64, float]:
+    """The frame at ``p0`` whose z axis points to ``p1`` (4, 4), and the length [m]."""
+    a, b = _vec3(p0, "p0"), _vec3(p1, "p1")
+    axis = b - a
+    length = float(np.linalg.norm(axis))
+    z = axis / length if length > 1e-12 else np.array([0.0, 0.0, 1.0])
+    helper = np.array([1.0, 0.0, 0.0]) if abs(z[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+    x = np.cross(helper, z)
+    x /= np.linalg.norm(x)
+    T = np.eye(4)
+    T[:3, 0], T[:3, 1], T[:3, 2], T[:3, 3] = x, np.cross(z, x), z, a
+    return T, length
+
+
+def _vec3(value: ArrayLike, what: str) -> F64:
+    v = np.asarray(value, dtype=np.float64)
+    if v.shape != (3,) or not np.all(np.isfinite(v)):
+        raise InputError(f"{what} must be 3 finite numbers [m], got {value!r}")
+    return v
+
+
+def _array(value: ArrayLike, shape: tuple[int, ...], what: str) -> F64:
+    """``value`` as a float array of ``shape`` (-1: any length), finite, else ValueError."""
+    a = np.asarray(value, dtype=np.float64)
+    ok = a.ndim == len(shape) and all(w in (-1, n) for w, n in zip(shape, a.shape, strict=True))
+    if not ok or not np.all(np.isfinite(a)):
+        raise InputError(f"{what} must be finite numbers of shape {shape}, got {value!r}")
+    return a

@@ -1,0 +1,228 @@
+"""``View``: a live 3D page of an arm on its table (viser, served from this process).
+
+The page is viser's own client, bundled in the viser package and served by the
+view itself, so it works with no network. A thread reads the ``StateSource``
+``rate_hz`` times a second and sends what changed (the link poses, the jaws,
+the tool's trail); a target marker shows whether a gripper target is
+reachable and clear.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import threading
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import viser
+from numpy.typing import ArrayLike, NDArray
+
+from ..._errors import ArmkitError, InputError
+from .._arm_shapes import TRAIL_COLOUR, arm_primitives, reach_of, table_primitive
+from .._primitives import Label, Polyline, Primitive, Sphere
+from .._state import ArmState, StateSource
+from .._target import TargetCheck, check_target
+from ._render import Renderer
+
+F64 = NDArray[np.float64]
+OK_COLOUR = (30, 180, 60)
+BAD_COLOUR = (220, 30, 30)
+TRAIL_STEP = 0.001  # [m] the trail grows when the tool moved this far
+
+
+@dataclass(frozen=True)
+class ViewStats:
+    """How the view kept up: ``updates`` sent to the page (frames where the arm
+    moved), ``reads`` of the source, since ``started`` [s, time.monotonic]."""
+
+    updates: int
+    reads: int
+    started: float
+
+
+class View:
+    """A live 3D page of ``source``'s arm (see the module doc).
+
+    Args:
+        source: what to show (``DriverSource``, later the simulation World).
+        scene: static primitives (table objects); the table plane is always drawn.
+        host, port: where to serve the page; 127.0.0.1 = this computer only, 0 = any free port.
+        rate_hz: how often the source is read [1/s].
+        frames: draw each joint frame's axes.
+        trail: the most tool positions the trail keeps (0 = no trail).
+    """
+
+    def __init__(
+        self,
+        source: StateSource,
+        *,
+        scene: Sequence[Primitive] = (),
+        host: str = "127.0.0.1",
+        port: int = 8080,
+        rate_hz: float = 30.0,
+        frames: bool = False,
+        trail: int = 600,
+    ) -> None:
+        if not 0 < rate_hz <= 1000:
+            raise InputError(f"rate must be in (0, 1000] Hz, got {rate_hz}")
+        self.source = source
+        self.model = source.model
+        self.rate_hz = rate_hz
+        self.frames = frames
+        self.server = _serve(host, port)
+        self.host = host
+        self.renderer = Renderer(self.server.scene)
+        self._trail: list[F64] = []
+        self._trail_max = trail
+        self._last_q: F64 | None = None
+        self._state: ArmState | None = None
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+        self._lock = threading.Lock()
+        self._updates = 0
+        self._reads = 0
+        self._started = time.monotonic()
+        self.target: TargetCheck | None = None
+        self._listeners: list[Callable[[], None]] = []
+        self._setup_page(scene)
+
+    @property
+    def url(self) -> str:
+        """Where the page is (http://host:port/)."""
+        host = "127.0.0.1" if self.host in ("0.0.0.0", "::", "") else self.host
+        return f"http://{host}:{self.server.get_port()}/"
+
+    @property
+    def state(self) -> ArmState | None:
+        """The state last shown (None before the first update)."""
+        return self._state
+
+    def stats(self) -> ViewStats:
+        """Counts of updates and reads so far."""
+        return ViewStats(self._updates, self._reads, self._started)
+
+    def start(self) -> View:
+        """Follow the source from a thread, ``rate_hz`` times a second."""
+        if self._thread is None:
+            self._thread = threading.Thread(target=self._run, name="armkit-view", daemon=True)
+            self._thread.start()
+        return self
+
+    def on_update(self, listener: Callable[[], None]) -> None:
+        """Call ``listener()`` after every update that showed a new state."""
+        self._listeners.append(listener)
+
+    def update(self) -> bool:
+        """Read the source once and send what changed; True if the arm moved."""
+        if self._show(self.source.state()):
+            for listener in self._listeners:
+                listener()
+            return True
+        return False
+
+    def _show(self, state: ArmState) -> bool:
+        with self._lock:
+            self._reads += 1
+            moved = self._last_q is None or not np.array_equal(state.q, self._last_q)
+            grip_changed = self._state is None or state.grip != self._state.grip
+            self._state = state
+            if not (moved or grip_changed):
+                return False
+            self._last_q = state.q.copy()
+            with self.server.atomic():
+                self.renderer.draw(
+                    arm_primitives(self.model, state.q, state.grip, frames=self.frames)
+                )
+                self._grow_trail(state.q)
+            self._updates += 1
+            return True
+
+    def set_target(self, position: ArrayLike, pitch: float | None = None) -> TargetCheck:
+        """Check the gripper target ``position`` [m], shape (3,), at ``pitch`` [rad]
+        (None: any) and show it: a green ball when reachable and clear, red with the
+        reason otherwise."""
+        seed = None if self._state is None else self._state.q
+        check = check_target(self.model, position, pitch, seed)
+        colour = OK_COLOUR if check.ok else BAD_COLOUR
+        text = "reachable" if check.ok else check.reason
+        with self._lock:
+            self.target = check
+            self.renderer.draw(
+                [
+                    Sphere("/target/ball", check.position, 0.012, colour),
+                    Label("/target/why", check.position + np.array([0.0, 0.0, 0.02]), text, colour),
+                ]
+            )
+        return check
+
+    def clear_trail(self) -> None:
+        """Forget the tool's trail."""
+        with self._lock:
+            self._trail.clear()
+            self.renderer.remove("/trail")
+
+    def close(self) -> None:
+        """Stop following and stop serving the page."""
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join(timeout=2.0)
+        self.server.stop()
+
+    def __enter__(self) -> View:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def _run(self) -> None:
+        period = 1.0 / self.rate_hz
+        deadline = time.monotonic()
+        while not self._stop.is_set():
+            self.update()
+            deadline = max(deadline + period, time.monotonic() - period)
+            self._stop.wait(max(0.0, deadline - time.monotonic()))
+
+    def _grow_trail(self, q: F64) -> None:
+        if self._trail_max <= 0:
+            return
+        from ...kinematics import fk
+
+        tip = fk(self.model, q)[:3, 3]
+        if self._trail and np.linalg.norm(tip - self._trail[-1]) < TRAIL_STEP:
+            return
+        self._trail.append(tip)
+        del self._trail[: -self._trail_max]
+        if len(self._trail) >= 2:
+            self.renderer.draw_one(Polyline("/trail", np.array(self._trail), TRAIL_COLOUR, 2.0))
+
+    def _setup_page(self, scene: Sequence[Primitive]) -> None:
+        s = self.server
+        s.gui.configure_theme(show_share_button=False, control_width="medium")
+        s.scene.set_up_direction("+z")
+        s.scene.world_axes.visible = False
+        # Lights of our own, no environment map: the page looks the same from the
+        # first frame on (an image-based map loads later and would change the colours).
+        s.scene.configure_environment_map(hdri=None)
+        s.scene.configure_default_lights(enabled=False, cast_shadow=False)
+        s.scene.add_light_hemisphere(
+            "/lights/sky", sky_color=(255, 255, 255), ground_color=(120, 120, 130), intensity=2.2
+        )
+        s.scene.add_light_directional("/lights/sun", intensity=1.6, position=(0.3, -0.5, 1.0))
+        reach = reach_of(self.model)
+        s.initial_camera.position = (1.1 * reach, -1.0 * reach, 0.95 * reach)
+        s.initial_camera.look_at = (0.3 * reach, 0.0, 0.3 * reach)
+        s.initial_camera.up = (0.0, 0.0, 1.0)
+        self.renderer.draw([table_primitive(self.model), *scene])
+
+
+def _serve(host: str, port: int) -> viser.ViserServer:
+    if not 0 <= port <= 65535:
+        raise InputError(f"port must be 0..65535, got {port}")
+    try:
+        with contextlib.redirect_stdout(io.StringIO()):  # viser's banner: we print our own URL
+            return viser.ViserServer(host=host, port=port, verbose=False)
+    except OSError as exc:
+        raise ArmkitError(f"cannot serve the view on {host}:{port}: {exc}") from None

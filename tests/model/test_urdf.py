@@ -1,0 +1,125 @@
+"""URDF out and in: every shipped arm round-trips with identical FK; errors name file and element."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from armkit import ModelError, fk, ik, load_model
+from armkit.cli import main
+from armkit.cli._urdf import urdf_of
+from armkit.kinematics import why_no_closed_form
+from armkit.model import shipped_models
+
+
+@pytest.mark.parametrize("name", shipped_models())
+def test_shipped_arms_round_trip_with_identical_fk(name: str, tmp_path: Path) -> None:
+    m = load_model(name)
+    path = tmp_path / f"{name}.urdf"
+    path.write_text(urdf_of(m))
+    back = load_model(path)
+    assert back.dof == m.dof and back.joint_names == m.joint_names
+    assert np.allclose(back.lower, m.lower) and np.allclose(back.upper, m.upper)
+    q = np.random.default_rng(3).uniform(m.lower, m.upper, (200, m.dof))
+    assert np.abs(fk(back, q) - fk(m, q)).max() < 1e-12
+    assert (why_no_closed_form(back) == "") == (why_no_closed_form(m) == "")
+
+
+def test_the_cli_writes_a_urdf_that_the_cli_reads(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "omx.urdf"
+    assert main(["--arm", "openmanipulator_x", "urdf", "-o", str(out)]) == 0
+    assert "wrote" in capsys.readouterr().out
+    text = out.read_text()
+    assert text.count('type="revolute"') == 4 and text.count("<cylinder") >= 8
+    assert main(["--arm", str(out), "fk", "0", "0", "0", "0"]) == 0
+    assert "x 274.00  y 0.00  z 204.50 mm" in capsys.readouterr().out
+    m = load_model(out)
+    res = ik(m, (0.2, 0.0, 0.05), -np.pi / 2)  # the closed form, recognised from the axes
+    assert res.method == "analytic" and np.abs(fk(m, res.q)[:3, 3] - [0.2, 0.0, 0.05]).max() < 1e-12
+
+
+def test_the_output_folder_is_checked_first(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    assert main(["urdf", "-o", str(tmp_path / "no" / "x.urdf")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "does not exist" in err
+
+
+ROBOT = """<robot name="r">
+  <link name="base"/><link name="a"/><link name="b"/><link name="c"/>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="a"/>
+    <origin xyz="0 0 0.1"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+  <joint name="j2" type="JTYPE"><parent link="a"/><child link="b"/>
+    <origin xyz="0.1 0 0"/><axis xyz="0 1 0"/>LIMIT</joint>
+  <joint name="j3" type="revolute"><parent link="b"/><child link="c"/>
+    <origin xyz="0.1 0 0"/><axis xyz="0 1 0"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+</robot>
+"""
+LIMIT = '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
+
+
+@pytest.mark.parametrize(
+    ("jtype", "limit", "match"),
+    [
+        ("prismatic", LIMIT, r"<joint name='j2'>: type 'prismatic' is not supported"),
+        ("revolute", "", r"<joint name='j2'>: <limit lower upper> is required"),
+        (
+            "revolute",
+            '<limit lower="1" upper="-1"/>',
+            r"<joint name='j2'>: <limit> lower must be < upper",
+        ),
+    ],
+)
+def test_errors_name_the_file_and_element(
+    tmp_path: Path, jtype: str, limit: str, match: str
+) -> None:
+    path = tmp_path / "r.urdf"
+    path.write_text(ROBOT.replace("JTYPE", jtype).replace("LIMIT", limit))
+    with pytest.raises(ModelError, match=match) as e:
+        load_model(path)
+    assert str(path) in str(e.value)
+
+
+def test_bad_xml_missing_file_and_tip(tmp_path: Path) -> None:
+    path = tmp_path / "bad.urdf"
+    path.write_text("<robot name='x'><link name='a'")
+    with pytest.raises(ModelError, match=r"bad.urdf: not valid XML"):
+        load_model(path)
+    with pytest.raises(ModelError, match="no such URDF file"):
+        load_model(tmp_path / "none.urdf")
+    good = tmp_path / "r.urdf"
+    good.write_text(ROBOT.replace("JTYPE", "continuous").replace("LIMIT", ""))
+    with pytest.raises(ModelError, match=r"<link name='zz'>: no such link"):
+        load_model(f"{good}#zz")
+    assert load_model(f"{good}#b").dof == 2 and load_model(good).dof == 3
+
+
+@pytest.mark.parametrize("name", ["openmanipulator_x", "lynx6", "puma560"])
+def test_link_capsules_join_the_frames_the_clearance_check_uses(name: str, tmp_path: Path) -> None:
+    """In a URDF viewer (here yourdfpy's scene graph) every capsule end sits on the origin
+    of a frame of fk_frames, at any pose."""
+    import yourdfpy
+
+    from armkit.kinematics import fk_frames
+
+    m = load_model(name)
+    path = tmp_path / "arm.urdf"
+    path.write_text(urdf_of(m))
+    robot = yourdfpy.URDF.load(str(path), load_meshes=False, load_collision_meshes=False)
+    q = np.random.default_rng(5).uniform(m.lower, m.upper, m.dof)
+    robot.update_cfg(q)
+    centres = []
+    for link in robot.robot.links:
+        for c in link.collisions:
+            if c.geometry.sphere is not None:
+                centres.append((robot.get_transform(link.name, "base_link") @ c.origin)[:3, 3])
+    ends = fk_frames(m, q)[:, :3, 3]
+    gaps = np.linalg.norm(np.array(centres)[:, None, :] - ends[None, :, :], axis=2)
+    assert gaps.min(axis=1).max() < 1e-9  # every sphere on a frame origin
+    assert gaps.min(axis=0).max() < 1e-9  # every frame origin has a sphere
+    assert len(centres) == 2 * len(m.link_radii)

@@ -1,0 +1,44 @@
+"""Every example script passes ``armkit check``; those that need no job also run on
+the simulator, and every job example's commands parse and check (warnings only)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from armkit.cli import main
+from armkit.script import check_file
+
+SCRIPTS = sorted((Path(__file__).parents[2] / "examples" / "scripts").glob("*.arm"))
+
+
+# Jobs whose scene or task lands in the next round of this wave: strict, so the
+# mark must go (and the test pass) the moment they do.
+PENDING = {"12_draw.arm", "13_tune.arm", "14_search_002.arm"}
+
+
+def _marked(path: Path) -> object:
+    if path.name in PENDING:
+        return pytest.param(path, marks=pytest.mark.xfail(strict=True, reason="job lands next"))
+    return path
+
+
+@pytest.mark.parametrize("path", [_marked(p) for p in SCRIPTS], ids=[p.name for p in SCRIPTS])
+def test_example_checks(path: Path) -> None:
+    result = check_file(path)
+    assert result.ok, "\n".join(d.format(result.program.source) for d in result.diagnostics)
+
+
+@pytest.mark.parametrize("path", [p for p in SCRIPTS if p.name[0] == "0"], ids=lambda p: p.name)
+def test_motion_example_runs_on_the_simulator(
+    path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    assert main(["run", str(path)]) == 0
+    assert f"done: {path}" in capsys.readouterr().out
+
+
+def test_there_is_an_example_per_feature_and_per_seed_job() -> None:
+    names = {p.stem.split("_", 1)[1] for p in SCRIPTS}
+    assert {"basic_motion", "poses", "repeat", "define", "owi_program"} <= names
+    assert {"move_item_000", "board_001", "draw", "tune", "search_002"} <= names

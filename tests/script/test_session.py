@@ -1,0 +1,125 @@
+"""The shell's session without a terminal: statements, blocks, completion, teach and repeat."""
+
+from __future__ import annotations
+
+import io
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+from script_arms import CountingDriver, counting_arm
+
+from armkit import Arm
+from armkit.script import Source, run_source
+from armkit.script._session import Session
+from armkit.script._shell import Shell, completions
+
+
+def test_statements_run_and_errors_do_not_move(
+    arm: tuple[Arm, CountingDriver], tmp_path: Path
+) -> None:
+    a, driver = arm
+    s = Session(a, base_dir=tmp_path)
+    assert s.handle("pose above = xyz 180 0 80 pitch -90").text == ""
+    assert s.handle("move above").text == ""
+    sent = driver.sent
+    reply = s.handle("move abve")
+    assert reply.text.startswith("<shell>:3:6: error: undefined pose 'abve'")
+    assert "did you mean 'above'?" in reply.text and "\n    move abve\n         ^" in reply.text
+    assert driver.sent == sent
+    assert re.match(
+        r"gripper at x 180\.\d y -?0\.\d z 80\.\d mm, pitch -(89|90)\.\d deg\njoints waist",
+        s.handle("where").text,
+    )
+
+
+def test_blocks_continue_until_end(arm: tuple[Arm, CountingDriver], tmp_path: Path) -> None:
+    a, _ = arm
+    s = Session(a, base_dir=tmp_path)
+    assert s.handle("define nod(d)").more
+    assert s.handle("  turn wrist by d").more
+    assert s.handle("  turn wrist by -d").more
+    assert not s.handle("end").more
+    assert s.handle("repeat 2").more
+    assert s.handle("nod 10").more
+    assert s.handle("end").text == ""
+    assert s.handle("define nod(d)").more  # a procedure may be defined again in the shell
+    assert s.handle("  turn wrist by d").more
+    assert s.handle("end").text == ""
+
+
+def test_headers_belong_on_the_command_line(
+    arm: tuple[Arm, CountingDriver], tmp_path: Path
+) -> None:
+    a, _ = arm
+    assert (
+        "armkit --arm NAME --driver NAME shell"
+        in Session(a, base_dir=tmp_path).handle("arm lynx6").text
+    )
+
+
+def test_completion_of_commands_poses_and_joints(
+    arm: tuple[Arm, CountingDriver], tmp_path: Path
+) -> None:
+    a, _ = arm
+    s = Session(a, base_dir=tmp_path)
+    s.handle("pose above = xyz 180 0 80 pitch -90")
+    s.handle("pose abyss = joints 0 0 0 0")
+    assert completions(s, "", "mo") == ["move", "move-item"]
+    assert completions(s, "move ", "ab") == ["above", "abyss"]
+    assert completions(s, "turn ", "w") == ["waist", "wrist"]
+    assert completions(s, "", "wr") == ["write"]
+
+
+def test_teach_write_and_run_reach_the_same_poses(tmp_path: Path) -> None:
+    a, _ = counting_arm()
+    s = Session(a, base_dir=tmp_path)
+    taught: list[np.ndarray] = []
+    for step in ("jog iiijjjff", "save grab", "jog kkkkkkuuuuv", "grip 30", "move grab",
+                 "turn elbow by -10", "move xyz 150 -60 70 pitch -45"):  # fmt: skip
+        if step.startswith("jog"):
+            s.jog(iter(step[4:] + "\n"), 5.0, lambda _text: None)
+        else:
+            reply = s.handle(step).text
+            assert not reply.startswith(("error", "<shell>")), reply
+        taught.append(a.driver.read())
+    assert s.handle("write taught.arm").text.startswith("wrote")
+    a.close()
+
+    b, _ = counting_arm()
+    replayed: list[np.ndarray] = []
+    path = tmp_path / "taught.arm"
+    hook = lambda _st, _fr: replayed.append(b.driver.read())  # noqa: E731  before each statement
+    run_source(b, Source(str(path), path.read_text()), on_step=hook)
+    replayed.append(b.driver.read())
+    for want in taught:  # every taught pose is reached again, within 0.1 deg on every joint
+        assert min(float(np.max(np.abs(np.degrees(got - want)))) for got in replayed) < 0.1
+    assert float(np.max(np.abs(np.degrees(replayed[-1] - taught[-1])))) < 0.1
+    b.close()
+
+
+def test_jog_on_the_owi_runs_the_motors_250_ms(tmp_path: Path) -> None:
+    a, driver = counting_arm("owi535")
+    s = Session(a, base_dir=tmp_path)
+    before = a.angles()["shoulder"]
+    shown: list[str] = []
+    s.jog(iter("jjls\n"), 5.0, shown.append)
+    assert a.angles()["shoulder"] > before
+    assert driver.sent == 4
+    assert s.teaching.lines[-3].startswith("joints 0.000 ")
+    assert s.teaching.lines[-2:] == ["light on", "grip open"]
+    a.close()
+
+
+def test_the_shell_loop_reads_lines_and_quits(
+    arm: tuple[Arm, CountingDriver], tmp_path: Path
+) -> None:
+    a, _ = arm
+    out = io.StringIO()
+    stdin = io.StringIO("move xyz 180 0 80 pitch -90\nmvoe\njog\nii\nwhere\nquit\nhome\n")
+    assert Shell(Session(a, base_dir=tmp_path), stdin=stdin, stdout=out).loop() == 0
+    text = out.getvalue()
+    assert "armkit x 180 y 0 z 80 p -90> " in text
+    assert "unknown command 'mvoe'" in text
+    assert a.angles()["waist"] == pytest.approx(10, abs=0.2)
