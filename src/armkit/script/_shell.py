@@ -7,10 +7,11 @@ from __future__ import annotations
 import os
 import sys
 from collections.abc import Iterator
-from contextlib import contextmanager, suppress
+from contextlib import suppress
 from pathlib import Path
 from typing import Any, TextIO
 
+from .._terminal import cbreak
 from ._grammar import BLOCKS, COMMANDS, KEYWORDS
 from ._jobs import JOBS
 from ._session import SHELL_WORDS, Session
@@ -98,7 +99,7 @@ class Shell:
             self.stdout.flush()
 
         try:
-            with _cbreak(self.stdin):
+            with cbreak(self.stdin):
                 self.session.jog(self._keys(), step, show)
         except KeyboardInterrupt:
             self.session.arm.stop()
@@ -144,21 +145,3 @@ def _save_history(readline: Any, path: Path) -> None:
         readline.write_history_file(str(path))
     except OSError:
         pass  # history is a convenience; never fail the shell over it
-
-
-@contextmanager
-def _cbreak(stdin: TextIO) -> Iterator[None]:
-    """Keys arrive one at a time without echo; the terminal comes back however the block ends."""
-    if not stdin.isatty():
-        yield
-        return
-    import termios
-    import tty
-
-    fd = stdin.fileno()
-    saved = termios.tcgetattr(fd)
-    try:
-        tty.setcbreak(fd)
-        yield
-    finally:
-        termios.tcsetattr(fd, termios.TCSADRAIN, saved)

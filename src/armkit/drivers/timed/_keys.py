@@ -7,9 +7,9 @@ import math
 import os
 import sys
 from collections.abc import Callable, Iterator
-from contextlib import contextmanager
 from typing import TextIO
 
+from ..._terminal import cbreak
 from ...kinematics import fk
 from ._driver import TimedDriver
 
@@ -68,7 +68,7 @@ def run_keys(driver: TimedDriver, stdin: TextIO = sys.stdin, out: TextIO = sys.s
     """The keyboard loop until 'q' (or end of input). The terminal is restored on every exit."""
     step_s = driver.config.teleop_step_s
     out.write(HELP + "\n")
-    with _cbreak(stdin):
+    with cbreak(stdin):
         _show(out, status_line(driver))
         for key in _keys(stdin):
             if key in ("q", "\x04"):
@@ -94,22 +94,3 @@ def _keys(stdin: TextIO) -> Iterator[str]:
         if not data:
             return
         yield data.decode("latin-1")
-
-
-@contextmanager
-def _cbreak(stdin: TextIO) -> Iterator[None]:
-    """Keys arrive one at a time without echo (Ctrl-C still interrupts); the terminal's
-    settings come back however the block is left."""
-    if not stdin.isatty():
-        yield
-        return
-    import termios
-    import tty
-
-    fd = stdin.fileno()
-    saved = termios.tcgetattr(fd)
-    try:
-        tty.setcbreak(fd)
-        yield
-    finally:
-        termios.tcsetattr(fd, termios.TCSADRAIN, saved)
