@@ -171,12 +171,22 @@ class Pen:
         holder_length: how much of it stands inside its stand [m].
         tip_offset: from the gripper's tool point to the pen's tip while held [m]:
             the tool gets this much longer.
+        diameter: where the jaws close on it (its holder) [m]: the grip width.
+        tool_lengths: (arm name, tool length [m]) pairs: the tool length while held
+            on that arm, from its last joint frame to the tip (001's pen holder on
+            the OpenManipulator-X: 0.116 m); other arms: their own + ``tip_offset``.
     """
 
     name: str
     length: float
     holder_length: float
     tip_offset: float
+    diameter: float = 0.024
+    tool_lengths: tuple[tuple[str, float], ...] = ()
+
+    def tool_length(self, arm: str, own: float) -> float:
+        """The tool length [m] of arm ``arm`` holding this pen (``own``: its own [m])."""
+        return dict(self.tool_lengths).get(arm, own + self.tip_offset)
 
 
 @dataclass(frozen=True, eq=False)
