@@ -7,6 +7,8 @@ what a pen drew with the plan (``measure``). Sheet coordinates are u, v [m];
 """
 
 from . import shapes as shapes
+from ._draw import draw as draw
+from ._draw import run_job as run_job
 from ._distance import distance_to_strokes as distance_to_strokes
 from ._distance import hausdorff as hausdorff
 from ._errors import DrawingError as DrawingError
@@ -15,6 +17,9 @@ from ._figure import Figure as Figure
 from ._fit import Fit as Fit
 from ._fit import clip_to_box as clip_to_box
 from ._fit import fit_transform as fit_transform
+from ._job import DrawJob as DrawJob
+from ._job import DrawOptions as DrawOptions
+from ._job import plan_draw as plan_draw
 from ._gcode import read_gcode as read_gcode
 from ._merge import merge_strokes as merge_strokes
 from ._metrics import DrawingMetrics as DrawingMetrics
@@ -36,5 +41,6 @@ from ._plan import read_drawing as read_drawing
 from ._segments import FigurePath as FigurePath
 from ._simplify import simplify as simplify
 from ._svg import read_svg as read_svg
+from ._tracer import PenTracer as PenTracer
 
 __all__ = ["shapes"]
