@@ -33,6 +33,7 @@ from ..motion import (
     line,
     rectangle,
 )
+from ._draw import add_file_commands
 from ._args import (
     MAX_DRAW_S,
     MAX_POINTS,
@@ -94,7 +95,7 @@ def _timing_options(p: argparse.ArgumentParser) -> None:
 
 
 def _add_draw(sub: argparse._SubParsersAction[Any]) -> None:
-    draw = sub.add_parser("draw", help="draw a circle, line, rectangle or cube with the gripper")
+    draw = sub.add_parser("draw", help="draw an SVG or G-code file with a pen, or a circle, line, rectangle or cube")
     shapes = draw.add_subparsers(dest="shape", metavar="SHAPE", required=True)
     size = number("mm", 0.0, SIZE_MM, low_open=True)
     p = shapes.add_parser("circle", help="circle (or arc) in the horizontal plane")
@@ -132,6 +133,7 @@ def _add_draw(sub: argparse._SubParsersAction[Any]) -> None:
     )
     p.add_argument("--size", type=size, required=True, metavar="MM", help="edge [mm]")
     _draw_options(p)
+    add_file_commands(shapes)
 
 
 def _draw_options(p: argparse.ArgumentParser) -> None:
