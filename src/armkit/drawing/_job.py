@@ -27,7 +27,7 @@ from ._pen import pick_pen, put_pen, stand_of
 from ._picture import check_picture_path
 from ._plan import DrawingPlan, plan_drawing
 from ._reach import nothing_reachable, reach_note, reachable_runs
-from ._rig import Rig, plan_strokes, transit
+from ._rig import Rig, plan_strokes
 from ._segments_job import Segment, count, end_q
 
 if TYPE_CHECKING:
@@ -143,15 +143,13 @@ def plan_draw(
         segments += pick_pen(rig, stand, the_pen, q0, opts.clearance)
     q = end_q(segments, q0)
     runs, cut, total = reachable_runs(
-        rig.tip, list(plan.strokes), the_sheet.to_world, scene.to_base, opts.pitch, q
+        rig.tip, list(plan.strokes), the_sheet.to_world, scene.to_base, opts.pitch, q,
+        the_sheet.normal * opts.pen_up,
     )
     if not runs:
         raise nothing_reachable(plan.source, arm.model.name)
     segments += plan_strokes(rig, runs, q)
     if stand is not None and not opts.held:
-        q = end_q(segments, q0)
-        lift = rig.tip_at(q) + the_sheet.normal * opts.clearance
-        segments += transit(rig, q, lift, "lift the pen")
         segments += put_pen(rig, stand, the_pen, end_q(segments, q0), opts.clearance)
     notes = plan.notes + reach_note(plan.source, cut, total, arm.model.name)
     plan = replace(plan, strokes=tuple(r.uv for r in runs), notes=notes)

@@ -38,11 +38,18 @@ def densify(stroke: F64, spacing: float = SPACING) -> F64:
 
 
 def reachable_runs(
-    kin: ArmModel, strokes: list[F64], to_world: object, to_base: object, pitch: float, q0: F64
+    kin: ArmModel,
+    strokes: list[F64],
+    to_world: object,
+    to_base: object,
+    pitch: float,
+    q0: F64,
+    lift: F64,
 ) -> tuple[list[Run], float, float]:
     """The reachable runs of ``strokes`` (sheet (u, v) [m]) in drawing order, the
     length cut [m] and the whole length [m]. ``to_world``: (N, 2) -> (N, 3) scene
-    points; ``to_base``: scene -> base frame; ``pitch`` [rad]; ``q0`` the seed."""
+    points; ``to_base``: scene -> base frame; ``pitch`` [rad]; ``q0`` the seed;
+    ``lift`` (3,) [m]: the pen-up offset, which must be reachable too."""
     runs: list[Run] = []
     cut = total = 0.0
     seed = q0
@@ -51,8 +58,10 @@ def reachable_runs(
         world = np.asarray(to_world(uv))  # type: ignore[operator]
         base = np.asarray(to_base(world))  # type: ignore[operator]
         ok, qs = np.zeros(len(uv), dtype=bool), np.zeros((len(uv), kin.dof))
+        above = np.asarray(to_base(world + lift))  # type: ignore[operator]
         for i, p in enumerate(base):
             try:
+                ik(kin, above[i], pitch, seed)
                 qs[i] = seed = ik(kin, p, pitch, seed).q
                 ok[i] = True
             except UnreachableError:
