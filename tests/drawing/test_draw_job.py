@@ -81,7 +81,7 @@ def test_a_collision_moves_nothing(scene: Scene, square: Path) -> None:
 
 def test_names_checked_before_anything(scene: Scene, square: Path, tmp_path: Path) -> None:
     arm = Arm("openmanipulator_x", "sim", world=World())
-    with pytest.raises(DrawingError, match="no sheet 'A4'.*A5"):
+    with pytest.raises(DrawingError, match=r"no sheet .A4..*A5"):
         draw(arm, scene, square, "A4")
     with pytest.raises(DrawingError, match="no pen 'marker'"):
         draw(arm, scene, square, pen="marker")

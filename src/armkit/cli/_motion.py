@@ -33,7 +33,6 @@ from ..motion import (
     line,
     rectangle,
 )
-from ._draw import add_file_commands
 from ._args import (
     MAX_DRAW_S,
     MAX_POINTS,
@@ -45,6 +44,7 @@ from ._args import (
     coordinate,
     number,
 )
+from ._draw import add_file_commands
 
 F64 = NDArray[np.float64]
 MODES = ("naive", "early", "timed")
@@ -95,7 +95,9 @@ def _timing_options(p: argparse.ArgumentParser) -> None:
 
 
 def _add_draw(sub: argparse._SubParsersAction[Any]) -> None:
-    draw = sub.add_parser("draw", help="draw an SVG or G-code file with a pen, or a circle, line, rectangle or cube")
+    draw = sub.add_parser(
+        "draw", help="draw an SVG or G-code file with a pen, or a circle, line, rectangle or cube"
+    )
     shapes = draw.add_subparsers(dest="shape", metavar="SHAPE", required=True)
     size = number("mm", 0.0, SIZE_MM, low_open=True)
     p = shapes.add_parser("circle", help="circle (or arc) in the horizontal plane")

@@ -7,20 +7,20 @@ what a pen drew with the plan (``measure``). Sheet coordinates are u, v [m];
 """
 
 from . import shapes as shapes
-from ._draw import draw as draw
-from ._draw import run_job as run_job
 from ._distance import distance_to_strokes as distance_to_strokes
 from ._distance import hausdorff as hausdorff
+from ._draw import draw as draw
+from ._draw import run_job as run_job
 from ._errors import DrawingError as DrawingError
 from ._errors import DrawingWarning as DrawingWarning
 from ._figure import Figure as Figure
 from ._fit import Fit as Fit
 from ._fit import clip_to_box as clip_to_box
 from ._fit import fit_transform as fit_transform
+from ._gcode import read_gcode as read_gcode
 from ._job import DrawJob as DrawJob
 from ._job import DrawOptions as DrawOptions
 from ._job import plan_draw as plan_draw
-from ._gcode import read_gcode as read_gcode
 from ._merge import merge_strokes as merge_strokes
 from ._metrics import DrawingMetrics as DrawingMetrics
 from ._metrics import PenTrace as PenTrace

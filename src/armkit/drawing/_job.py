@@ -143,7 +143,12 @@ def plan_draw(
         segments += pick_pen(rig, stand, the_pen, q0, opts.clearance)
     q = end_q(segments, q0)
     runs, cut, total = reachable_runs(
-        rig.tip, list(plan.strokes), the_sheet.to_world, scene.to_base, opts.pitch, q,
+        rig.tip,
+        list(plan.strokes),
+        the_sheet.to_world,
+        scene.to_base,
+        opts.pitch,
+        q,
         the_sheet.normal * opts.pen_up,
     )
     if not runs:

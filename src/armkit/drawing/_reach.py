@@ -3,6 +3,7 @@ point by point (IK with the pen as the tool), and cut where it cannot be reached
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -31,7 +32,7 @@ class Run:
 def densify(stroke: F64, spacing: float = SPACING) -> F64:
     """The polyline (N, D) with points added so that none are more than ``spacing`` [m] apart."""
     out = [stroke[:1]]
-    for a, b in zip(stroke[:-1], stroke[1:], strict=True):
+    for a, b in itertools.pairwise(stroke):
         n = max(1, math.ceil(float(np.linalg.norm(b - a)) / spacing))
         out.append(a + (b - a) * (np.arange(1, n + 1) / n)[:, None])
     return np.vstack(out)

@@ -15,7 +15,7 @@ from .._errors import UnreachableError
 from ..kinematics import fk, ik
 from ..model import ArmModel
 from ..motion import JointPath, PathError, plan_path
-from ..scene import Scene, Sheet, check_clear, joint_sweep
+from ..scene import Collision, Scene, Sheet, check_clear, joint_sweep
 from ._errors import DrawingError
 from ._reach import Run, densify
 from ._segments_job import JointMove, PathMove, Segment, end_q, stack
@@ -95,7 +95,7 @@ def _path(rig: Rig, points: F64, q: F64, label: str) -> JointPath:
     return path
 
 
-def _clear(rig: Rig, q: F64) -> object:
+def _clear(rig: Rig, q: F64) -> Collision | None:
     return check_clear(rig.jaws, q, rig.scene, margin=rig.margin)
 
 

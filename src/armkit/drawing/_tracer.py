@@ -57,5 +57,7 @@ class PenTracer:
             return None
         p = np.array(self._p)
         height = (p - self.sheet.origin) @ self.sheet.normal
-        inside = self.sheet.contains((p - self.sheet.origin) @ np.column_stack([self.sheet.u, self.sheet.v]))
+        inside = self.sheet.contains(
+            (p - self.sheet.origin) @ np.column_stack([self.sheet.u, self.sheet.v])
+        )
         return PenTrace(np.array(self._t), p, (height <= self.contact) & inside)
