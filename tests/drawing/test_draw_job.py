@@ -35,7 +35,9 @@ def scene() -> Scene:
     return load_scene("drawing")
 
 
-@pytest.mark.parametrize("arm_name,held", [("openmanipulator_x", False), ("lynx6", True)])
+@pytest.mark.parametrize(
+    "arm_name,held", [("openmanipulator_x", False), ("lynx6", False), ("lynx6", True)]
+)
 def test_drawn_within_the_targets(arm_name: str, held: bool, square: Path, scene: Scene) -> None:
     arm = Arm(arm_name, "sim", world=World())
     job = draw(arm, scene, square, "A5", options=DrawOptions(held=held), fit=Fit(scale=1.0))

@@ -6,9 +6,10 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .._errors import ArmkitError
 from ..motion import TimedStreaming, follow
@@ -23,9 +24,17 @@ from ._tracer import PenTracer
 
 if TYPE_CHECKING:
     from ..arm import Arm
-    from ..sim import SimArm
 
 START_TOLERANCE = math.radians(0.5)  # the arm must be where the job was planned
+
+
+class SimArm(Protocol):
+    """What the job uses of ``armkit.sim.SimArm`` (by protocol: drawing stays below sim)."""
+
+    name: str
+
+    def q(self) -> NDArray[np.float64]: ...
+    def grip_stop(self, width: float | None) -> None: ...
 
 
 def draw(

@@ -16,15 +16,20 @@ from ._rig import Rig
 from ._segments_job import GripMove, JointMove, Segment
 
 F64 = NDArray[np.float64]
-TOP = -math.pi / 2
 JAW_ROOM = 0.010  # [m] the jaws open this much wider than the holder on each side
 
 
-def grasp_point(stand: PenStand, pen: Pen) -> F64:
-    """Where the jaws' tool point holds the standing pen (scene frame) [m]: the tip
-    rests ``holder_length`` below the stand's opening, the jaws ``tip_offset`` above it."""
-    out: F64 = stand.position + np.array([0.0, 0.0, pen.tip_offset - pen.holder_length])
-    return out
+def grasp_point(scene: Scene, stand: PenStand, pen: Pen) -> F64:
+    """Where the jaws' tool point holds the pen in its stand (scene frame) [m]: the
+    tip ``holder_length`` into the stand along the pen's axis, the jaws
+    ``tip_offset`` back from the tip."""
+    out = stand.position - scene.T_world_base[:3, 3]
+    out[2] = 0.0
+    n = float(np.linalg.norm(out))
+    radial = out / n if n > 1e-9 else np.array([1.0, 0.0, 0.0])
+    axis = math.cos(stand.pitch) * radial + np.array([0.0, 0.0, math.sin(stand.pitch)])
+    point: F64 = stand.position + axis * (pen.holder_length - pen.tip_offset)
+    return point
 
 
 def opening(rig: Rig, pen: Pen) -> float:
@@ -33,23 +38,24 @@ def opening(rig: Rig, pen: Pen) -> float:
 
 
 def pick_pen(rig: Rig, stand: PenStand, pen: Pen, q: F64, clearance: float) -> list[Segment]:
-    """Open, come down on the pen in ``stand`` from the top, close, go back up."""
+    """Open, come down on the pen in ``stand`` from above, close, go back up."""
     ctx, st = _start(rig, q, clearance, f"draw: pick up {pen.name}")
-    p = grasp_point(stand, pen)
+    p = grasp_point(rig.scene, stand, pen)
     st = grip(ctx, st, opening(rig, pen), f"open to take {pen.name}")
-    st = down(ctx, st, p, TOP, f"pick {pen.name}", kin=rig.jaws, ignore=frozenset())
+    st = down(ctx, st, p, stand.pitch, f"pick {pen.name}", kin=rig.jaws, ignore=frozenset())
     st = grip(ctx, st, pen.diameter, f"close on {pen.name}")
-    st = up(ctx, st, p, TOP, f"pick {pen.name}", kin=rig.jaws, ignore=frozenset())
+    st = up(ctx, st, p, stand.pitch, f"pick {pen.name}", kin=rig.jaws, ignore=frozenset())
     return _segments(st.steps, pen)
 
 
 def put_pen(rig: Rig, stand: PenStand, pen: Pen, q: F64, clearance: float) -> list[Segment]:
-    """Come down over ``stand`` from the top with the pen, open, go back up."""
+    """Come down over ``stand`` from above with the pen, open, go back up."""
     ctx, st = _start(rig, q, clearance, f"draw: put {pen.name} back")
-    p = grasp_point(stand, pen)
-    st = down(ctx, st, p, TOP, f"put {pen.name} in {stand.name}", kin=rig.jaws, ignore=frozenset())
+    p = grasp_point(rig.scene, stand, pen)
+    label = f"put {pen.name} in {stand.name}"
+    st = down(ctx, st, p, stand.pitch, label, kin=rig.jaws, ignore=frozenset())
     st = grip(ctx, st, opening(rig, pen), f"release {pen.name}")
-    st = up(ctx, st, p, TOP, f"leave {stand.name}", kin=rig.jaws, ignore=frozenset())
+    st = up(ctx, st, p, stand.pitch, f"leave {stand.name}", kin=rig.jaws, ignore=frozenset())
     return _segments(st.steps, pen)
 
 

@@ -22,6 +22,7 @@ from ._segments_job import JointMove, PathMove, Segment, end_q, stack
 
 F64 = NDArray[np.float64]
 STEP = 0.001  # [m] between the points of a pen-up or pen-down line
+TURN = math.radians(1.0)  # a pen-up line must start where the arm is, within this
 
 
 @dataclass(frozen=True)
@@ -68,12 +69,24 @@ def transit(rig: Rig, q: F64, target: F64, label: str) -> list[Segment]:
     goal = _solve(rig, target, q, label)
     sweep = joint_sweep(q, goal[None, :])
     low = min(float(rig.height(sweep).min()), float(rig.height(q[None, :])[0]))
-    if low >= rig.pen_up / 2 - 1e-6 and _clear(rig, sweep) is None:
+    hit = _clear(rig, sweep)
+    if low >= rig.pen_up / 2 - 1e-6 and hit is None:
         return [JointMove(label, goal)]
     start = rig.tip_at(q)
     n = max(1, math.ceil(float(np.linalg.norm(target - start)) / STEP))
     points = start + (target - start) * (np.arange(0, n + 1) / n)[:, None]
-    return [PathMove(label, _path(rig, points, q, label), False)]
+    why = (
+        hit.describe()
+        if hit is not None
+        else f"the pen would come {low * 1e3:.1f} mm near the paper"
+    )
+    try:
+        path = _path(rig, points, q, label)
+    except DrawingError as exc:
+        raise DrawingError(f"{label}: in joint space {why}; in a line: {exc}") from None
+    if float(np.max(np.abs(path.q[0] - q))) > TURN:
+        raise DrawingError(f"{label}: in joint space {why}; a line would start turning the pen")
+    return [PathMove(label, path, False)]
 
 
 def _stroke(rig: Rig, run: Run, q: F64, label: str) -> PathMove:

@@ -124,7 +124,7 @@ def _board(e: Entry) -> Board:
 _CONTAINER = ("name", "position_mm", "size_mm", "wall_mm")
 _PLACE = ("name", "position_mm", "pitch_deg")
 _PEN = ("name", "length_mm", "holder_length_mm", "tip_offset_mm", "diameter_mm", "tool_length_mm")
-_STAND = ("name", "position_mm", "pen")
+_STAND = ("name", "position_mm", "pen", "pitch_deg")
 
 
 def _container(e: Entry) -> Container:
@@ -163,7 +163,10 @@ def _pen_stand(e: Entry, pens: set[str]) -> PenStand:
         raise e.fail(
             "pen", f"no pen {pen!r} in [[pens]]; pens: {', '.join(sorted(pens)) or 'none'}"
         )
-    return PenStand(e.name(), e.point_mm("position_mm"), pen)
+    pitch = e.deg("pitch_deg", -90.0)
+    if not -np.pi / 2 - 1e-9 <= pitch <= 1e-9:
+        raise e.fail("pitch_deg", "must be -90 (upright) .. 0 (lying)")
+    return PenStand(e.name(), e.point_mm("position_mm"), pen, pitch)
 
 
 def _with_cubes(scene: Scene, items: list[Entry]) -> Scene:

@@ -4,6 +4,7 @@ scene's (table's) frame: x forward, y left, z up."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -196,8 +197,12 @@ class PenStand:
     Attributes:
         position: centre of the stand's opening [m], shape (3,).
         pen: the name of the pen in it.
+        pitch: the pen's axis from the opening to its tip, above the horizontal,
+            in the vertical plane through the arm's base [rad]: -pi/2 upright, tip
+            down (a pot); 0 lying, tip pointing away from the arm (a cradle).
     """
 
     name: str
     position: F64
     pen: str
+    pitch: float = -math.pi / 2
