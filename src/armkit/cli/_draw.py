@@ -8,6 +8,10 @@ import math
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .._errors import InputError
 from ._args import number
 
 EPILOG = (
@@ -27,6 +31,41 @@ def add_file_commands(shapes: argparse._SubParsersAction[Any]) -> None:
         p.add_argument("file", metavar="FILE", help=text)
         _options(p)
         p.set_defaults(func=_run, kind=kind)
+
+
+def add_plane_option(p: argparse.ArgumentParser) -> None:
+    """``--normal NX NY NZ``: the plane of a circle or rectangle (default: horizontal)."""
+    p.add_argument(
+        "--normal", nargs=3, type=float, metavar=("NX", "NY", "NZ"),
+        help="the shape's plane by its normal (default 0 0 1, horizontal; 1 0 0: a wall "
+        "facing the arm); x and width turn with it",
+    )  # fmt: skip
+
+
+def in_plane(
+    points: NDArray[np.float64], center: ArrayLike, normal: list[float] | None
+) -> NDArray[np.float64]:
+    """Points, shape (N, 3), of a horizontal shape about ``center`` (same units) turned so
+    that its plane's normal is ``normal`` (None: as they are); InputError if it is 0."""
+    if normal is None:
+        return points
+    n = np.asarray(normal, dtype=np.float64)
+    length = float(np.linalg.norm(n))
+    if not (np.all(np.isfinite(n)) and length > 1e-9):
+        raise InputError(
+            f"--normal must be a non-zero direction, got {' '.join(f'{v:g}' for v in n)}"
+        )
+    n = n / length
+    z = np.array([0.0, 0.0, 1.0])
+    axis, c = np.cross(z, n), float(z @ n)
+    if float(np.linalg.norm(axis)) < 1e-12:
+        R = np.eye(3) if c > 0 else np.diag([1.0, -1.0, -1.0])
+    else:
+        K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+        R = np.eye(3) + K + K @ K / (1.0 + c)
+    o = np.asarray(center, dtype=np.float64)
+    out: NDArray[np.float64] = (points - o) @ R.T + o
+    return out
 
 
 def _options(p: argparse.ArgumentParser) -> None:

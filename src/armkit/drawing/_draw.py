@@ -14,6 +14,7 @@ from numpy.typing import NDArray
 from .._errors import ArmkitError
 from ..motion import TimedStreaming, follow
 from ..scene import Scene
+from ._errors import DrawingError
 from ._fit import Fit
 from ._job import DrawJob, DrawOptions, check_outputs, plan_draw
 from ._metrics import measure
@@ -61,6 +62,12 @@ def draw(
         UnreachableError: a move cannot be made (TaskError naming the step). Nothing moved.
     """
     check_outputs(preview, result)
+    if result is not None and arm.world is None:
+        raise DrawingError(
+            "a result picture needs a simulated arm (what the pen drew is measured "
+            "in the simulator); leave it out on real hardware",
+            file=str(result),
+        )
     job = plan_draw(arm, scene, file, sheet, pen, options=options, fit=fit)
     if preview is not None:
         draw_preview(job.plan, preview)
