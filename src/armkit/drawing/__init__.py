@@ -4,6 +4,11 @@ Read a source (``read_svg``, ``read_gcode``, ``shapes.figure``), plan it on a
 sheet (``plan_drawing``: flatten, fit, cut, merge, simplify, order), and compare
 what a pen drew with the plan (``measure``). Sheet coordinates are u, v [m];
 ``DrawingPlan.world_strokes(sheet)`` puts them on the sheet's plane.
+
+The job on an arm (seed 001's third task): ``draw(arm, scene, file, sheet, pen)``
+plans it whole (the pen picked up from its stand, strokes cut to reach, every
+move checked), runs it and, on a simulated arm, measures what the pen drew
+(``PenTracer``, a World observer).
 """
 
 from . import shapes as shapes

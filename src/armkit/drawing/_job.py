@@ -26,7 +26,7 @@ from ._metrics import DrawingMetrics, PenTrace
 from ._pen import pick_pen, put_pen, stand_of
 from ._picture import check_picture_path
 from ._plan import DrawingPlan, plan_drawing
-from ._reach import nothing_reachable, reach_note, reachable_runs
+from ._reach import Run, nothing_reachable, reach_note, reachable_runs
 from ._rig import Rig, plan_strokes
 from ._segments_job import Segment, count, end_q
 
@@ -142,23 +142,24 @@ def plan_draw(
     if stand is not None and not opts.held:
         segments += pick_pen(rig, stand, the_pen, q0, opts.clearance)
     q = end_q(segments, q0)
-    runs, cut, total = reachable_runs(
-        rig.tip,
-        list(plan.strokes),
-        the_sheet.to_world,
-        scene.to_base,
-        opts.pitch,
-        q,
-        the_sheet.normal * opts.pen_up,
-    )
-    if not runs:
-        raise nothing_reachable(plan.source, arm.model.name)
+    runs, note = _reachable(rig, plan, q, arm.model.name)
     segments += plan_strokes(rig, runs, q)
     if stand is not None and not opts.held:
         segments += put_pen(rig, stand, the_pen, end_q(segments, q0), opts.clearance)
-    notes = plan.notes + reach_note(plan.source, cut, total, arm.model.name)
-    plan = replace(plan, strokes=tuple(r.uv for r in runs), notes=notes)
+    plan = replace(plan, strokes=tuple(r.uv for r in runs), notes=plan.notes + note)
     return DrawJob(plan, the_sheet, the_pen, tuple(segments), q0, rig.tip, scene.T_world_base, opts)
+
+
+def _reachable(rig: Rig, plan: DrawingPlan, q: F64, arm: str) -> tuple[list[Run], tuple[str, ...]]:
+    """The plan's strokes cut to the arm's reach, and a note on what was cut."""
+    sheet = rig.sheet
+    runs, cut, total = reachable_runs(
+        rig.tip, list(plan.strokes), sheet.to_world, rig.scene.to_base, rig.pitch, q,
+        sheet.normal * rig.pen_up,
+    )  # fmt: skip
+    if not runs:
+        raise nothing_reachable(plan.source, arm)
+    return runs, reach_note(plan.source, cut, total, arm)
 
 
 def make_rig(model: ArmModel, scene: Scene, sheet: Sheet, pen: Pen, opts: DrawOptions) -> Rig:
