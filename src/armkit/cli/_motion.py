@@ -44,6 +44,7 @@ from ._args import (
     coordinate,
     number,
 )
+from ._draw import add_file_commands, add_plane_option, in_plane
 
 F64 = NDArray[np.float64]
 MODES = ("naive", "early", "timed")
@@ -94,10 +95,12 @@ def _timing_options(p: argparse.ArgumentParser) -> None:
 
 
 def _add_draw(sub: argparse._SubParsersAction[Any]) -> None:
-    draw = sub.add_parser("draw", help="draw a circle, line, rectangle or cube with the gripper")
+    draw = sub.add_parser(
+        "draw", help="draw an SVG or G-code file with a pen, or a circle, line, rectangle or cube"
+    )
     shapes = draw.add_subparsers(dest="shape", metavar="SHAPE", required=True)
     size = number("mm", 0.0, SIZE_MM, low_open=True)
-    p = shapes.add_parser("circle", help="circle (or arc) in the horizontal plane")
+    p = shapes.add_parser("circle", help="circle (or arc), horizontal or in the plane of --normal")
     p.add_argument(
         "--center", nargs=3, type=coordinate, required=True, metavar=("X", "Y", "Z"), help="[mm]"
     )
@@ -110,16 +113,18 @@ def _add_draw(sub: argparse._SubParsersAction[Any]) -> None:
         metavar="DEG",
         help="sweep [deg] (default 360; negative = clockwise)",
     )
+    add_plane_option(p)
     _draw_options(p)
     p = shapes.add_parser("line", help="straight line from X1 Y1 Z1 to X2 Y2 Z2 [mm]")
     for name in ("X1", "Y1", "Z1", "X2", "Y2", "Z2"):
         p.add_argument(name.lower(), type=coordinate, metavar=name, help=f"{name} [mm]")
     _draw_options(p)
-    p = shapes.add_parser("rect", help="rectangle in the horizontal plane")
+    p = shapes.add_parser("rect", help="rectangle, horizontal or in the plane of --normal")
     p.add_argument(
         "--center", nargs=3, type=coordinate, required=True, metavar=("X", "Y", "Z"), help="[mm]"
     )
     p.add_argument("--size", nargs=2, type=size, required=True, metavar=("W", "D"), help="[mm]")
+    add_plane_option(p)
     _draw_options(p)
     p = shapes.add_parser("cube", help="every edge of a cube in one stroke (seed 001)")
     p.add_argument(
@@ -132,6 +137,7 @@ def _add_draw(sub: argparse._SubParsersAction[Any]) -> None:
     )
     p.add_argument("--size", type=size, required=True, metavar="MM", help="edge [mm]")
     _draw_options(p)
+    add_file_commands(shapes)
 
 
 def _draw_options(p: argparse.ArgumentParser) -> None:
@@ -272,13 +278,15 @@ def _shape_points(args: argparse.Namespace) -> F64:
     if args.shape == "circle":
         c = np.array(args.center) / 1000.0
         start, sweep = math.radians(args.start), math.radians(args.sweep)
-        pts = arc(c, args.radius / 1000.0, start, sweep, sp)
+        pts = in_plane(arc(c, args.radius / 1000.0, start, sweep, sp), c, args.normal)
     elif args.shape == "line":
         a = np.array([args.x1, args.y1, args.z1]) / 1000.0
         pts = line(a, np.array([args.x2, args.y2, args.z2]) / 1000.0, sp)
     elif args.shape == "rect":
         c = np.array(args.center) / 1000.0
-        pts = rectangle(c, args.size[0] / 1000.0, args.size[1] / 1000.0, sp)
+        pts = in_plane(
+            rectangle(c, args.size[0] / 1000.0, args.size[1] / 1000.0, sp), c, args.normal
+        )
     else:
         pts = cube_edges(np.array(args.corner) / 1000.0, args.size / 1000.0, sp)
     return pts * 1000.0

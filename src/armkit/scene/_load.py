@@ -123,8 +123,8 @@ def _board(e: Entry) -> Board:
 
 _CONTAINER = ("name", "position_mm", "size_mm", "wall_mm")
 _PLACE = ("name", "position_mm", "pitch_deg")
-_PEN = ("name", "length_mm", "holder_length_mm", "tip_offset_mm")
-_STAND = ("name", "position_mm", "pen")
+_PEN = ("name", "length_mm", "holder_length_mm", "tip_offset_mm", "diameter_mm", "tool_length_mm")
+_STAND = ("name", "position_mm", "pen", "pitch_deg")
 
 
 def _container(e: Entry) -> Container:
@@ -146,7 +146,15 @@ def _pen(e: Entry) -> Pen:
     length, holder = e.positive_mm("length_mm"), e.positive_mm("holder_length_mm")
     if holder >= length:
         raise e.fail("holder_length_mm", f"must be < length_mm ({length * 1000:g})")
-    return Pen(e.name(), length, holder, e.mm("tip_offset_mm"))
+    diameter = e.positive_mm("diameter_mm", 24.0)
+    lengths = e.data.get("tool_length_mm", {})
+    if not isinstance(lengths, dict) or not all(
+        isinstance(v, int | float) and not isinstance(v, bool) and 0 < v < 1000
+        for v in lengths.values()
+    ):
+        raise e.fail("tool_length_mm", "must be a table of arm = length in mm (0..1000)")
+    tools = tuple((str(k), float(v) / 1000.0) for k, v in lengths.items())
+    return Pen(e.name(), length, holder, e.mm("tip_offset_mm"), diameter, tools)
 
 
 def _pen_stand(e: Entry, pens: set[str]) -> PenStand:
@@ -155,7 +163,10 @@ def _pen_stand(e: Entry, pens: set[str]) -> PenStand:
         raise e.fail(
             "pen", f"no pen {pen!r} in [[pens]]; pens: {', '.join(sorted(pens)) or 'none'}"
         )
-    return PenStand(e.name(), e.point_mm("position_mm"), pen)
+    pitch = e.deg("pitch_deg", -90.0)
+    if not -np.pi / 2 - 1e-9 <= pitch <= 1e-9:
+        raise e.fail("pitch_deg", "must be -90 (upright) .. 0 (lying)")
+    return PenStand(e.name(), e.point_mm("position_mm"), pen, pitch)
 
 
 def _with_cubes(scene: Scene, items: list[Entry]) -> Scene:

@@ -4,6 +4,7 @@ scene's (table's) frame: x forward, y left, z up."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -171,12 +172,22 @@ class Pen:
         holder_length: how much of it stands inside its stand [m].
         tip_offset: from the gripper's tool point to the pen's tip while held [m]:
             the tool gets this much longer.
+        diameter: where the jaws close on it (its holder) [m]: the grip width.
+        tool_lengths: (arm name, tool length [m]) pairs: the tool length while held
+            on that arm, from its last joint frame to the tip (001's pen holder on
+            the OpenManipulator-X: 0.116 m); other arms: their own + ``tip_offset``.
     """
 
     name: str
     length: float
     holder_length: float
     tip_offset: float
+    diameter: float = 0.024
+    tool_lengths: tuple[tuple[str, float], ...] = ()
+
+    def tool_length(self, arm: str, own: float) -> float:
+        """The tool length [m] of arm ``arm`` holding this pen (``own``: its own [m])."""
+        return dict(self.tool_lengths).get(arm, own + self.tip_offset)
 
 
 @dataclass(frozen=True, eq=False)
@@ -186,8 +197,12 @@ class PenStand:
     Attributes:
         position: centre of the stand's opening [m], shape (3,).
         pen: the name of the pen in it.
+        pitch: the pen's axis from the opening to its tip, above the horizontal,
+            in the vertical plane through the arm's base [rad]: -pi/2 upright, tip
+            down (a pot); 0 lying, tip pointing away from the arm (a cradle).
     """
 
     name: str
     position: F64
     pen: str
+    pitch: float = -math.pi / 2

@@ -1,0 +1,124 @@
+"""Running a planned drawing job on an arm, and the job's one call for scripts
+and the CLI: ``draw(arm, scene, file, sheet=None, pen=None, ...)``."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from pathlib import Path
+from typing import TYPE_CHECKING, Protocol
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .._errors import ArmkitError
+from ..motion import TimedStreaming, follow
+from ..scene import Scene
+from ._errors import DrawingError
+from ._fit import Fit
+from ._job import DrawJob, DrawOptions, check_outputs, plan_draw
+from ._metrics import measure
+from ._picture import preview as draw_preview
+from ._picture import result as draw_result
+from ._segments_job import GripMove, JointMove
+from ._tracer import PenTracer
+
+if TYPE_CHECKING:
+    from ..arm import Arm
+
+START_TOLERANCE = math.radians(0.5)  # the arm must be where the job was planned
+
+
+class SimArm(Protocol):
+    """What the job uses of ``armkit.sim.SimArm`` (by protocol: drawing stays below sim)."""
+
+    name: str
+
+    def q(self) -> NDArray[np.float64]: ...
+    def grip_stop(self, width: float | None) -> None: ...
+
+
+def draw(
+    arm: Arm,
+    scene: Scene,
+    file: str | Path,
+    sheet: str | None = None,
+    pen: str | None = None,
+    *,
+    options: DrawOptions | None = None,
+    fit: Fit | None = None,
+    preview: str | Path | None = None,
+    result: str | Path | None = None,
+    dry_run: bool = False,
+) -> DrawJob:
+    """Draw the SVG or G-code ``file`` on ``sheet`` with ``pen`` (None: the scene's only one).
+
+    Planned whole first (see ``DrawOptions``); ``preview`` [.png/.svg/.pdf] draws the
+    plan before moving; ``dry_run`` stops there. On a simulated arm the pen's trace
+    is measured (``DrawJob.metrics``) and ``result`` pictures what it drew.
+
+    Raises:
+        DrawingError: a bad file (naming line and column), sheet, pen or picture path.
+        UnreachableError: a move cannot be made (TaskError naming the step). Nothing moved.
+    """
+    check_outputs(preview, result)
+    if result is not None and arm.world is None:
+        raise DrawingError(
+            "a result picture needs a simulated arm (what the pen drew is measured "
+            "in the simulator); leave it out on real hardware",
+            file=str(result),
+        )
+    job = plan_draw(arm, scene, file, sheet, pen, options=options, fit=fit)
+    if preview is not None:
+        draw_preview(job.plan, preview)
+    if dry_run:
+        return job
+    job = run_job(arm, job)
+    if result is not None and job.trace is not None:
+        draw_result(job.plan, job.trace, job.sheet, result)
+    return job
+
+
+def run_job(arm: Arm, job: DrawJob) -> DrawJob:
+    """Carry ``job`` out on ``arm``; on a simulator, with its trace and metrics."""
+    off = float(np.max(np.abs(arm.driver.read() - job.q_start)))
+    if off > START_TOLERANCE:
+        raise ArmkitError(
+            f"the arm moved {math.degrees(off):.1f} deg since the drawing was planned; plan again"
+        )
+    world, sim = arm.world, _sim_arm(arm)
+    tracer = PenTracer(job.tip, job.sheet, job.T_world_base, sim.name if sim else None)
+    tracer.holding = job.options.held
+    detach = world.attach(tracer) if world is not None else None
+    try:
+        _moves(arm, job, tracer, sim)
+    finally:
+        if detach is not None:
+            detach()
+    trace = tracer.trace()
+    if trace is None or not trace.down.any():
+        return job
+    return replace(job, trace=trace, metrics=measure(job.plan, trace, job.sheet))
+
+
+def _moves(arm: Arm, job: DrawJob, tracer: PenTracer, sim: SimArm | None) -> None:
+    streamer = TimedStreaming(speed=job.options.speed)
+    for seg in job.segments:
+        if isinstance(seg, JointMove):
+            arm.driver.move(seg.q, wait=True)
+        elif isinstance(seg, GripMove):
+            tracer.holding = tracer.holding and seg.holds
+            if sim is not None:
+                sim.grip_stop(job.pen.diameter if seg.holds else None)
+            arm.grip(seg.width * 1000.0)
+            tracer.holding = seg.holds
+        else:
+            follow(arm.driver, job.tip, seg.path, streamer, arm.clock)
+
+
+def _sim_arm(arm: Arm) -> SimArm | None:
+    world = arm.world
+    if world is None:
+        return None
+    arms = world.arms()
+    return next((a for a in arms if a.model.name == arm.model.name), arms[0] if arms else None)

@@ -1,0 +1,206 @@
+"""The drawing job (seed 001's third task): ``draw(arm, scene, file, sheet, pen)``.
+
+Planned whole before anything moves: the file read and fitted onto the sheet,
+cut to what the arm reaches with the pen (a note says what was cut), the pen
+picked up from its stand (unless ``held``), every stroke and pen-up move solved
+and checked for clearance, the pen put back. Then it runs and, on a simulated
+arm, what the pen drew is measured from the World (``DrawJob.metrics``).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import TYPE_CHECKING, TypeVar
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .._errors import InputError
+from ..model import ArmModel
+from ..scene import Pen, Scene, Sheet
+from ._errors import DrawingError
+from ._fit import Fit
+from ._metrics import DrawingMetrics, PenTrace
+from ._pen import pick_pen, put_pen, stand_of
+from ._picture import check_picture_path
+from ._plan import DrawingPlan, plan_drawing
+from ._reach import Run, nothing_reachable, reach_note, reachable_runs
+from ._rig import Rig, plan_strokes
+from ._segments_job import Segment, count, end_q
+
+if TYPE_CHECKING:
+    from ..arm import Arm
+
+F64 = NDArray[np.float64]
+T = TypeVar("T", Sheet, Pen)
+
+
+@dataclass(frozen=True)
+class DrawOptions:
+    """How a drawing is planned and drawn (SI).
+
+    Attributes:
+        tolerance: the strokes stay this close to the file [m] (default 0.1 mm).
+        margin: blank border kept on the sheet [m].
+        pen_up: the tip's height above the paper between strokes [m].
+        pitch: the pen's angle above the horizontal while drawing [rad] (-60 deg:
+            tilted 30 deg from vertical, which the OpenManipulator-X and the Lynx6
+            both hold over the whole shipped sheet).
+        speed: the tip's speed along lines [m/s].
+        held: the pen is in the gripper already (no pick up, no putting back).
+        clearance: height above the stand's grasp point to come down from [m].
+    """
+
+    tolerance: float = 1e-4
+    margin: float = 0.010
+    pen_up: float = 0.010
+    pitch: float = -math.pi / 3
+    speed: float = 0.030
+    held: bool = False
+    clearance: float = 0.030
+
+    def check(self) -> DrawOptions:
+        """Self, or InputError naming the value out of range and the range."""
+        for name, value, lo, hi in (
+            ("tolerance", self.tolerance, 1e-6, 5e-3),
+            ("margin", self.margin, 0.0, 0.1),
+            ("pen_up", self.pen_up, 1e-3, 0.1),
+            ("speed", self.speed, 1e-3, 0.5),
+            ("clearance", self.clearance, 0.03, 0.5),
+            ("pitch", math.degrees(self.pitch), -90.0, 0.0),
+        ):
+            if not (math.isfinite(value) and lo <= value <= hi):
+                raise InputError(f"{name} must be {lo:g}..{hi:g} (SI; pitch deg), got {value!r}")
+        return self
+
+
+@dataclass(frozen=True)
+class DrawJob:
+    """A drawing job, planned (and, once run, measured).
+
+    Attributes:
+        plan: the strokes on the sheet, in order, cut to reach (``plan.notes`` say what was cut).
+        sheet, pen: what it draws on and with.
+        segments: every move in order (joint moves, gripper commands, paths).
+        q_start: the joints when planned [rad], shape (dof,).
+        tip: the arm's model with the pen's tip as its tool point.
+        T_world_base: the arm's base in the scene (4, 4).
+        options: how it was planned.
+        trace, metrics: what the simulated pen drew (None until run on a simulator).
+    """
+
+    plan: DrawingPlan
+    sheet: Sheet
+    pen: Pen
+    segments: tuple[Segment, ...]
+    q_start: F64
+    tip: ArmModel
+    T_world_base: F64
+    options: DrawOptions
+    trace: PenTrace | None = None
+    metrics: DrawingMetrics | None = None
+
+    def lines(self) -> list[str]:
+        """What the job does, for people: one line each."""
+        c = count(self.segments)
+        p = self.plan
+        out = [
+            f"draw {Path(p.source).name} on {self.sheet.name} with {self.pen.name}: "
+            f"{len(p.strokes)} strokes, pen down {p.pen_down_length * 1e3:.1f} mm, "
+            f"pen up {p.pen_up_length * 1e3:.1f} mm planned; "
+            + ", ".join(f"{v} {k}" for k, v in c.items())
+        ]
+        out += [f"note: {n}" for n in p.notes]
+        if self.metrics is not None:
+            out.append(f"drawn: {self.metrics}")
+        return out
+
+
+def plan_draw(
+    arm: Arm,
+    scene: Scene,
+    file: str | Path,
+    sheet: str | None = None,
+    pen: str | None = None,
+    *,
+    options: DrawOptions | None = None,
+    fit: Fit | None = None,
+) -> DrawJob:
+    """Plan the job from the arm's joints now; nothing moves (errors as ``draw``)."""
+    opts = (options or DrawOptions()).check()
+    the_sheet, the_pen = find_sheet(scene, sheet), find_pen(scene, pen)
+    stand = stand_of(scene, the_pen)
+    if stand is None and not opts.held:
+        raise DrawingError(f"no stand in scene {scene.name} holds {the_pen.name}; use held")
+    fit = replace(fit or Fit(), margin=opts.margin)
+    plan = plan_drawing(file, the_sheet, fit, opts.tolerance)
+    rig = make_rig(arm.model, scene, the_sheet, the_pen, opts)
+    q0 = arm.driver.read()
+    segments: list[Segment] = []
+    if stand is not None and not opts.held:
+        segments += pick_pen(rig, stand, the_pen, q0, opts.clearance)
+    q = end_q(segments, q0)
+    runs, note = _reachable(rig, plan, q, arm.model.name)
+    segments += plan_strokes(rig, runs, q)
+    if stand is not None and not opts.held:
+        segments += put_pen(rig, stand, the_pen, end_q(segments, q0), opts.clearance)
+    plan = replace(plan, strokes=tuple(r.uv for r in runs), notes=plan.notes + note)
+    return DrawJob(plan, the_sheet, the_pen, tuple(segments), q0, rig.tip, scene.T_world_base, opts)
+
+
+def _reachable(rig: Rig, plan: DrawingPlan, q: F64, arm: str) -> tuple[list[Run], tuple[str, ...]]:
+    """The plan's strokes cut to the arm's reach, and a note on what was cut."""
+    sheet = rig.sheet
+    runs, cut, total = reachable_runs(
+        rig.tip, list(plan.strokes), sheet.to_world, rig.scene.to_base, rig.pitch, q,
+        sheet.normal * rig.pen_up,
+    )  # fmt: skip
+    if not runs:
+        raise nothing_reachable(plan.source, arm)
+    return runs, reach_note(plan.source, cut, total, arm)
+
+
+def make_rig(model: ArmModel, scene: Scene, sheet: Sheet, pen: Pen, opts: DrawOptions) -> Rig:
+    """The arm holding ``pen``: its tip model and its jaws model."""
+    try:
+        closed = model.with_grip_width(pen.diameter)
+    except InputError:
+        g = model.gripper
+        raise DrawingError(
+            f"the {model.name} gripper closes on {g.width_min * 1e3:g}..{g.width_max * 1e3:g} mm; "
+            f"the pen {pen.name} is {pen.diameter * 1e3:g} mm wide: give the pen a holder that fits"
+        ) from None
+    length = pen.tool_length(model.name, closed.tool_length)
+    tip = closed.with_tool_length(length)
+    jaws = closed.with_tool_length(length - pen.tip_offset)
+    return Rig(tip, jaws, scene, sheet, opts.pitch, opts.pen_up, 0.0)
+
+
+def find_sheet(scene: Scene, name: str | None) -> Sheet:
+    """The scene's sheet called ``name`` (None: its only sheet); DrawingError listing them."""
+    return _named(scene.sheets, name, "sheet", scene.name)
+
+
+def find_pen(scene: Scene, name: str | None) -> Pen:
+    """The scene's pen called ``name`` (None: its only pen); DrawingError listing them."""
+    return _named(scene.pens, name, "pen", scene.name)
+
+
+def _named(items: tuple[T, ...], name: str | None, kind: str, scene: str) -> T:
+    names = ", ".join(i.name for i in items) or "none"
+    if name is None and len(items) == 1:
+        return items[0]
+    found = [i for i in items if i.name == name]
+    if not found:
+        asked = f"no {kind} {name!r}" if name is not None else f"which {kind}?"
+        raise DrawingError(f"{asked} in scene {scene}; its {kind}s: {names}")
+    return found[0]
+
+
+def check_outputs(*paths: str | Path | None) -> None:
+    """Every picture path writable (DrawingError otherwise); call before moving."""
+    for p in paths:
+        if p is not None:
+            check_picture_path(p)
