@@ -14,6 +14,8 @@ from ._layout import RangeError as RangeError
 from ._layout import Target as Target
 from ._layout import best_transpose as best_transpose
 from ._layout import map_notes as map_notes
+from ._listen import Listener as Listener
+from ._listen import Surface as Surface
 from ._load import load_score as load_score
 from ._midi import midi_bytes as midi_bytes
 from ._midi import parse_midi as parse_midi
@@ -32,6 +34,9 @@ from ._performance import Problem as Problem
 from ._performance import Strike as Strike
 from ._performance import check_performance as check_performance
 from ._plan import plan_performance as plan_performance
+from ._play import Played as Played
+from ._play import play as play
+from ._play import prepare as prepare
 from ._plot import plot_onsets as plot_onsets
 from ._predict import JointProfile as JointProfile
 from ._predict import LinearMove as LinearMove
