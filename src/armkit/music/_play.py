@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -52,12 +52,15 @@ class Played:
             on hardware (nothing listens) or in a dry run.
         dwell: time the mallet stayed below the top, per contact [s].
         stats: onset errors of ``contacts`` against the plan (None if not listened).
+        latency: the latency table it was planned with (``LatencyTable.from_run(
+            planned, contacts, latency)`` is the next calibration).
     """
 
     performance: Performance
     contacts: tuple[Contact, ...] = ()
     dwell: tuple[float, ...] = ()
     stats: OnsetStats | None = None
+    latency: LatencyTable = LatencyTable()
 
 
 def play(
@@ -90,10 +93,11 @@ def play(
         ScoreError, RangeError, PerformanceError, UnreachableError, InputError: the
             piece cannot be played as asked; nothing has moved.
     """
-    performance = prepare(arm, scene, file, on, tempo, transpose, latency, params)
+    table = latency or LatencyTable(default=predictor_for(arm, arm.model)[1])
+    performance = prepare(arm, scene, file, on, tempo, transpose, table, params)
     if dry_run:
-        return Played(performance)
-    return perform(arm, scene, performance)
+        return Played(performance, latency=table)
+    return replace(perform(arm, scene, performance), latency=table)
 
 
 def prepare(
