@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -60,7 +60,7 @@ class Played:
     contacts: tuple[Contact, ...] = ()
     dwell: tuple[float, ...] = ()
     stats: OnsetStats | None = None
-    latency: LatencyTable = LatencyTable()
+    latency: LatencyTable = field(default_factory=LatencyTable)
 
 
 def play(
