@@ -54,6 +54,7 @@ def _run(args: argparse.Namespace) -> int:
         )
         _say_plan(played.performance)
         if args.dry_run:
+            _say_strikes(played.performance)
             return 0
         played = music.play(arm, scene, Path(args.file), args.on, args.tempo, args.transpose)
     _report(played, outputs, music)
@@ -96,6 +97,16 @@ def _say_plan(perf: Any) -> None:
         f"{len(perf.moves)} servo commands, hover {min(hovers, default=0):.0f}.."
         f"{max(hovers, default=0):.0f} mm; every note reachable in time"
     )
+
+
+def _say_strikes(perf: Any) -> None:
+    """One line per strike: when [s], what, where, hover [mm], predicted speed [m/s]."""
+    for s in perf.strikes:
+        note = s.target.note
+        print(
+            f"  {s.time:8.3f} s  {note.name:7s} on {s.target.instrument:10s} hover "
+            f"{s.hover * 1000:4.1f} mm, contact at {s.speed:.2f} m/s"
+        )
 
 
 def _report(played: Any, outputs: dict[str, Path], music: Any) -> None:

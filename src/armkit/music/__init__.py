@@ -5,7 +5,10 @@ become one typed ``Score`` (onsets in seconds, MIDI pitches). Notes map to the
 bars and drums of a scene's instruments; ``plan_performance`` schedules every
 strike backwards from its note time with the arm's motion model, and lists the
 notes it cannot reach in time. Contacts (time, note, speed) become a WAV file
-and onset-error statistics.
+and onset-error statistics. ``play(arm, scene, file, on, tempo, transpose)`` is
+the job (``armkit play``, the script's ``play``): planned and checked whole, then
+sent at the planned times; in the simulator a ``Listener`` on the arm's World
+hears every contact the mallet makes.
 """
 
 from ._layout import Bars as Bars

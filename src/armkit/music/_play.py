@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 
 from .._errors import InputError, UnreachableError
 from ..model import ArmModel
-from ._layout import Instrument
+from ._layout import Instrument, RangeError
 from ._listen import Listener
 from ._load import load_score
 from ._onsets import Contact, LatencyTable, OnsetStats, onset_stats
@@ -118,20 +118,35 @@ def prepare(
     model = mallet_model(arm.model, scene)
     predictor, lag = predictor_for(arm, model)
     start = arm.driver.read()
-    perf = plan_performance(
-        score,
-        layout,
-        model,
-        predictor,
-        params=params or StrikeParams(rebound_delay=lag + REBOUND_MARGIN),
-        latency=latency or LatencyTable(default=lag),
-        start=start,
-        T_world_base=scene.T_world_base,
-        tempo=factor,
-    )
+    try:
+        perf = plan_performance(
+            score,
+            layout,
+            model,
+            predictor,
+            params=params or StrikeParams(rebound_delay=lag + REBOUND_MARGIN),
+            latency=latency or LatencyTable(default=lag),
+            start=start,
+            T_world_base=scene.T_world_base,
+            tempo=factor,
+        )
+    except RangeError as err:
+        raise _in_all(err, shift) from None
     check_performance(perf)
     check_moves(perf, scene)
     return perf
+
+
+def _in_all(err: RangeError, shift: int) -> RangeError:
+    """``err`` of a score already moved by ``shift`` semitones, its hint the total."""
+    if not shift or err.transpose is None:
+        return err
+    told, total = err.transpose, shift + err.transpose
+    message = str(err).replace(
+        f"transpose by {told} semitones (--transpose {told})",
+        f"transpose by {total} semitones in all (--transpose {total})",
+    )
+    return RangeError(message, err.notes, total)
 
 
 def _tempo(tempo: float | None) -> float:
