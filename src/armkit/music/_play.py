@@ -16,7 +16,10 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol, runtime_checkable
+
+import numpy as np
+from numpy.typing import NDArray
 
 from .._errors import InputError, UnreachableError
 from ..model import ArmModel
@@ -38,6 +41,7 @@ if TYPE_CHECKING:
 # calibration run on a real arm (``LatencyTable.from_run``) measures its own.
 SERVO_LAG = {"dynamixel": 0.010, "hobby": 0.025}
 REBOUND_MARGIN = 0.010  # the rebound is sent this long after the lagging contact [s]
+F64 = NDArray[np.float64]
 MALLET = "mallet"  # the scene's pen that is the mallet (its tip_offset lengthens the tool)
 TAIL_S = 0.3  # time listened after the last command ends [s]
 
@@ -193,16 +197,29 @@ def mallet_model(model: ArmModel, scene: Scene) -> ArmModel:
     return model.with_tool_length(model.tool_length + extra) if extra else model
 
 
+@runtime_checkable
+class _ProfileServos(Protocol):
+    """A Dynamixel driver (``drivers.dynamixel``): one time-based profile per move."""
+
+    def to_ticks(self, q: F64) -> NDArray[np.int64]: ...
+    def relax(self) -> None: ...
+
+
+@runtime_checkable
+class _GroupMoveServos(Protocol):
+    """A hobby-servo driver (``drivers.servo``, SSC-32 or Maestro): one group move per move."""
+
+    def move_servo(self, name: str, pulse_us: float, *, speed: float, wait: bool) -> None: ...
+
+
 def predictor_for(arm: Arm, model: ArmModel) -> tuple[Predictor, float]:
     """The motion model of the arm's servos (Dynamixel time-based profiles, or
-    hobby-servo group moves) and their lag [s]; InputError for a driver that cannot
-    time its moves."""
-    from ..drivers.dynamixel import DynamixelDriver
-    from ..drivers.servo import ServoArmDriver
-
-    if isinstance(arm.driver, DynamixelDriver):
+    hobby-servo group moves, told apart by the driver's methods: music does not
+    import the drivers) and their lag [s]; InputError for a driver that cannot time
+    its moves."""
+    if isinstance(arm.driver, _ProfileServos):
         return time_based_predictor(model), SERVO_LAG["dynamixel"]
-    if isinstance(arm.driver, ServoArmDriver):
+    if isinstance(arm.driver, _GroupMoveServos):
         return group_move_predictor(model), SERVO_LAG["hobby"]
     raise InputError(
         f"playing needs servos that time their moves (Dynamixel, SSC-32 or Maestro); the "
@@ -255,9 +272,7 @@ def perform(arm: Arm, scene: Scene, perf: Performance) -> Played:
 
 
 def _is_hobby(arm: Arm) -> bool:
-    from ..drivers.servo import ServoArmDriver
-
-    return isinstance(arm.driver, ServoArmDriver)
+    return isinstance(arm.driver, _GroupMoveServos)
 
 
 def _shifted(c: Contact, begin: float) -> Contact:
