@@ -38,6 +38,7 @@ bench: $(DEVSTAMP)
 	$(BIN)/python benchmarks/sim.py
 	$(BIN)/python benchmarks/view.py
 	$(BIN)/python benchmarks/shell.py
+	$(BIN)/python benchmarks/music.py
 	$(BIN)/python benchmarks/drawing.py
 
 clean:

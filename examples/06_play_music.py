@@ -7,7 +7,8 @@ time-based profile says how long the stroke from the hover pose takes to reach
 the bar, so the stroke starts that long before the note. A tune too fast for
 the arm is refused with every late note listed, and a slower tempo suggested.
 (The instruments here are small stand-ins for the scene's xylophone.toml, and
-the WAV is of the planned contacts; the simulator's own contacts come later.)
+the WAV is of the planned contacts: examples/26_play_xylophone.py plays on the
+simulated arm and writes the contacts it really made.)
 
 Run: .venv/bin/python examples/06_play_music.py
 """

@@ -29,6 +29,7 @@ COMMAND_MODULES = (
     "armkit.cli._scene",
     "armkit.cli._tasks",
     "armkit.cli._urdf",
+    "armkit.cli._play",
 )
 
 EPILOG = """\

@@ -5,7 +5,10 @@ become one typed ``Score`` (onsets in seconds, MIDI pitches). Notes map to the
 bars and drums of a scene's instruments; ``plan_performance`` schedules every
 strike backwards from its note time with the arm's motion model, and lists the
 notes it cannot reach in time. Contacts (time, note, speed) become a WAV file
-and onset-error statistics.
+and onset-error statistics. ``play(arm, scene, file, on, tempo, transpose)`` is
+the job (``armkit play``, the script's ``play``): planned and checked whole, then
+sent at the planned times; in the simulator a ``Listener`` on the arm's World
+hears every contact the mallet makes.
 """
 
 from ._layout import Bars as Bars
@@ -14,6 +17,8 @@ from ._layout import RangeError as RangeError
 from ._layout import Target as Target
 from ._layout import best_transpose as best_transpose
 from ._layout import map_notes as map_notes
+from ._listen import Listener as Listener
+from ._listen import Surface as Surface
 from ._load import load_score as load_score
 from ._midi import midi_bytes as midi_bytes
 from ._midi import parse_midi as parse_midi
@@ -32,6 +37,9 @@ from ._performance import Problem as Problem
 from ._performance import Strike as Strike
 from ._performance import check_performance as check_performance
 from ._plan import plan_performance as plan_performance
+from ._play import Played as Played
+from ._play import play as play
+from ._play import prepare as prepare
 from ._plot import plot_onsets as plot_onsets
 from ._predict import JointProfile as JointProfile
 from ._predict import LinearMove as LinearMove

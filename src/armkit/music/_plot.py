@@ -35,8 +35,9 @@ def plot_onsets(planned: Sequence[Contact], played: Sequence[Contact], path: str
     notes.scatter(
         [c.time for c in played], [c.note for c in played], s=12, color="C1", label="played"
     )
-    pitches = sorted({c.note for c in planned} | {c.note for c in played})
-    notes.set_yticks(pitches, [note_name(n) for n in pitches])
+    names = {c.note: c.instrument if c.drum else note_name(c.note) for c in [*planned, *played]}
+    pitches = sorted(names)
+    notes.set_yticks(pitches, [names[n] for n in pitches])
     notes.set_ylabel("note")
     notes.legend(loc="upper right")
     notes.set_title(

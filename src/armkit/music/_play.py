@@ -1,0 +1,279 @@
+"""The ``play`` job: a score played on the scene's instruments by an ``Arm``.
+
+The whole piece is planned and checked before anything moves (every note on a
+bar or drum, every pose in reach and clear of the table and the scene, every
+note reachable in time); then the commands are sent at their planned times on
+the arm's clock. On Dynamixel servos each move is one time-based profile at
+the move's speed (the driver sets profile velocity and acceleration per
+stroke); on hobby servos each move is one group move lasting exactly the
+predicted time. In the simulator a ``Listener`` on the arm's World hears every
+contact, so what was played can be compared with the plan.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import TYPE_CHECKING, Protocol, runtime_checkable
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .._errors import InputError, UnreachableError
+from ..model import ArmModel
+from ._layout import Instrument, RangeError
+from ._listen import Listener
+from ._load import load_score
+from ._onsets import Contact, LatencyTable, OnsetStats, onset_stats
+from ._performance import Performance, check_performance
+from ._plan import plan_performance
+from ._predict import Predictor, group_move_predictor, time_based_predictor
+from ._strike import StrikeParams
+
+if TYPE_CHECKING:
+    from ..arm import Arm
+    from ..scene import Scene
+
+# The servos' position loop: following a ramp, a servo lags it by its time constant
+# [s]. These are the simulated servos' (armkit.sim: smart 10 ms, hobby 25 ms); a
+# calibration run on a real arm (``LatencyTable.from_run``) measures its own.
+SERVO_LAG = {"dynamixel": 0.010, "hobby": 0.025}
+REBOUND_MARGIN = 0.010  # the rebound is sent this long after the lagging contact [s]
+F64 = NDArray[np.float64]
+MALLET = "mallet"  # the scene's pen that is the mallet (its tip_offset lengthens the tool)
+TAIL_S = 0.3  # time listened after the last command ends [s]
+
+
+@dataclass(frozen=True)
+class Played:
+    """A piece as planned and as played.
+
+    Attributes:
+        performance: the plan (strike times [s] from the first command).
+        contacts: the contacts heard in the simulator [s, performance time]; empty
+            on hardware (nothing listens) or in a dry run.
+        dwell: time the mallet stayed below the top, per contact [s].
+        stats: onset errors of ``contacts`` against the plan (None if not listened).
+        latency: the latency table it was planned with (``LatencyTable.from_run(
+            planned, contacts, latency)`` is the next calibration).
+    """
+
+    performance: Performance
+    contacts: tuple[Contact, ...] = ()
+    dwell: tuple[float, ...] = ()
+    stats: OnsetStats | None = None
+    latency: LatencyTable = field(default_factory=LatencyTable)
+
+
+def play(
+    arm: Arm,
+    scene: Scene,
+    file: str | Path,
+    on: str | None = None,
+    tempo: float | None = None,
+    transpose: int | None = None,
+    *,
+    dry_run: bool = False,
+    latency: LatencyTable | None = None,
+    params: StrikeParams | None = None,
+) -> Played:
+    """Play the score ``file`` (MIDI, RTTTL or a note list) on the scene's instruments.
+
+    Args:
+        arm: the arm, holding the mallet (the scene's pen ``mallet``, if any, says how
+            much longer it makes the tool [m]).
+        scene: the instruments (``armkit.scene``), in the scene frame.
+        file: the score.  on: play on this instrument only (its name in the scene).
+        tempo: speed factor (0.8 = 80 %, slower), default 1.
+        transpose: semitones to move pitched notes by, default 0.
+        dry_run: plan and check only; nothing moves.
+        latency: per-bar delays [s] from a calibration run (default: the servos' lag,
+            ``SERVO_LAG``).  params: how to strike (default: rebound just after the
+            lagging contact).
+
+    Raises:
+        ScoreError, RangeError, PerformanceError, UnreachableError, InputError: the
+            piece cannot be played as asked; nothing has moved.
+    """
+    table = latency or LatencyTable(default=predictor_for(arm, arm.model)[1])
+    performance = prepare(arm, scene, file, on, tempo, transpose, table, params)
+    if dry_run:
+        return Played(performance, latency=table)
+    return replace(perform(arm, scene, performance), latency=table)
+
+
+def prepare(
+    arm: Arm,
+    scene: Scene,
+    file: str | Path,
+    on: str | None = None,
+    tempo: float | None = None,
+    transpose: int | None = None,
+    latency: LatencyTable | None = None,
+    params: StrikeParams | None = None,
+) -> Performance:
+    """Plan and check the whole piece (see ``play``); the Performance to send."""
+    factor = _tempo(tempo)
+    shift = _transpose(transpose)
+    layout = instruments(scene, on)
+    score = load_score(file, shift)
+    model = mallet_model(arm.model, scene)
+    predictor, lag = predictor_for(arm, model)
+    start = arm.driver.read()
+    try:
+        perf = plan_performance(
+            score,
+            layout,
+            model,
+            predictor,
+            params=params or StrikeParams(rebound_delay=lag + REBOUND_MARGIN),
+            latency=latency or LatencyTable(default=lag),
+            start=start,
+            T_world_base=scene.T_world_base,
+            tempo=factor,
+        )
+    except RangeError as err:
+        raise _in_all(err, shift) from None
+    check_performance(perf)
+    check_moves(perf, scene)
+    return perf
+
+
+def _in_all(err: RangeError, shift: int) -> RangeError:
+    """``err`` of a score already moved by ``shift`` semitones, its hint the total."""
+    if not shift or err.transpose is None:
+        return err
+    told, total = err.transpose, shift + err.transpose
+    message = str(err).replace(
+        f"transpose by {told} semitones (--transpose {told})",
+        f"transpose by {total} semitones in all (--transpose {total})",
+    )
+    return RangeError(message, err.notes, total)
+
+
+def _tempo(tempo: float | None) -> float:
+    if tempo is None:
+        return 1.0
+    if not (isinstance(tempo, (int, float)) and math.isfinite(tempo) and 0.1 <= tempo <= 4.0):
+        raise InputError(
+            f"tempo must be a factor 0.1..4 (10 %..400 % of the written speed), got {tempo!r}"
+        )
+    return float(tempo)
+
+
+def _transpose(transpose: int | None) -> int:
+    if transpose is None:
+        return 0
+    if isinstance(transpose, bool) or not isinstance(transpose, int) or abs(transpose) > 48:
+        raise InputError(
+            f"transpose must be a whole number of semitones -48..48, got {transpose!r}"
+        )
+    return transpose
+
+
+def instruments(scene: Scene, on: str | None) -> Sequence[Instrument]:
+    """The scene's instruments, or only the one called ``on``."""
+    names = [i.name for i in scene.instruments]
+    if not names:
+        raise InputError(
+            f"scene {scene.name!r} has no xylophone or drum; use a scene with instruments "
+            "(--scene xylophone)"
+        )
+    if on is None:
+        return scene.instruments
+    if on not in names:
+        raise InputError(
+            f"scene {scene.name!r} has no instrument {on!r}; it has {', '.join(names)}"
+        )
+    return tuple(i for i in scene.instruments if i.name == on)
+
+
+def mallet_model(model: ArmModel, scene: Scene) -> ArmModel:
+    """``model`` with the mallet as its tool: longer by the scene's ``mallet`` pen's
+    ``tip_offset`` [m] (the tool as it is if the scene has no mallet)."""
+    extra = next((p.tip_offset for p in scene.pens if p.name == MALLET), 0.0)
+    return model.with_tool_length(model.tool_length + extra) if extra else model
+
+
+@runtime_checkable
+class _ProfileServos(Protocol):
+    """A Dynamixel driver (``drivers.dynamixel``): one time-based profile per move."""
+
+    def to_ticks(self, q: F64) -> NDArray[np.int64]: ...
+    def relax(self) -> None: ...
+
+
+@runtime_checkable
+class _GroupMoveServos(Protocol):
+    """A hobby-servo driver (``drivers.servo``, SSC-32 or Maestro): one group move per move."""
+
+    def move_servo(self, name: str, pulse_us: float, *, speed: float, wait: bool) -> None: ...
+
+
+def predictor_for(arm: Arm, model: ArmModel) -> tuple[Predictor, float]:
+    """The motion model of the arm's servos (Dynamixel time-based profiles, or
+    hobby-servo group moves, told apart by the driver's methods: music does not
+    import the drivers) and their lag [s]; InputError for a driver that cannot time
+    its moves."""
+    if isinstance(arm.driver, _ProfileServos):
+        return time_based_predictor(model), SERVO_LAG["dynamixel"]
+    if isinstance(arm.driver, _GroupMoveServos):
+        return group_move_predictor(model), SERVO_LAG["hobby"]
+    raise InputError(
+        f"playing needs servos that time their moves (Dynamixel, SSC-32 or Maestro); the "
+        f"{arm.model.name}'s {type(arm.driver).__name__} cannot land a strike on the beat"
+    )
+
+
+def check_moves(perf: Performance, scene: Scene) -> None:
+    """UnreachableError naming the note if a pose of the piece puts a link into the
+    table or a scene object (the mallet's own stroke through the bar excepted)."""
+    from ..scene import check_clear
+
+    for move in perf.moves:
+        hit = check_clear(perf.model, move.q, scene)
+        if hit is not None:
+            note = perf.strikes[move.strike].target.note
+            raise UnreachableError(
+                f"{note.name} at {note.onset:.3f} s: the {move.kind} pose puts "
+                f"{hit.describe()}; move the instrument or raise it",
+                reason="collision",
+            )
+
+
+def perform(arm: Arm, scene: Scene, perf: Performance) -> Played:
+    """Send every move of ``perf`` at its time; in the simulator, listen."""
+    world = arm.world
+    listener = Listener(perf.model, scene.instruments, scene.T_world_base)
+    detach = world.attach(listener) if world is not None else None
+    clock, servo = arm.clock, _is_hobby(arm)
+    begin = clock.now()
+    try:
+        for move in perf.moves:
+            clock.sleep(max(0.0, begin + move.t - clock.now()))
+            if servo:
+                arm.driver.move(move.q, duration=move.profile.duration, wait=False)
+            else:
+                arm.driver.move(move.q, speed=move.speed, wait=False)
+        last = max(m.t + m.profile.duration for m in perf.moves)
+        clock.sleep(max(0.0, begin + last + TAIL_S - clock.now()))
+    except BaseException:
+        arm.driver.stop()
+        raise
+    finally:
+        if detach is not None:
+            detach()
+    if world is None:
+        return Played(perf)
+    heard = tuple(_shifted(c, begin) for c in listener.contacts)
+    return Played(perf, heard, tuple(listener.dwell), onset_stats(perf.contacts(), heard))
+
+
+def _is_hobby(arm: Arm) -> bool:
+    return isinstance(arm.driver, _GroupMoveServos)
+
+
+def _shifted(c: Contact, begin: float) -> Contact:
+    return Contact(c.time - begin, c.instrument, c.note, c.speed, c.drum)
