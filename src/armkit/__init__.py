@@ -4,6 +4,7 @@ The core is SI (metres, radians); ``Arm`` and the CLI speak millimetres and degr
 """
 
 from ._errors import ArmkitError as ArmkitError
+from ._errors import ArmkitWarning as ArmkitWarning
 from ._errors import DeviceError as DeviceError
 from ._errors import InputError as InputError
 from ._errors import JointLimitError as JointLimitError

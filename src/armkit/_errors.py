@@ -38,6 +38,11 @@ class ArmkitError(Exception):
     """Base class of every error armkit raises on purpose."""
 
 
+class ArmkitWarning(UserWarning):
+    """Base class of armkit's warnings (something left out or uncertain, nothing refused);
+    the CLI prints each as one ``armkit: warning: ...`` line on stderr."""
+
+
 class ModelError(ArmkitError):
     """An arm model file is missing, malformed or inconsistent."""
 

@@ -44,7 +44,9 @@ def test_every_error_class_is_an_armkit_error() -> None:
     from armkit import _errors
 
     classes = [
-        v for v in vars(_errors).values() if isinstance(v, type) and issubclass(v, Exception)
+        v
+        for v in vars(_errors).values()
+        if isinstance(v, type) and issubclass(v, Exception) and not issubclass(v, Warning)
     ]
     assert all(issubclass(c, ArmkitError) for c in classes)
     assert issubclass(InputError, ValueError) and issubclass(_errors.ReplyError, ValueError)

@@ -6,9 +6,11 @@ import argparse
 import importlib
 import os
 import sys
+import warnings
 from collections.abc import Sequence
+from typing import TextIO
 
-from .._errors import ArmkitError, InputError
+from .._errors import ArmkitError, ArmkitWarning, InputError
 from ._parser import Parser
 
 # Modules that add sub-commands: each defines ``add_commands(sub)`` and its
@@ -97,6 +99,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = parser.parse_args(words)
     except SystemExit as exc:  # --help, or a mistake argparse found (one line printed)
         return exc.code if isinstance(exc.code, int) else 2
+    with warnings.catch_warnings():
+        warnings.showwarning = _show_warning
+        return _run(parser, args)
+
+
+def _run(parser: argparse.ArgumentParser, args: argparse.Namespace) -> int:
+    """Do the parsed command: every refusal one line on stderr and a non-zero exit."""
     try:
         _check_globals(args)
         if args.command is None:
@@ -117,6 +126,21 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("armkit: interrupted", file=sys.stderr)
         return 130
+
+
+def _show_warning(
+    message: Warning | str,
+    category: type[Warning],
+    filename: str,
+    lineno: int,
+    file: TextIO | None = None,
+    line: str | None = None,
+) -> None:
+    """armkit's own warnings as one ``armkit: warning: ...`` line; others as Python shows them."""
+    if issubclass(category, ArmkitWarning):
+        print(f"armkit: warning: {_one_line(Exception(message))}", file=file or sys.stderr)
+    else:
+        sys.stderr.write(warnings.formatwarning(message, category, filename, lineno, line))
 
 
 def _silence_stdout() -> None:

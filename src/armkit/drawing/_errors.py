@@ -7,7 +7,7 @@ column (1-based) of the problem, so one line at the CLI says where to look.
 
 from __future__ import annotations
 
-from .._errors import ArmkitError
+from .._errors import ArmkitError, ArmkitWarning
 
 
 class DrawingError(ArmkitError, ValueError):
@@ -29,5 +29,5 @@ class DrawingError(ArmkitError, ValueError):
         self.file, self.line, self.column = file, line, column
 
 
-class DrawingWarning(UserWarning):
+class DrawingWarning(ArmkitWarning):
     """Something in a drawing was left out (text in an SVG, a part cut at the sheet's edge)."""

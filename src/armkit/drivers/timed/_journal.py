@@ -9,7 +9,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from ..._clock import Clock
-from ..._errors import DeviceError
+from ..._errors import ArmkitWarning, DeviceError
 from ._motors import Motors, Run
 from ._safety import SignalGate
 from ._state import ArmState, save
@@ -17,7 +17,7 @@ from ._state import ArmState, save
 Until = tuple[Callable[[], object], float]  # (wait, watchdog timeout [s])
 
 
-class UncertainEstimateWarning(UserWarning):
+class UncertainEstimateWarning(ArmkitWarning):
     """A move starts from joint angles that are only an uncertain estimate."""
 
 
