@@ -6,7 +6,9 @@ Each task is planned whole before anything moves; ``--dry-run`` prints the plan.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import math
+from collections.abc import Callable, Iterator
 from typing import Any
 
 from .._errors import ArmkitError, InputError
@@ -87,18 +89,47 @@ def _run(args: argparse.Namespace) -> int:
 
     scene = scene_of(args)
     options = {"clearance": args.clearance, "calibration": args.calibration, "dry_run": True}
-    with _open_arm(args, scene) as arm:
+    with _open_arm(args, scene) as arm, _objects(args, arm, scene) as save:
         plan = _plan(args, tasks, arm, scene, options)
         if args.dry_run:
             print(plan)
             return 0
         print(plan.lines()[0])
-        tasks.run_plan(
+        save()
+        tasks.run_checked(
             arm, plan, say=lambda k, step: print(f"{k:4d}/{len(plan.steps)}  {step.label}")
         )
         for line in plan.lines()[len(plan.steps) + 1 :]:
             print(line)
     return 0
+
+
+@contextlib.contextmanager
+def _objects(args: argparse.Namespace, arm: Any, scene: Any) -> Iterator[Callable[[], None]]:
+    """On a simulated arm, the scene's objects in its world: with ``--driver sim`` and no
+    port, kept between runs in their state file (like the arm's joints), locked while
+    in use and written back once the task has started moving. Yields ``save``: call it
+    when the first motion is about to happen."""
+    from .._lock import exclusive
+    from ..scene._state import load_physics, save_physics, scene_state_file
+    from ..sim._state import state_key
+    from ..tasks import attach_scene
+
+    if arm.world is None or args.driver != "sim" or args.port is not None:
+        attach_scene(arm, scene)
+        yield lambda: None
+        return
+    path = scene_state_file(scene, state_key(arm.model))
+    lock = exclusive(path, f"the simulated objects of {scene.name}")
+    moved: list[bool] = []
+    try:
+        physics = load_physics(path, scene)
+        attach_scene(arm, scene, physics)
+        yield lambda: moved.append(True)
+    finally:
+        if moved:
+            save_physics(path, physics)
+        lock.release()
 
 
 def _plan(

@@ -12,6 +12,10 @@ from ._jobs import place as place
 from ._jobs import plan_task as plan_task
 from ._jobs import rotate_cube as rotate_cube
 from ._jobs import stack as stack
+from ._live import TaskFailed as TaskFailed
+from ._live import attach_scene as attach_scene
+from ._live import attached as attached
+from ._live import run_checked as run_checked
 from ._plan import Plan as Plan
 from ._plan import Step as Step
 from ._plan import TaskError as TaskError
