@@ -21,6 +21,13 @@ EPILOG = (
 )
 
 
+SEARCH_EPILOG = (
+    "Needs --scene (shipped: search_002). The distance sensor (a Sharp GP2D120 on the "
+    "hand, 4..30 cm) is read through the SSC-32's VA..VD on a Lynx6, else a serial ADC "
+    "board (emulated on a pty in the simulator). Angles in degrees, distances in mm."
+)
+
+
 def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     """Add pick, place, move-item, rotate-cube and stack."""
     p = _task(sub, "pick", "pick a cube up (001: from the top where reachable, else the side)")
@@ -53,6 +60,38 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         "cubes", nargs="+", metavar="CUBE", help="two or more cubes, the first stays below"
     )
     p.add_argument("--rotate", choices=("forward", "backward", "none"), default="forward", help="how to turn them first (default forward)")  # fmt: skip
+    _search_command(sub)
+
+
+def _search_command(sub: argparse._SubParsersAction[Any]) -> None:
+    text = "002: scan with the distance sensor, pick up what it finds, drop it in a container"
+    p: argparse.ArgumentParser = sub.add_parser(
+        "search", help=text, description=text + ".", epilog=SEARCH_EPILOG
+    )
+    for flag, default, what in (("--from", 30.0, "first"), ("--to", 120.0, "last"), ("--step", 5.0, "coarse step of the")):  # fmt: skip
+        p.add_argument(flag, dest=flag[2:], type=float, default=default, metavar="DEG", help=f"{what} scan angle [deg] (002's base servo: 90 straight ahead; default {default:g})")  # fmt: skip
+    p.add_argument("--into", metavar="NAME", help="the container to drop it in (default: the scene's only one)")  # fmt: skip
+    p.add_argument("--adc-port", metavar="PORT", help="the serial ADC board the sensor is wired to (arms without an SSC-32, real hardware)")  # fmt: skip
+    p.add_argument("--channel", type=int, default=0, choices=range(4), help="the sensor's analog input, 0..3 (SSC-32 VA..VD; default 0)")  # fmt: skip
+    p.set_defaults(func=_search)
+
+
+def _search(args: argparse.Namespace) -> int:
+    import math
+
+    from .. import tasks
+    from ._scene import scene_of
+
+    scene = scene_of(args)
+    angles = {k: math.radians(getattr(args, k)) for k in ("from", "to", "step")}
+    with _open_arm(args, scene) as arm, _objects(args, arm, scene) as save:
+        save()
+        result = tasks.search(
+            arm, scene, start=angles["from"], stop=angles["to"], step=angles["step"],
+            into=args.into, channel=args.channel, port=args.adc_port,
+        )  # fmt: skip
+        print("\n".join(result.lines()))
+    return 0
 
 
 def _task(sub: argparse._SubParsersAction[Any], name: str, text: str) -> argparse.ArgumentParser:

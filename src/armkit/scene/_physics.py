@@ -26,6 +26,7 @@ F64 = NDArray[np.float64]
 EventKind = Literal["grasped", "missed", "placed", "dropped", "tipped"]
 WIDTH_EPS = 0.2e-3  # [m]: grip changes smaller than this are not a motion
 NEAR = 0.06  # [m]: a closing this close to a cube that misses it is reported
+STILL = 1e-5  # [rad]: joints moving less than this per step are standing still
 
 
 class SimArmView(Protocol):
@@ -102,7 +103,7 @@ class ScenePhysics:
             self._stop_pending = False
             sim.grip_stop(self.holding.width)
         width, q = sim.grip(), sim.q()
-        if self._width is None or self._q is None or float(np.max(np.abs(q - self._q))) > 1e-9:
+        if self._width is None or self._q is None or float(np.max(np.abs(q - self._q))) > STILL:
             self._opened = width  # the jaws come round an object at the opening they move with
         if self._width is None:
             self._width = width

@@ -20,5 +20,7 @@ from ._plan import Plan as Plan
 from ._plan import Step as Step
 from ._plan import TaskError as TaskError
 from ._run import run_plan as run_plan
+from ._search import SearchResult as SearchResult
+from ._search import search as search
 from ._targets import Target as Target
 from ._targets import resolve as resolve

@@ -13,6 +13,7 @@ from ._plan import Plan, Step
 
 if TYPE_CHECKING:
     from ..arm import Arm
+    from ..sim import SimArm
 
 START_TOLERANCE = math.radians(0.5)  # the arm must be where the plan starts
 GRIP_S = 0.5  # [s] time given to a real gripper to open or close
@@ -39,16 +40,16 @@ def run_plan(arm: Arm, plan: Plan, say: Callable[[int, Step], None] | None = Non
             if say is not None:
                 say(k, step)
             if step.grip is not None:
-                _settle(arm)
+                settle(arm)
                 arm.grip(step.grip * 1000.0)
-                _settle(arm)
+                settle(arm)
             elif step.q is not None:
                 arm.move_joints(np.degrees(step.q).tolist())  # the table is checked again
     finally:
         arm.scene = scene
 
 
-def _settle(arm: Arm) -> None:
+def settle(arm: Arm) -> None:
     """Wait until the arm and its gripper stand still: on a simulated arm until its
     truth is at rest (at most SETTLE_MAX_S of simulated time), else GRIP_S."""
     world = arm.world
@@ -64,3 +65,11 @@ def _settle(arm: Arm) -> None:
     while not sim.at_rest() and waited < SETTLE_MAX_S:
         arm.clock.sleep(0.01)
         waited += 0.01
+
+
+def sim_arm_of(arm: Arm) -> SimArm | None:
+    """The simulated arm (its truth) behind ``arm``, or None on hardware."""
+    world = arm.world
+    if world is None:
+        return None
+    return next((a for a in world.arms() if a.model.name == arm.model.name), None)
