@@ -82,3 +82,33 @@ def test_the_cli_search_keeps_the_object_in_the_bin(capsys: pytest.CaptureFixtur
     assert "found at 70.5 deg" in capsys.readouterr().out
     assert main(["--arm", "lynx6", "--scene", "search_002", "search"]) == 0
     assert "nothing found" in capsys.readouterr().out
+
+
+def test_the_simulated_ssc32_answers_va_to_vd_with_one_byte_each() -> None:
+    from armkit.sim.ssc32 import SimSSC32
+
+    board = SimSSC32()
+    board.analog = {0: lambda: 2.5, 2: lambda: 7.0}
+    board.receive(b"VA VB VC\r", 0.0)
+    assert board.outbox.take(1.0) == bytes([128, 0, 255])
+    board.receive(b"VE\r", 1.0)
+    assert board.errors
+
+
+@pytest.mark.parametrize("arm_name", ["lynx6", "openmanipulator_x"])
+def test_reach_comes_near_the_hand_and_shakes(arm_name: str) -> None:
+    world = World()
+    arm = Arm(arm_name, "sim", world=world)
+    scene = load_scene("reach_003")
+    result = tasks.reach(arm, scene, near=0.06, shakes=2)
+    hand = scene.hand("hand")
+    assert result.found and result.angle is not None and result.distance is not None
+    expected = math.degrees(math.atan2(hand.position[1], hand.position[0])) + 90.0
+    assert math.degrees(result.angle) == pytest.approx(expected, abs=2.0)
+    assert 0.055 <= result.distance <= 0.062 and result.steps > 0 and result.shakes == 2
+    assert np.allclose(world.arm().q(), arm.model.home, atol=math.radians(0.5))
+
+
+def test_the_cli_reach_refuses_bad_values_before_moving(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["--scene", "reach_003", "reach", "--near", "10"]) == 2
+    assert "near 40..300 mm" in capsys.readouterr().err

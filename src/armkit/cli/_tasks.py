@@ -22,7 +22,7 @@ EPILOG = (
 
 
 SEARCH_EPILOG = (
-    "Needs --scene (shipped: search_002). The distance sensor (a Sharp GP2D120 on the "
+    "Needs --scene (shipped: search_002, reach_003). The distance sensor (a Sharp GP2D120 on the "
     "hand, 4..30 cm) is read through the SSC-32's VA..VD on a Lynx6, else a serial ADC "
     "board (emulated on a pty in the simulator). Angles in degrees, distances in mm."
 )
@@ -74,11 +74,34 @@ def _search_command(sub: argparse._SubParsersAction[Any]) -> None:
     p.add_argument("--adc-port", metavar="PORT", help="the serial ADC board the sensor is wired to (arms without an SSC-32, real hardware)")  # fmt: skip
     p.add_argument("--channel", type=int, default=0, choices=range(4), help="the sensor's analog input, 0..3 (SSC-32 VA..VD; default 0)")  # fmt: skip
     p.set_defaults(func=_search)
+    text = "003: find a hand held out with the distance sensor, come near it and shake it"
+    p = sub.add_parser("reach", help=text, description=text + ".", epilog=SEARCH_EPILOG)
+    p.add_argument("--height", type=float, default=110.0, metavar="MM", help="height of the scan, the hand's [mm] (default 110)")  # fmt: skip
+    p.add_argument("--near", type=float, default=60.0, metavar="MM", help="stop when the sensor reads this [mm], 40..300 (default 60)")  # fmt: skip
+    p.add_argument("--shakes", type=int, default=3, metavar="N", help="up-and-down shakes, 0..20 (default 3)")  # fmt: skip
+    p.add_argument("--adc-port", metavar="PORT", help="the serial ADC board the sensor is wired to (arms without an SSC-32, real hardware)")  # fmt: skip
+    p.add_argument("--channel", type=int, default=0, choices=range(4), help="the sensor's analog input, 0..3 (default 0)")  # fmt: skip
+    p.set_defaults(func=_reach)
+
+
+def _reach(args: argparse.Namespace) -> int:
+    from .. import tasks
+    from ._scene import scene_of
+
+    scene = scene_of(args)
+    if not math.isfinite(args.height) or not 0.0 < args.height <= 500.0:
+        raise InputError(f"--height must be 0..500 mm, got {args.height}")
+    with _open_arm(args, scene) as arm, _objects(args, arm, scene) as save:
+        save()
+        result = tasks.reach(
+            arm, scene, height=args.height / 1000.0, near=args.near / 1000.0,
+            shakes=args.shakes, channel=args.channel, port=args.adc_port,
+        )  # fmt: skip
+        print("\n".join(result.lines()))
+    return 0
 
 
 def _search(args: argparse.Namespace) -> int:
-    import math
-
     from .. import tasks
     from ._scene import scene_of
 

@@ -65,6 +65,10 @@ def boxes(scene: Scene) -> list[tuple[F64, F64]]:
         T[:3, :3] = [[cy, -sy, 0.0], [sy, cy, 0.0], [0.0, 0.0, 1.0]]
         T[:3, 3] = b.origin - np.array([0.0, 0.0, b.thickness / 2.0])
         out.append((T, np.array([b.size[0] / 2.0, b.size[1] / 2.0, b.thickness / 2.0])))
+    for h in scene.hands:
+        T = np.eye(4)
+        T[:3, 3] = h.position
+        out.append((T, np.array(h.size) / 2.0))
     for k in scene.containers:
         T = np.eye(4)
         T[:3, 3] = k.position + np.array([0.0, 0.0, k.size[2] / 2.0])

@@ -19,6 +19,8 @@ from ._live import run_checked as run_checked
 from ._plan import Plan as Plan
 from ._plan import Step as Step
 from ._plan import TaskError as TaskError
+from ._reach import ReachResult as ReachResult
+from ._reach import reach as reach
 from ._run import run_plan as run_plan
 from ._search import SearchResult as SearchResult
 from ._search import search as search

@@ -15,7 +15,7 @@ from numpy.typing import NDArray
 from ..kinematics import fk
 from ..model import ArmModel
 from ..scene import Scene
-from ..sensing import DistanceSensor, SensorMount
+from ..sensing import RANGE, DistanceSensor, SensorMount, volts
 from ._plan import TaskError
 from ._run import settle
 from ._state import Context, Options, State, moves, solve
@@ -25,6 +25,8 @@ if TYPE_CHECKING:
 
 F64 = NDArray[np.float64]
 HEIGHT = 0.015  # [m] the beam's height above the table: across a 25 mm object
+FINE = math.radians(1.0)  # 002: scan back in 1 deg steps
+AVERAGE = 5  # readings averaged for the distance
 RADII = (0.11, 0.13, 0.09)  # [m] tried in order
 PITCHES = tuple(math.radians(p) for p in (-60.0, -45.0, -75.0, -30.0, 0.0))
 AHEAD = math.radians(90.0)  # 002's base servo angle looking straight ahead
@@ -40,18 +42,20 @@ class Scan:
     radius: float
     pitch: float
     mount: SensorMount
+    height: float = HEIGHT
     readings: list[tuple[float, float]] = field(default_factory=list)
 
-    def point(self, angle: float) -> F64:
-        """The tool point at 002 servo angle ``angle`` [rad], scene frame [m], (3,)."""
-        az = angle - AHEAD
-        base = np.array([self.radius * math.cos(az), self.radius * math.sin(az), HEIGHT])
+    def point(self, angle: float, radius: float | None = None, dz: float = 0.0) -> F64:
+        """The tool point at 002 servo angle ``angle`` [rad] (``radius`` [m] out, None:
+        the scan's; ``dz`` [m] higher), scene frame [m], (3,)."""
+        az, r = angle - AHEAD, self.radius if radius is None else radius
+        base = np.array([r * math.cos(az), r * math.sin(az), self.height + dz])
         out: F64 = self.scene.to_scene(base + np.array([0.0, 0.0, self.scene.table_z]))
         return out
 
-    def joints(self, angle: float, seed: F64) -> F64:
-        """The joints [rad] (dof,) of the scan pose at ``angle``."""
-        base = self.scene.to_base(self.point(angle))
+    def joints(self, angle: float, seed: F64, radius: float | None = None, dz: float = 0.0) -> F64:
+        """The joints [rad] (dof,) of the scan pose at ``angle`` (see ``point``)."""
+        base = self.scene.to_base(self.point(angle, radius, dz))
         return solve(
             self.kin, base, self.pitch, seed, "search", f"scan at {math.degrees(angle):.0f} deg"
         )
@@ -77,8 +81,52 @@ class Scan:
         return np.array([centre[0], centre[1], self.scene.table_z])
 
 
-def plan_scan(arm: Arm, scene: Scene, start: float, stop: float, step: float) -> Scan:
-    """The first scan pose (RADII x PITCHES) whose every coarse pose is reachable and
+def locate(
+    arm: Arm, scan: Scan, sensor: DistanceSensor, start: float, stop: float, step: float
+) -> tuple[float, float] | None:
+    """002: scan from ``start`` to ``stop`` every ``step`` [rad] for a local maximum of
+    the output, back in 1 deg steps over it, align with its middle and measure:
+    (angle [rad], distance [m]), or None if nothing is within range."""
+    arm.grip(arm.model.gripper.width_max * 1000.0)  # the jaws as the scan was planned
+    coarse = scan.sweep(arm, sensor, np.arange(start, stop + step / 2, step) if stop > start
+                        else np.arange(start, stop - step / 2, -step))  # fmt: skip
+    floor = volts(RANGE[1])
+    best = max(range(len(coarse)), key=lambda k: coarse[k][1])
+    if coarse[best][1] < floor:
+        return None
+    background = float(np.median([v for _, v in coarse]))
+    half = (coarse[best][1] + background) / 2.0
+    lo, hi = best, best
+    while lo > 0 and coarse[lo - 1][1] >= half:
+        lo -= 1
+    while hi < len(coarse) - 1 and coarse[hi + 1][1] >= half:
+        hi += 1
+    a, b = coarse[min(hi + 1, len(coarse) - 1)][0], coarse[max(lo - 1, 0)][0]
+    n = max(2, round(abs(b - a) / FINE) + 1)
+    fine = scan.sweep(arm, sensor, np.linspace(a, b, n))
+    angle = _middle(fine, background)
+    scan.sweep(arm, sensor, np.array([angle]))
+    dist = [d for d in (sensor.distance() for _ in range(AVERAGE)) if d is not None]
+    if not dist:
+        return None
+    d = float(np.median(dist))
+    return angle, d
+
+
+def _middle(readings: list[tuple[float, float]], background: float) -> float:
+    """The middle of the angles [rad] where the output is above half way from the
+    ``background`` [V] to its peak: the object's direction (its nearest point is not,
+    for a cube seen at a slant)."""
+    top = max(v for _, v in readings)
+    half = (top + background) / 2.0
+    seen = [a for a, v in readings if v >= half]
+    return (min(seen) + max(seen)) / 2.0
+
+
+def plan_scan(
+    arm: Arm, scene: Scene, start: float, stop: float, step: float, height: float = HEIGHT
+) -> Scan:
+    """The first scan pose (RADII x PITCHES, the beam ``height`` [m] up) whose every coarse pose is reachable and
     whose moves through them are clear; nothing moves.
 
     Raises:
@@ -92,7 +140,7 @@ def plan_scan(arm: Arm, scene: Scene, start: float, stop: float, step: float) ->
     first: TaskError | None = None
     for radius in RADII:
         for pitch in PITCHES:
-            scan = Scan(kin, scene, radius, pitch, SensorMount(tilt=-pitch))
+            scan = Scan(kin, scene, radius, pitch, SensorMount(tilt=-pitch), height=height)
             points = np.array([scan.point(float(a)) for a in angles])
             labels = [f"scan at {math.degrees(a):.0f} deg" for a in angles]
             try:

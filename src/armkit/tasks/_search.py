@@ -15,22 +15,20 @@ from numpy.typing import NDArray
 
 from .._errors import InputError
 from ..scene import Container, Cube, Scene
-from ..sensing import RANGE, DistanceSensor, install_sensor, open_sensor, volts
+from ..sensing import install_sensor, open_sensor
 from ._choose import pick_any
 from ._jobs import plan_task
 from ._live import TaskFailed, attached, live_scene, run_checked
 from ._plan import Plan, TaskError, cube_text
 from ._run import sim_arm_of
-from ._scan import Scan, plan_scan
+from ._scan import locate, plan_scan
 from ._state import Context, State, down, grip
 
 if TYPE_CHECKING:
     from ..arm import Arm
 
 F64 = NDArray[np.float64]
-FINE = math.radians(1.0)  # 002: scan back in 1 deg steps
 OBJECT_SIZE = 0.025  # [m] 002's object when the scene has no cube to say
-AVERAGE = 5  # readings averaged for the distance
 DROP_HEIGHT = 0.015  # [m] above the container's rim
 DROP_PITCHES = tuple(math.radians(p) for p in (-90.0, -75.0, -60.0, -45.0, -30.0, 0.0))
 
@@ -100,7 +98,7 @@ def search(
             for the scan; the arm stops after it for the pick).
         ValueError: bad angles or container.
     """
-    _check_angles(start, stop, step)
+    check_angles(start, stop, step)
     scene = live_scene(arm, scene, False, "search")
     bin_name = into or _only_container(scene)
     scene.container(bin_name)
@@ -110,11 +108,12 @@ def search(
         install_sensor(sim, physics, scan.mount, channel=channel, seed=seed)
     lock = None if arm.world is None else arm.world.lock
     with open_sensor(arm, channel, port, lock) as sensor:
-        found = _locate(arm, scan, sensor, start, stop, step)
+        found = locate(arm, scan, sensor, start, stop, step)
         via = sensor.via
     if found is None:
         return SearchResult(False, None, None, None, tuple(scan.readings), None, _rest(arm), via)
-    angle, dist, position = found
+    angle, dist = found
+    position = scan.object_at(arm, angle, dist, _size(arm))
     plan = _fetch(arm, scene, position, bin_name)
     run_checked(arm, plan, poses=False, allow=("dropped", "tipped"))
     _check_inside(arm, plan, scene.container(bin_name))
@@ -122,7 +121,7 @@ def search(
     return SearchResult(True, angle, dist, position, readings, plan, _rest(arm), via)
 
 
-def _check_angles(start: float, stop: float, step: float) -> None:
+def check_angles(start: float, stop: float, step: float) -> None:
     values = (start, stop, step)
     inside = all(0.0 <= a <= math.pi for a in (start, stop))
     if not all(math.isfinite(v) for v in values) or not inside or not 0 < step <= abs(stop - start):
@@ -138,46 +137,6 @@ def _only_container(scene: Scene) -> str:
         names = ", ".join(c.name for c in scene.containers) or "none"
         raise InputError(f"search: say which container to drop into (into NAME); scene has {names}")
     return scene.containers[0].name
-
-
-def _locate(
-    arm: Arm, scan: Scan, sensor: DistanceSensor, start: float, stop: float, step: float
-) -> tuple[float, float, F64] | None:
-    """Coarse scan, fine scan back, align and measure: (angle, distance, position)."""
-    arm.grip(arm.model.gripper.width_max * 1000.0)  # the jaws as the scan was planned
-    coarse = scan.sweep(arm, sensor, np.arange(start, stop + step / 2, step) if stop > start
-                        else np.arange(start, stop - step / 2, -step))  # fmt: skip
-    floor = volts(RANGE[1])
-    best = max(range(len(coarse)), key=lambda k: coarse[k][1])
-    if coarse[best][1] < floor:
-        return None
-    background = float(np.median([v for _, v in coarse]))
-    half = (coarse[best][1] + background) / 2.0
-    lo, hi = best, best
-    while lo > 0 and coarse[lo - 1][1] >= half:
-        lo -= 1
-    while hi < len(coarse) - 1 and coarse[hi + 1][1] >= half:
-        hi += 1
-    a, b = coarse[min(hi + 1, len(coarse) - 1)][0], coarse[max(lo - 1, 0)][0]
-    n = max(2, round(abs(b - a) / FINE) + 1)
-    fine = scan.sweep(arm, sensor, np.linspace(a, b, n))
-    angle = _middle(fine, background)
-    scan.sweep(arm, sensor, np.array([angle]))
-    dist = [d for d in (sensor.distance() for _ in range(AVERAGE)) if d is not None]
-    if not dist:
-        return None
-    d = float(np.median(dist))
-    return angle, d, scan.object_at(arm, angle, d, _size(arm))
-
-
-def _middle(readings: list[tuple[float, float]], background: float) -> float:
-    """The middle of the angles [rad] where the output is above half way from the
-    ``background`` [V] to its peak: the object's direction (its nearest point is not,
-    for a cube seen at a slant)."""
-    top = max(v for _, v in readings)
-    half = (top + background) / 2.0
-    seen = [a for a, v in readings if v >= half]
-    return (min(seen) + max(seen)) / 2.0
 
 
 def _size(arm: Arm) -> float:
