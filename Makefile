@@ -39,6 +39,7 @@ bench: $(DEVSTAMP)
 	$(BIN)/python benchmarks/view.py
 	$(BIN)/python benchmarks/shell.py
 	$(BIN)/python benchmarks/drawing.py
+	$(BIN)/python benchmarks/tasks.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info src/*.egg-info .pytest_cache .mypy_cache .ruff_cache
