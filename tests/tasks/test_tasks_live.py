@@ -113,3 +113,11 @@ def test_the_cli_keeps_the_objects_between_runs(capsys: pytest.CaptureFixture[st
 def test_state_file_names_the_scene_and_arm() -> None:
     path = scene_state_file(load_scene("board_001"), "lynx6")
     assert path.name.startswith("scene_board_001-") and path.name.endswith("_lynx6.json")
+
+
+def test_scene_reset_forgets_the_kept_objects(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["--scene", "board_001", "pick", "green"]) == 0
+    assert main(["scene", "reset", "board_001"]) == 0
+    assert "1 kept state(s) forgotten" in capsys.readouterr().out
+    assert main(["--scene", "reach_003", "scene", "show", "--no-picture"]) == 0
+    assert "hand: 20.0 x 80.0 x 90.0 mm, centre (260.0, -40.0, 110.0) mm" in capsys.readouterr().out
