@@ -71,19 +71,21 @@ def load_physics(path: Path, scene: Scene) -> ScenePhysics:
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
         cubes = {c.name: c for c in scene.cubes}
-        rest = tuple(_uncube(d, cubes) for d in data["cubes"])
-        held = data["held"]
         if int(data["version"]) != VERSION:
-            raise ValueError(f"version {data['version']}")
+            raise _unreadable(path, f"version {data['version']}")
+        rest = tuple(_uncube(path, d, cubes) for d in data["cubes"])
+        held = data["held"]
         physics.scene = replace(scene, cubes=rest)
         if held is not None:
             T = np.array(held["T_tool_object"], dtype=np.float64).reshape(4, 4)
-            physics.restore(_uncube(held["cube"], cubes), T)
+            physics.restore(_uncube(path, held["cube"], cubes), T)
     except (OSError, ValueError, KeyError, TypeError) as exc:
-        raise DeviceError(
-            f"{path}: unreadable simulated scene state ({exc}); delete the file"
-        ) from None
+        raise _unreadable(path, str(exc)) from None
     return physics
+
+
+def _unreadable(path: Path, why: str) -> DeviceError:
+    return DeviceError(f"{path}: unreadable simulated scene state ({why}); delete the file")
 
 
 def _cube(c: Cube) -> dict[str, object]:
@@ -95,10 +97,10 @@ def _cube(c: Cube) -> dict[str, object]:
     }
 
 
-def _uncube(d: dict[str, object], cubes: dict[str, Cube]) -> Cube:
+def _uncube(path: Path, d: dict[str, object], cubes: dict[str, Cube]) -> Cube:
     name = str(d["name"])
     if name not in cubes:
-        raise ValueError(f"no cube {name!r} in the scene")
+        raise _unreadable(path, f"no cube {name!r} in the scene")
     pos = np.array(d["position_mm"], dtype=np.float64).reshape(3) / 1000.0
     yaw = math.radians(float(d["yaw_deg"]))  # type: ignore[arg-type]
     return Cube(name, cubes[name].size, pos, yaw, str(d["up_face"]))

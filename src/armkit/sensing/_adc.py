@@ -18,7 +18,7 @@ import tty
 from collections.abc import Callable
 from typing import Any
 
-from .._errors import DeviceError, InputError
+from .._errors import DeviceError, InputError, ReplyError
 
 BAUDRATE = 115200
 RATE_HZ = 50.0
@@ -34,10 +34,10 @@ def reading_line(volts: list[float]) -> bytes:
 
 
 def parse_line(line: bytes) -> list[float]:
-    """The four voltages [V] of one printed line; ValueError if it is not one."""
+    """The four voltages [V] of one printed line; ReplyError (a ValueError) if it is not one."""
     m = _LINE.search(line)
     if m is None:
-        raise ValueError(f"not an ADC reading line: {line!r}")
+        raise ReplyError(f"not an ADC reading line: {line!r}")
     return [int(g) * 5.0 / FULL_SCALE for g in m.groups()]
 
 

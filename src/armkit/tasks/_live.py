@@ -21,12 +21,10 @@ from ._run import run_plan
 
 if TYPE_CHECKING:
     from ..arm import Arm
-    from ..sim import World
-
 POSE_TOLERANCE = 1e-3  # [m]: a cube this far from where the plan puts it is a failure
 TURN_TOLERANCE = math.radians(1.0)
 BAD = ("missed", "dropped", "tipped")
-_ATTACHED: weakref.WeakKeyDictionary[World, tuple[ScenePhysics, Callable[[], None]]] = (
+_ATTACHED: weakref.WeakKeyDictionary[object, tuple[ScenePhysics, Callable[[], None]]] = (
     weakref.WeakKeyDictionary()
 )
 

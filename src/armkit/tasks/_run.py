@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -13,7 +13,6 @@ from ._plan import Plan, Step
 
 if TYPE_CHECKING:
     from ..arm import Arm
-    from ..sim import SimArm
 
 START_TOLERANCE = math.radians(0.5)  # the arm must be where the plan starts
 GRIP_S = 0.5  # [s] time given to a real gripper to open or close
@@ -67,8 +66,9 @@ def settle(arm: Arm) -> None:
         waited += 0.01
 
 
-def sim_arm_of(arm: Arm) -> SimArm | None:
-    """The simulated arm (its truth) behind ``arm``, or None on hardware."""
+def sim_arm_of(arm: Arm) -> Any:
+    """The simulated arm (its truth, an ``armkit.sim.SimArm``) behind ``arm``, or None
+    on hardware (typed loosely: tasks reach the simulator through Arm only)."""
     world = arm.world
     if world is None:
         return None

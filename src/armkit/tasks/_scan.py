@@ -27,7 +27,7 @@ F64 = NDArray[np.float64]
 HEIGHT = 0.015  # [m] the beam's height above the table: across a 25 mm object
 FINE = math.radians(1.0)  # 002: scan back in 1 deg steps
 AVERAGE = 5  # readings averaged for the distance
-RADII = (0.11, 0.13, 0.09)  # [m] tried in order
+RADII = (0.09, 0.11, 0.13)  # [m] tried in order (nearest first: objects stay beyond 4 cm)
 PITCHES = tuple(math.radians(p) for p in (-60.0, -45.0, -75.0, -30.0, 0.0))
 AHEAD = math.radians(90.0)  # 002's base servo angle looking straight ahead
 
