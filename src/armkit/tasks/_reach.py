@@ -12,11 +12,11 @@ import numpy as np
 
 from .._errors import InputError
 from ..scene import Scene
-from ..sensing import DistanceSensor, install_sensor, open_sensor
-from ._live import attached, live_scene
+from ..sensing import DistanceSensor
+from ._live import live_scene
 from ._plan import TaskError
-from ._run import settle, sim_arm_of
-from ._scan import Scan, locate, plan_scan
+from ._run import settle
+from ._scan import Scan, locate, plan_scan, scan_sensor
 from ._search import check_angles
 
 if TYPE_CHECKING:
@@ -77,18 +77,10 @@ def reach(
         ValueError: a bad argument.
     """
     check_angles(start, stop, step)
-    if not (0.04 <= near <= 0.30 and 0 <= shakes <= 20 and 0 < amplitude <= 0.05):
-        raise InputError(
-            f"reach needs near 40..300 mm, shakes 0..20, amplitude 0..50 mm; got near "
-            f"{near * 1000:g} mm, shakes {shakes}, amplitude {amplitude * 1000:g} mm"
-        )
+    _check(near, shakes, amplitude)
     scene = live_scene(arm, scene, False, "reach")
     scan = plan_scan(arm, scene, start, stop, step, height)
-    sim, physics = sim_arm_of(arm), attached(arm)
-    if sim is not None and physics is not None:
-        install_sensor(sim, physics, scan.mount, channel=channel, seed=seed)
-    lock = None if arm.world is None else arm.world.lock
-    with open_sensor(arm, channel, port, lock) as sensor:
+    with scan_sensor(arm, scan, channel, port, seed) as sensor:
         found = locate(arm, scan, sensor, start, stop, step)
         if found is None:
             arm.home()
@@ -99,6 +91,14 @@ def reach(
         via = sensor.via
     arm.home()
     return ReachResult(True, angle, d, steps, shakes, via)
+
+
+def _check(near: float, shakes: int, amplitude: float) -> None:
+    if not (0.04 <= near <= 0.30 and 0 <= shakes <= 20 and 0 < amplitude <= 0.05):
+        raise InputError(
+            f"reach needs near 40..300 mm, shakes 0..20, amplitude 0..50 mm; got near "
+            f"{near * 1000:g} mm, shakes {shakes}, amplitude {amplitude * 1000:g} mm"
+        )
 
 
 def _approach(

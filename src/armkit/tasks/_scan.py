@@ -5,7 +5,9 @@ clears everything), every scan pose checked before the first motion."""
 
 from __future__ import annotations
 
+import contextlib
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -15,9 +17,10 @@ from numpy.typing import NDArray
 from ..kinematics import fk
 from ..model import ArmModel
 from ..scene import Scene
-from ..sensing import RANGE, DistanceSensor, SensorMount, volts
+from ..sensing import RANGE, DistanceSensor, SensorMount, install_sensor, open_sensor, volts
+from ._live import attached
 from ._plan import TaskError
-from ._run import settle
+from ._run import settle, sim_arm_of
 from ._state import Context, Options, State, moves, solve
 
 if TYPE_CHECKING:
@@ -153,3 +156,18 @@ def plan_scan(
             return scan
     assert first is not None
     raise first
+
+
+@contextlib.contextmanager
+def scan_sensor(
+    arm: Arm, scan: Scan, channel: int, port: str | None, seed: int
+) -> Iterator[DistanceSensor]:
+    """The distance sensor for ``scan``: on a simulated arm with the scene attached, a
+    simulated GP2D120 installed at the scan's mount first (noise seeded ``seed``); read
+    through the SSC-32 or an ADC board (``port``; see ``sensing.open_sensor``)."""
+    sim, physics = sim_arm_of(arm), attached(arm)
+    if sim is not None and physics is not None:
+        install_sensor(sim, physics, scan.mount, channel=channel, seed=seed)
+    lock = None if arm.world is None else arm.world.lock
+    with open_sensor(arm, channel, port, lock) as sensor:
+        yield sensor

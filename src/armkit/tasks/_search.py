@@ -15,13 +15,11 @@ from numpy.typing import NDArray
 
 from .._errors import InputError
 from ..scene import Container, Cube, Scene
-from ..sensing import install_sensor, open_sensor
 from ._choose import pick_any
 from ._jobs import plan_task
 from ._live import TaskFailed, attached, live_scene, run_checked
 from ._plan import Plan, TaskError, cube_text
-from ._run import sim_arm_of
-from ._scan import locate, plan_scan
+from ._scan import locate, plan_scan, scan_sensor
 from ._state import Context, State, down, grip
 
 if TYPE_CHECKING:
@@ -103,11 +101,7 @@ def search(
     bin_name = into or _only_container(scene)
     scene.container(bin_name)
     scan = plan_scan(arm, scene, start, stop, step)
-    sim, physics = sim_arm_of(arm), attached(arm)
-    if sim is not None and physics is not None:
-        install_sensor(sim, physics, scan.mount, channel=channel, seed=seed)
-    lock = None if arm.world is None else arm.world.lock
-    with open_sensor(arm, channel, port, lock) as sensor:
+    with scan_sensor(arm, scan, channel, port, seed) as sensor:
         found = locate(arm, scan, sensor, start, stop, step)
         via = sensor.via
     if found is None:
