@@ -40,6 +40,7 @@ bench: $(DEVSTAMP)
 	$(BIN)/python benchmarks/shell.py
 	$(BIN)/python benchmarks/music.py
 	$(BIN)/python benchmarks/drawing.py
+	$(BIN)/python benchmarks/tasks.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info src/*.egg-info .pytest_cache .mypy_cache .ruff_cache

@@ -54,7 +54,7 @@ def test_shipped_scenes_load() -> None:
     assert [c.name for c in board.cubes] == ["red", "green", "blue"]
     assert all(c.size == pytest.approx(0.025) for c in board.cubes)  # 001's cubes
     search = load_scene("search_002")
-    assert search.container("container").floor_z == pytest.approx(0.003)
+    assert search.container("bin").floor_z == pytest.approx(0.003)
 
 
 def test_board_sockets_and_cubes_in_them(tmp_path: Path) -> None:

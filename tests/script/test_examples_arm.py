@@ -13,18 +13,7 @@ from armkit.script import check_file
 SCRIPTS = sorted((Path(__file__).parents[2] / "examples" / "scripts").glob("*.arm"))
 
 
-# Jobs whose scene or task lands in the next round of this wave: strict, so the
-# mark must go (and the test pass) the moment they do.
-PENDING = {"14_search_002.arm"}
-
-
-def _marked(path: Path) -> object:
-    if path.name in PENDING:
-        return pytest.param(path, marks=pytest.mark.xfail(strict=True, reason="job lands next"))
-    return path
-
-
-@pytest.mark.parametrize("path", [_marked(p) for p in SCRIPTS], ids=[p.name for p in SCRIPTS])
+@pytest.mark.parametrize("path", SCRIPTS, ids=[p.name for p in SCRIPTS])
 def test_example_checks(path: Path) -> None:
     result = check_file(path)
     assert result.ok, "\n".join(d.format(result.program.source) for d in result.diagnostics)

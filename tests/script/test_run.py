@@ -139,8 +139,13 @@ def test_adding_a_job_is_one_entry(
 
 
 def test_a_missing_job_function_refuses_the_run_before_any_motion(
-    arm: tuple[Arm, CountingDriver],
+    arm: tuple[Arm, CountingDriver], monkeypatch: pytest.MonkeyPatch
 ) -> None:
+    from dataclasses import replace
+
+    from armkit.script._jobs import JOBS
+
+    monkeypatch.setitem(JOBS, "search", replace(JOBS["search"], call="armkit.tasks:no_such_job"))
     a, driver = arm
     with pytest.raises(ScriptCheckError, match="the job 'search' is not available"):
         _run(a, "home\nsearch from 30 to 120 step 5\n")

@@ -199,7 +199,7 @@ def test_calibration_offsets_move_the_commanded_points(tmp_path: Path) -> None:
 def test_tilted_grasp_where_neither_top_nor_side_reaches() -> None:
     lynx = load_model("lynx6")
     arm = Arm(lynx, FakeDriver(FakeWorld(lynx, lynx.home)))
-    plan = tasks.move_item(arm, load_scene("search_002"), "object", "container", dry_run=True)
+    plan = tasks.move_item(arm, load_scene("search_002"), "object", "bin", dry_run=True)
     grasp = next(s for s in plan.steps if s.label.endswith("down 3/3"))
     assert grasp.label == "pick object at pitch -75: down 3/3"
     moved = plan.after.cube("object")

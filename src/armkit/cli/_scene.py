@@ -34,6 +34,12 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     )
     p.add_argument("--no-picture", action="store_true", help="print only, write no picture")
     p.set_defaults(func=_show)
+    p = verbs.add_parser(
+        "reset",
+        help="forget where the simulator keeps a scene's objects (back as the file puts them)",
+    )
+    p.add_argument("name", metavar="NAME|FILE", help="the scene (shipped name or file)")
+    p.set_defaults(func=_reset)
 
 
 def scene_of(args: argparse.Namespace, required: bool = True) -> Any:
@@ -48,6 +54,20 @@ def scene_of(args: argparse.Namespace, required: bool = True) -> Any:
             f"(shipped: {', '.join(shipped_scenes())})"
         )
     return load_scene(args.scene)
+
+
+def _reset(args: argparse.Namespace) -> int:
+    from .._files import config_dir
+    from .._lock import held
+    from ..scene import load_scene
+
+    scene = load_scene(args.name)
+    found = sorted(config_dir().glob(f"scene_{scene.name}-*.json"))
+    for path in found:
+        with held(path, f"the simulated objects of {scene.name}"):
+            path.unlink()
+    print(f"{scene.name}: {len(found)} kept state(s) forgotten")
+    return 0
 
 
 def _list(args: argparse.Namespace) -> int:

@@ -6,7 +6,9 @@ Each task is planned whole before anything moves; ``--dry-run`` prints the plan.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import math
+from collections.abc import Callable, Iterator
 from typing import Any
 
 from .._errors import ArmkitError, InputError
@@ -16,6 +18,13 @@ EPILOG = (
     "is planned first (every point solved, every move checked against the table and the "
     "scene); a step that cannot be done is named and nothing moves. Positions in mm, "
     "angles in degrees. TO is a place, board[ROW,COL], a cube to stack on or a container."
+)
+
+
+SEARCH_EPILOG = (
+    "Needs --scene (shipped: search_002, reach_003). The distance sensor (a Sharp GP2D120 on the "
+    "hand, 4..30 cm) is read through the SSC-32's VA..VD on a Lynx6, else a serial ADC "
+    "board (emulated on a pty in the simulator). Angles in degrees, distances in mm."
 )
 
 
@@ -51,6 +60,61 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         "cubes", nargs="+", metavar="CUBE", help="two or more cubes, the first stays below"
     )
     p.add_argument("--rotate", choices=("forward", "backward", "none"), default="forward", help="how to turn them first (default forward)")  # fmt: skip
+    _search_command(sub)
+
+
+def _search_command(sub: argparse._SubParsersAction[Any]) -> None:
+    text = "002: scan with the distance sensor, pick up what it finds, drop it in a container"
+    p: argparse.ArgumentParser = sub.add_parser(
+        "search", help=text, description=text + ".", epilog=SEARCH_EPILOG
+    )
+    for flag, default, what in (("--from", 30.0, "first"), ("--to", 120.0, "last"), ("--step", 5.0, "coarse step of the")):  # fmt: skip
+        p.add_argument(flag, dest=flag[2:], type=float, default=default, metavar="DEG", help=f"{what} scan angle [deg] (002's base servo: 90 straight ahead; default {default:g})")  # fmt: skip
+    p.add_argument("--into", metavar="NAME", help="the container to drop it in (default: the scene's only one)")  # fmt: skip
+    p.add_argument("--adc-port", metavar="PORT", help="the serial ADC board the sensor is wired to (arms without an SSC-32, real hardware)")  # fmt: skip
+    p.add_argument("--channel", type=int, default=0, choices=range(4), help="the sensor's analog input, 0..3 (SSC-32 VA..VD; default 0)")  # fmt: skip
+    p.set_defaults(func=_search)
+    text = "003: find a hand held out with the distance sensor, come near it and shake it"
+    p = sub.add_parser("reach", help=text, description=text + ".", epilog=SEARCH_EPILOG)
+    p.add_argument("--height", type=float, default=110.0, metavar="MM", help="height of the scan, the hand's [mm] (default 110)")  # fmt: skip
+    p.add_argument("--near", type=float, default=60.0, metavar="MM", help="stop when the sensor reads this [mm], 40..300 (default 60)")  # fmt: skip
+    p.add_argument("--shakes", type=int, default=3, metavar="N", help="up-and-down shakes, 0..20 (default 3)")  # fmt: skip
+    p.add_argument("--adc-port", metavar="PORT", help="the serial ADC board the sensor is wired to (arms without an SSC-32, real hardware)")  # fmt: skip
+    p.add_argument("--channel", type=int, default=0, choices=range(4), help="the sensor's analog input, 0..3 (default 0)")  # fmt: skip
+    p.set_defaults(func=_reach)
+
+
+def _reach(args: argparse.Namespace) -> int:
+    from .. import tasks
+    from ._scene import scene_of
+
+    scene = scene_of(args)
+    if not math.isfinite(args.height) or not 0.0 < args.height <= 500.0:
+        raise InputError(f"--height must be 0..500 mm, got {args.height}")
+    with _open_arm(args, scene) as arm, _objects(args, arm, scene) as save:
+        save()
+        result = tasks.reach(
+            arm, scene, height=args.height / 1000.0, near=args.near / 1000.0,
+            shakes=args.shakes, channel=args.channel, port=args.adc_port,
+        )  # fmt: skip
+        print("\n".join(result.lines()))
+    return 0
+
+
+def _search(args: argparse.Namespace) -> int:
+    from .. import tasks
+    from ._scene import scene_of
+
+    scene = scene_of(args)
+    angles = {k: math.radians(getattr(args, k)) for k in ("from", "to", "step")}
+    with _open_arm(args, scene) as arm, _objects(args, arm, scene) as save:
+        save()
+        result = tasks.search(
+            arm, scene, start=angles["from"], stop=angles["to"], step=angles["step"],
+            into=args.into, channel=args.channel, port=args.adc_port,
+        )  # fmt: skip
+        print("\n".join(result.lines()))
+    return 0
 
 
 def _task(sub: argparse._SubParsersAction[Any], name: str, text: str) -> argparse.ArgumentParser:
@@ -87,18 +151,47 @@ def _run(args: argparse.Namespace) -> int:
 
     scene = scene_of(args)
     options = {"clearance": args.clearance, "calibration": args.calibration, "dry_run": True}
-    with _open_arm(args, scene) as arm:
+    with _open_arm(args, scene) as arm, _objects(args, arm, scene) as save:
         plan = _plan(args, tasks, arm, scene, options)
         if args.dry_run:
             print(plan)
             return 0
         print(plan.lines()[0])
-        tasks.run_plan(
+        save()
+        tasks.run_checked(
             arm, plan, say=lambda k, step: print(f"{k:4d}/{len(plan.steps)}  {step.label}")
         )
         for line in plan.lines()[len(plan.steps) + 1 :]:
             print(line)
     return 0
+
+
+@contextlib.contextmanager
+def _objects(args: argparse.Namespace, arm: Any, scene: Any) -> Iterator[Callable[[], None]]:
+    """On a simulated arm, the scene's objects in its world: with ``--driver sim`` and no
+    port, kept between runs in their state file (like the arm's joints), locked while
+    in use and written back once the task has started moving. Yields ``save``: call it
+    when the first motion is about to happen."""
+    from .._lock import exclusive
+    from ..scene._state import load_physics, save_physics, scene_state_file
+    from ..sim._state import state_key
+    from ..tasks import attach_scene
+
+    if arm.world is None or args.driver != "sim" or args.port is not None:
+        attach_scene(arm, scene)
+        yield lambda: None
+        return
+    path = scene_state_file(scene, state_key(arm.model))
+    lock = exclusive(path, f"the simulated objects of {scene.name}")
+    moved: list[bool] = []
+    try:
+        physics = load_physics(path, scene)
+        attach_scene(arm, scene, physics)
+        yield lambda: moved.append(True)
+    finally:
+        if moved:
+            save_physics(path, physics)
+        lock.release()
 
 
 def _plan(

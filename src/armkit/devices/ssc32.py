@@ -205,6 +205,17 @@ class SSC32:
             request, len(channels), lambda r: parse_pulses(r, channels), what
         )
 
+    def read_analog(self, channel: int) -> float:
+        """The voltage on analog input ``channel`` (0..3 = ``VA``..``VD``) [V], 0..5 in
+        steps of 5/255 V, by one ``V<A-D>`` query (SSC-32U user guide: one byte back)."""
+        if channel not in range(4):
+            raise InputError(f"the SSC-32 has analog inputs 0..3 (VA..VD), got {channel}")
+        letter = "ABCD"[channel]
+        reply = self._link.exchange(
+            f"V{letter}".encode("ascii") + CR, 1, bytes, f"analog query (V{letter})"
+        )
+        return reply[0] * 5.0 / 255.0
+
     def stop(self, channels: Iterable[int]) -> None:
         """Stop each servo in ``channels`` where it is now."""
         for ch in channels:

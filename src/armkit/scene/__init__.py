@@ -19,6 +19,7 @@ from ._load import shipped_scenes as shipped_scenes
 from ._objects import Board as Board
 from ._objects import Container as Container
 from ._objects import Cube as Cube
+from ._objects import Hand as Hand
 from ._objects import Pen as Pen
 from ._objects import PenStand as PenStand
 from ._objects import Place as Place

@@ -12,7 +12,7 @@ import numpy as np
 
 from ._errors import SceneError
 from ._fields import Entry, entries
-from ._objects import Board, Container, Cube, Pen, PenStand, Place
+from ._objects import Board, Container, Cube, Hand, Pen, PenStand, Place
 from ._rotations import FACES, pose, rot_z
 from ._scene import Scene
 from ._sections import drums, sheets, xylophones
@@ -20,8 +20,9 @@ from ._support import footprint, support_under
 
 _TOP = (
     "name", "description", "table_z_mm", "base", "boards", "cubes", "containers",
-    "places", "pens", "pen_stands", "sheets", "xylophones", "drums",
+    "places", "pens", "pen_stands", "sheets", "xylophones", "drums", "hands",
 )  # fmt: skip
+_HAND = ("name", "position_mm", "size_mm")
 _BOARD = (
     "name", "origin_mm", "yaw_deg", "rows", "cols", "pitch_mm", "socket_size_mm",
     "socket_depth_mm", "thickness_mm", "size_mm",
@@ -88,6 +89,7 @@ def build_scene(data: dict[str, Any], path: Path) -> Scene:
         sheets=sheets(path, data),
         instruments=(*xylophones(path, data), *drums(path, data)),
         source=path,
+        hands=tuple(_hand(e) for e in entries(path, data, "hands", _HAND)),
     )
     scene = _with_cubes(scene, entries(path, data, "cubes", _CUBE))
     pen_names = {p.name for p in scene.pens}
@@ -133,6 +135,11 @@ def _container(e: Entry) -> Container:
     if 2 * wall >= min(size[0], size[1]) or wall >= size[2]:
         raise e.fail("wall_mm", f"must leave room inside the box, got {wall * 1000:g}")
     return Container(e.name(), e.point_mm("position_mm"), (size[0], size[1], size[2]), wall)
+
+
+def _hand(e: Entry) -> Hand:
+    size = e.sizes_mm("size_mm", 3)
+    return Hand(e.name(), e.point_mm("position_mm"), (size[0], size[1], size[2]))
 
 
 def _place(e: Entry) -> Place:

@@ -150,6 +150,20 @@ class Container:
 
 
 @dataclass(frozen=True, eq=False)
+class Hand:
+    """A hand held out to shake (003's reach): a box, its sides along the scene axes.
+
+    Attributes:
+        position: centre of the hand [m], shape (3,).
+        size: (x, y, z) extent [m]: thin along x for a palm facing the arm.
+    """
+
+    name: str
+    position: F64
+    size: tuple[float, float, float]
+
+
+@dataclass(frozen=True, eq=False)
 class Place:
     """A named point on the table (000's A and B).
 

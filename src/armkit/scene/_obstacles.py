@@ -1,6 +1,6 @@
 """The scene's solid objects as oriented boxes for the clearance check: boards
 (a slab under the sockets and the walls between them), cubes, containers (floor
-and four walls). Sheets, pens and instruments are not obstacles: drawing and
+and four walls), hands. Sheets, pens and instruments are not obstacles: drawing and
 playing touch them on purpose."""
 
 from __future__ import annotations
@@ -62,6 +62,8 @@ def _build(scene: Scene) -> Obstacles:
         boxes.append((T[:3, 3], T[:3, :3], np.full(3, cube.size / 2), cube.name))
     for box in scene.containers:
         boxes.extend(_container_boxes(box))
+    for hand in scene.hands:
+        boxes.append((hand.position, np.eye(3), np.array(hand.size) / 2, hand.name))
     if not boxes:
         return _pack(np.zeros((0, 3)), np.zeros((0, 3, 3)), np.zeros((0, 3)), ())
     c, R, h, names = zip(*boxes, strict=True)

@@ -26,6 +26,7 @@ F64 = NDArray[np.float64]
 EventKind = Literal["grasped", "missed", "placed", "dropped", "tipped"]
 WIDTH_EPS = 0.2e-3  # [m]: grip changes smaller than this are not a motion
 NEAR = 0.06  # [m]: a closing this close to a cube that misses it is reported
+STILL = 1e-5  # [rad]: joints moving less than this per step are standing still
 
 
 class SimArmView(Protocol):
@@ -84,13 +85,25 @@ class ScenePhysics:
         self._q: F64 | None = None
         self._model: ArmModel | None = None
         self._reported = False
+        self._stop_pending = False
+
+    def restore(self, cube: Cube, T_tool_object: F64) -> None:
+        """Start with ``cube`` (its pose before it was picked) in the gripper, held at
+        ``T_tool_object`` (4, 4) [m] (a state kept between processes); the jaws are
+        stopped at its width on the next step."""
+        self.holding = _Holding(cube, np.asarray(T_tool_object, dtype=np.float64), cube.size)
+        self.scene = self.scene.without_cube(cube.name)
+        self._stop_pending = True
 
     def on_step(self, world: WorldView, t: float) -> None:
         """Grasp, carry or release (cheap when nothing changes: no FK)."""
         sim = world.arm(self._arm)
         self._model = sim.model
+        if self._stop_pending and self.holding is not None:
+            self._stop_pending = False
+            sim.grip_stop(self.holding.width)
         width, q = sim.grip(), sim.q()
-        if self._width is None or self._q is None or float(np.max(np.abs(q - self._q))) > 1e-9:
+        if self._width is None or self._q is None or float(np.max(np.abs(q - self._q))) > STILL:
             self._opened = width  # the jaws come round an object at the opening they move with
         if self._width is None:
             self._width = width

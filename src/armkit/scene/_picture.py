@@ -77,6 +77,10 @@ def _draw(ax: Any, scene: Scene, model: ArmModel | None) -> None:
         outer = Rect(box.position[:2], (box.size[0] / 2, box.size[1] / 2), 0.0).corners()
         _poly(ax, outer, facecolor="#efe3c8", edgecolor="#8a6d3b")
         ax.annotate(box.name, box.position[:2] * 1000, ha="center", va="center")
+    for hand in scene.hands:
+        palm = Rect(hand.position[:2], (hand.size[0] / 2, hand.size[1] / 2), 0.0).corners()
+        _poly(ax, palm, facecolor="#f2c9a8", edgecolor="#8a5a3b")
+        ax.annotate(hand.name, hand.position[:2] * 1000 + np.array([12, 0]), va="center")
     for s in scene.sheets:
         _poly(ax, s.corners(), facecolor="#fafafa", edgecolor="grey", ls="--")
     for inst in scene.instruments:

@@ -12,7 +12,7 @@ from numpy.typing import NDArray
 
 from .._errors import InputError
 from ._instruments import Instrument
-from ._objects import Board, Container, Cube, Pen, PenStand, Place
+from ._objects import Board, Container, Cube, Hand, Pen, PenStand, Place
 from ._surfaces import Sheet
 
 F64 = NDArray[np.float64]
@@ -29,6 +29,8 @@ class Scene:
             coordinates p_base map to scene coordinates ``T_world_base @ p_base``.
         boards, cubes, containers, pens, pen_stands, sheets, instruments, places:
             the objects, each name unique across the scene.
+        hands: hands held out to shake (003), after ``source`` so that positional
+            construction stays as it was.
         source: the file it was loaded from, or None.
     """
 
@@ -44,6 +46,7 @@ class Scene:
     instruments: tuple[Instrument, ...] = ()
     places: tuple[Place, ...] = ()
     source: Path | None = None
+    hands: tuple[Hand, ...] = ()
 
     def names(self) -> tuple[str, ...]:
         """Every object's name, in file order by kind."""
@@ -56,6 +59,7 @@ class Scene:
             self.sheets,
             self.instruments,
             self.places,
+            self.hands,
         )
         return tuple(obj.name for group in groups for obj in group)
 
@@ -74,6 +78,10 @@ class Scene:
     def container(self, name: str) -> Container:
         """The container called ``name``; ValueError lists the containers."""
         return _find(self.containers, name, "container", self.name)
+
+    def hand(self, name: str) -> Hand:
+        """The hand called ``name``; ValueError lists the hands."""
+        return _find(self.hands, name, "hand", self.name)
 
     def with_cube(self, cube: Cube) -> Scene:
         """The same scene with the cube of ``cube.name`` replaced by ``cube``."""
@@ -106,7 +114,7 @@ class Scene:
         return out
 
 
-_Named = TypeVar("_Named", Board, Cube, Place, Container)
+_Named = TypeVar("_Named", Board, Cube, Place, Container, Hand)
 
 
 def _find(items: tuple[_Named, ...], name: str, kind: str, scene: str) -> _Named:

@@ -40,6 +40,7 @@ def describe(scene: Scene) -> list[str]:
         ("pen stands", [f"{s.name}: {mm(s.position)}, holds {s.pen}" for s in scene.pen_stands]),
         ("sheets", [f"{s.name}: {s.width * 1000:.1f} x {s.height * 1000:.1f} mm, corner {mm(s.origin)}, normal {np.round(s.normal, 3).tolist()}" for s in scene.sheets]),
         ("instruments", [_instrument(i) for i in scene.instruments]),
+        ("hands", [f"{h.name}: {_size(h.size)}, centre {mm(h.position)}" for h in scene.hands]),
     )  # fmt: skip
     for title, lines in sections:
         if lines:

@@ -12,9 +12,9 @@ through an ``Outbox`` (faults: ``inject``). It listens at one baud rate and
 ignores a host at another (``baudrate``), like the board.
 
 Known differences from the real board (issue 11, point 5: the next step):
-``P0``, out-of-range pulses (the board clamps them), ``PO`` offsets, digital
-I/O ``H``/``L``/``A``..``D``/``AL``..``DL`` and the analog inputs ``VA``..``VD``
-(``SimArm.analog``) are not yet answered.
+``P0``, out-of-range pulses (the board clamps them), ``PO`` offsets and digital
+I/O ``H``/``L``/``A``..``D``/``AL``..``DL`` are not yet answered. The analog inputs
+``VA``..``VD`` are (one byte each, 0..255 for 0..5 V, from ``analog``).
 """
 
 from __future__ import annotations
@@ -28,7 +28,7 @@ from ._pulses import MoveRecord, PulseOutputs, VirtualServo
 
 CHANNELS = 32
 VERSION = b"SSC32-V2.50USB\r"
-_TOKEN = re.compile(r"(STOP|VER|QP|Q|#|P|S|T)(\d*)")
+_TOKEN = re.compile(r"(STOP|VER|V[A-D]|QP|Q|#|P|S|T)(\d*)")
 Tokens = list[tuple[str, str]]
 
 
@@ -58,6 +58,7 @@ class SimSSC32(PulseOutputs):
             "QP": self._query_pulses,
             "STOP": self._stop,
             "VER": self._version,
+            **{f"V{c}": self._query_analog for c in "ABCD"},
         }
 
     def receive(self, data: bytes, now: float) -> None:
@@ -118,6 +119,15 @@ class SimSSC32(PulseOutputs):
             self.errors.append(f"bad stop: {tokens}")
             return
         self.servos[int(tokens[0][1])].hold(now)
+
+    def _query_analog(self, tokens: Tokens, now: float) -> None:
+        """``VA``..``VD`` (any of them, in one line): one byte each, 0..255 for 0..5 V
+        (SSC-32U user guide, "Read analog inputs"); an unconnected input reads 0."""
+        if any(kind[0] != "V" or kind == "VER" or arg for kind, arg in tokens):
+            self.errors.append(f"bad analog query: {tokens}")
+            return
+        volts = [self.analog.get(ord(kind[1]) - ord("A"), lambda: 0.0)() for kind, _ in tokens]
+        self.outbox.send(bytes(round(min(5.0, max(0.0, v)) / 5.0 * 255) for v in volts), now)
 
     def _version(self, tokens: Tokens, now: float) -> None:
         self.outbox.send(VERSION, now)

@@ -12,9 +12,17 @@ from ._jobs import place as place
 from ._jobs import plan_task as plan_task
 from ._jobs import rotate_cube as rotate_cube
 from ._jobs import stack as stack
+from ._live import TaskFailed as TaskFailed
+from ._live import attach_scene as attach_scene
+from ._live import attached as attached
+from ._live import run_checked as run_checked
 from ._plan import Plan as Plan
 from ._plan import Step as Step
 from ._plan import TaskError as TaskError
+from ._reach import ReachResult as ReachResult
+from ._reach import reach as reach
 from ._run import run_plan as run_plan
+from ._search import SearchResult as SearchResult
+from ._search import search as search
 from ._targets import Target as Target
 from ._targets import resolve as resolve

@@ -19,9 +19,9 @@ from ..kinematics import fk
 from ..scene import Cube, Scene
 from ._calibration import Calibration, calibration_for
 from ._choose import pick_any, place_any, rotate
+from ._live import live_scene, run_checked
 from ._plan import Plan
 from ._points import move_point
-from ._run import run_plan
 from ._state import Context, Options, State
 from ._targets import resolve
 
@@ -95,7 +95,7 @@ def _deg(pitch: float | None) -> float | None:
 
 def _done(arm: Arm, plan: Plan, dry_run: bool) -> Plan:
     if not dry_run:
-        run_plan(arm, plan)
+        run_checked(arm, plan)
     return plan
 
 
@@ -111,6 +111,7 @@ def pick(
 ) -> Plan:
     """Pick ``cube`` up (001: from the top where reachable, else from the side with
     the grasp point shifted up; ``pitch`` [deg] forces one) and stay above it."""
+    scene = live_scene(arm, scene, dry_run, f"pick {cube}")
     p = _deg(pitch)
     plan = plan_task(
         arm, scene, f"pick {cube}", lambda c, s: pick_any(c, s, cube, p),
@@ -133,6 +134,7 @@ def place(
     """Put ``cube`` (in the gripper, picked by ``pick`` from where ``scene`` has it)
     down at ``to``: a place, ``board[row, col]``, a cube to stack on, a container,
     or (x, y, z) [mm]; then go back up."""
+    scene = live_scene(arm, scene, dry_run, f"place {cube}", held=cube)
     target = resolve(scene, to)
     p = _deg(pitch) if pitch is not None else target.pitch
     plan = plan_task(
@@ -161,6 +163,7 @@ def move_item(
     scene does not know (then ``to`` must be a point or a place too, and the grasp
     and the item's own clearance cannot be checked).
     """
+    scene = live_scene(arm, scene, dry_run, "move")
     target = resolve(scene, to)
     p = _deg(pitch)
     height = max(lift, clearance)
@@ -197,6 +200,7 @@ def rotate_cube(
     """001: turn ``cube`` a quarter turn in place: ``"forward"`` picks it from the
     side (pitch 0) and puts it down from the top (pitch -90), its top face then
     facing away from the arm; ``"backward"`` the other way round."""
+    scene = live_scene(arm, scene, dry_run, f"rotate {cube}")
     plan = plan_task(
         arm, scene, f"rotate {cube} {direction}", lambda c, s: rotate(c, s, cube, direction),
         clearance=clearance, calibration=calibration,
@@ -217,6 +221,7 @@ def stack(
     """001: turn every cube in place (``rotate_first``: ``"forward"``,
     ``"backward"`` or None), then stack them on the first one, each one cube
     higher than the last."""
+    scene = live_scene(arm, scene, dry_run, "stack")
     names = list(cubes)
     if len(names) < 2 or len(set(names)) != len(names):
         raise InputError(f"stack needs two or more different cubes, got {names}")

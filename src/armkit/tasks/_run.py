@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -15,6 +15,8 @@ if TYPE_CHECKING:
     from ..arm import Arm
 
 START_TOLERANCE = math.radians(0.5)  # the arm must be where the plan starts
+GRIP_S = 0.5  # [s] time given to a real gripper to open or close
+SETTLE_MAX_S = 5.0  # [s] the longest wait for a simulated arm to come to rest
 
 
 def run_plan(arm: Arm, plan: Plan, say: Callable[[int, Step], None] | None = None) -> None:
@@ -37,8 +39,37 @@ def run_plan(arm: Arm, plan: Plan, say: Callable[[int, Step], None] | None = Non
             if say is not None:
                 say(k, step)
             if step.grip is not None:
+                settle(arm)
                 arm.grip(step.grip * 1000.0)
+                settle(arm)
             elif step.q is not None:
                 arm.move_joints(np.degrees(step.q).tolist())  # the table is checked again
     finally:
         arm.scene = scene
+
+
+def settle(arm: Arm) -> None:
+    """Wait until the arm and its gripper stand still: on a simulated arm until its
+    truth is at rest (at most SETTLE_MAX_S of simulated time), else GRIP_S."""
+    world = arm.world
+    sim = (
+        None
+        if world is None
+        else next((a for a in world.arms() if a.model.name == arm.model.name), None)
+    )
+    if sim is None:
+        arm.clock.sleep(GRIP_S)
+        return
+    waited = 0.0
+    while not sim.at_rest() and waited < SETTLE_MAX_S:
+        arm.clock.sleep(0.01)
+        waited += 0.01
+
+
+def sim_arm_of(arm: Arm) -> Any:
+    """The simulated arm (its truth, an ``armkit.sim.SimArm``) behind ``arm``, or None
+    on hardware (typed loosely: tasks reach the simulator through Arm only)."""
+    world = arm.world
+    if world is None:
+        return None
+    return next((a for a in world.arms() if a.model.name == arm.model.name), None)

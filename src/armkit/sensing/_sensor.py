@@ -1,0 +1,77 @@
+"""Reading a distance sensor on an arm through the interface a real one uses: the
+SSC-32's analog input (``VA``..``VD``) on an arm driven by an SSC-32 (the Lynx6),
+else a serial ADC board (``AdcBoard``) -- in the simulator, its emulator on a pty."""
+
+from __future__ import annotations
+
+import contextlib
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from .._errors import DeviceError
+from ._adc import AdcBoard, AdcEmulator
+from ._gp2d120 import distance
+
+if TYPE_CHECKING:
+    from ..arm import Arm
+
+
+@dataclass(frozen=True)
+class DistanceSensor:
+    """A GP2D120 as read by the host.
+
+    Attributes:
+        read: the output now [V].  via: how it is read (``"SSC-32 VA"``, ``"ADC board
+            on /dev/pts/3 input 0"``).
+    """
+
+    read: Callable[[], float]
+    via: str
+
+    def distance(self) -> float | None:
+        """The distance now [m], or None outside 4..30 cm."""
+        return distance(self.read())
+
+
+def ssc32_of(arm: Arm) -> Any:
+    """The SSC-32 device behind ``arm``'s driver, or None."""
+    device = getattr(getattr(arm.driver, "bus", None), "device", None)
+    return device if callable(getattr(device, "read_analog", None)) else None
+
+
+@contextlib.contextmanager
+def open_sensor(
+    arm: Arm, channel: int = 0, port: str | None = None, lock: Any = None
+) -> Iterator[DistanceSensor]:
+    """The sensor on analog input ``channel``: the SSC-32's if the arm has one, else the
+    ADC board at ``port`` (None on a simulated arm: an emulated board on a pty, reading
+    the simulated arm's inputs under ``lock``).
+
+    Raises:
+        DeviceError: no SSC-32 and no port on real hardware, or the board is silent.
+    """
+    ssc32 = ssc32_of(arm)
+    if ssc32 is not None:
+        yield DistanceSensor(
+            lambda: float(ssc32.read_analog(channel)), f"SSC-32 V{'ABCD'[channel]}"
+        )
+        return
+    emulator = None
+    if port is None:
+        world = arm.world
+        sims = [] if world is None else [a for a in world.arms() if a.model.name == arm.model.name]
+        if not sims:
+            raise DeviceError(
+                f"the {arm.model.name} has no SSC-32: give the port of the ADC board "
+                "the distance sensor is wired to"
+            )
+        emulator = AdcEmulator(sims[0].analog, lock)
+        port = emulator.port
+    board = AdcBoard(port)
+    try:
+        yield DistanceSensor(lambda: board.read(channel), f"ADC board on {port} input {channel}")
+    finally:
+        board.close()
+        if emulator is not None:
+            emulator.close()

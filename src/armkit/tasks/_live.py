@@ -1,0 +1,148 @@
+"""Tasks on a simulated arm: the scene's physics attached to the arm's World so the
+objects move with the gripper, planning from where they really are, and every run
+checked against its plan (a miss, a drop or a tip stops the task and names the step;
+each cube must end within 1 mm and 1 deg of where the plan puts it).
+
+On real hardware (``arm.world`` is None) nothing is attached and nothing checked.
+"""
+
+from __future__ import annotations
+
+import math
+import weakref
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+from .._errors import ArmkitError
+from ..scene import Scene, ScenePhysics
+from ..scene._state import rest_scene
+from ._plan import Plan, Step, TaskError, cube_text, pose_error
+from ._run import run_plan
+
+if TYPE_CHECKING:
+    from ..arm import Arm
+POSE_TOLERANCE = 1e-3  # [m]: a cube this far from where the plan puts it is a failure
+TURN_TOLERANCE = math.radians(1.0)
+BAD = ("missed", "dropped", "tipped")
+_ATTACHED: weakref.WeakKeyDictionary[object, tuple[ScenePhysics, Callable[[], None]]] = (
+    weakref.WeakKeyDictionary()
+)
+
+
+class TaskFailed(ArmkitError):
+    """A task ran on a simulated arm and the objects did not do what the plan expected
+    (the jaws missed a cube, a cube fell or tipped, or ended off its place): the task
+    stopped there.
+
+    Attributes:
+        step: the label of the step where it went wrong.  detail: what happened.
+    """
+
+    def __init__(self, message: str, *, step: str, detail: str) -> None:
+        super().__init__(message)
+        self.step, self.detail = step, detail
+
+
+def attach_scene(
+    arm: Arm, scene: Scene, physics: ScenePhysics | None = None
+) -> ScenePhysics | None:
+    """The scene's physics on ``arm``'s World (attached now if it is not yet, or if it
+    was for another scene; ``physics`` to attach a given one); None on hardware."""
+    world = arm.world
+    if world is None:
+        return None
+    old = _ATTACHED.get(world)
+    if old is not None and physics is None and old[0].scene.name == scene.name:
+        return old[0]
+    if old is not None:
+        old[1]()
+    physics = physics or ScenePhysics(scene)
+    _ATTACHED[world] = (physics, world.attach(physics))
+    return physics
+
+
+def attached(arm: Arm) -> ScenePhysics | None:
+    """The scene physics attached to ``arm``'s World by ``attach_scene``, or None."""
+    world = arm.world
+    found = None if world is None else _ATTACHED.get(world)
+    return None if found is None else found[0]
+
+
+def live_scene(arm: Arm, scene: Scene, dry_run: bool, task: str, held: str | None = None) -> Scene:
+    """The scene to plan ``task`` with: on a simulated arm the objects where they are
+    now (attaching the physics unless ``dry_run``), else ``scene`` as given.
+
+    Raises:
+        TaskError: the gripper holds a cube other than ``held`` (nothing moves).
+    """
+    physics = attached(arm) if dry_run else attach_scene(arm, scene)
+    if physics is None or physics.scene.name != scene.name:
+        return scene
+    holding = physics.holding
+    if holding is not None and holding.cube.name != held:
+        name = holding.cube.name
+        raise TaskError(
+            f"{task}: the gripper holds {name}; put it down first (place {name} TO)",
+            step=task,
+        )
+    return rest_scene(physics)
+
+
+def run_checked(
+    arm: Arm,
+    plan: Plan,
+    say: Callable[[int, Step], None] | None = None,
+    *,
+    poses: bool = True,
+    allow: tuple[str, ...] = (),
+) -> None:
+    """``run_plan``, then (on a simulated arm with the scene attached) check it.
+
+    Raises:
+        TaskFailed: the jaws missed, a cube fell or tipped (the task stops after that
+            step), or a cube ended more than 1 mm or 1 deg from its planned pose.
+    """
+    physics = attached(arm)
+    if physics is None:
+        run_plan(arm, plan, say)
+        return
+    seen = len(physics.events)
+    last: list[Step] = []
+
+    def check(k: int, step: Step) -> None:
+        if last:
+            _events(plan, physics, seen, last[-1], allow)
+        last.append(step)
+        if say is not None:
+            say(k, step)
+
+    run_plan(arm, plan, check)
+    if last:
+        _events(plan, physics, seen, last[-1], allow)
+    if poses:
+        _poses(plan, physics)
+
+
+def _events(
+    plan: Plan, physics: ScenePhysics, seen: int, step: Step, allow: tuple[str, ...]
+) -> None:
+    bad = [e for e in physics.events[seen:] if e.kind in BAD and e.kind not in allow]
+    if bad:
+        e = bad[0]
+        hint = " (the OWI moves open loop: recalibrate it)" if plan.arm == "owi535" else ""
+        raise TaskFailed(
+            f"{plan.task}: stopped after step '{step.label}': {e.detail}{hint}",
+            step=step.label, detail=e.detail,
+        )  # fmt: skip
+
+
+def _poses(plan: Plan, physics: ScenePhysics) -> None:
+    for want in plan.after.cubes:
+        got = physics.cube(want.name)
+        distance, turn = pose_error(got, want)
+        if distance > POSE_TOLERANCE or turn > TURN_TOLERANCE:
+            raise TaskFailed(
+                f"{plan.task}: {cube_text(got)}, {distance * 1000:.1f} mm and "
+                f"{math.degrees(turn):.1f} deg from where planned ({cube_text(want)})",
+                step=plan.steps[-1].label if plan.steps else plan.task, detail=cube_text(got),
+            )  # fmt: skip

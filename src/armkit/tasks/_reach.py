@@ -1,0 +1,135 @@
+"""Seed 003's reach: find a hand held out with the distance sensor (002's scan, the
+beam at the hand's height), come towards it along the beam until the sensor reads
+near, shake (up and down), and go back home."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from .._errors import InputError
+from ..scene import Scene
+from ..sensing import DistanceSensor
+from ._live import live_scene
+from ._plan import TaskError
+from ._run import settle
+from ._scan import Scan, locate, plan_scan, scan_sensor
+from ._search import check_angles
+
+if TYPE_CHECKING:
+    from ..arm import Arm
+
+APPROACH_STEP = 0.02  # [m] at most this much nearer per step
+
+
+@dataclass(frozen=True)
+class ReachResult:
+    """What the reach did.
+
+    Attributes:
+        found: a hand was seen.  angle: where [rad] (002's servo convention).
+        distance: the sensor's distance at the end of the approach [m].
+        steps: approach steps taken.  shakes: up-and-down shakes done.  via: the sensor's line.
+    """
+
+    found: bool
+    angle: float | None
+    distance: float | None
+    steps: int
+    shakes: int
+    via: str
+
+    def lines(self) -> list[str]:
+        """The result for people (mm, deg)."""
+        if not self.found or self.angle is None or self.distance is None:
+            return [f"sensor read through {self.via}", "no hand within 30 cm along the arc"]
+        return [
+            f"sensor read through {self.via}",
+            f"hand at {math.degrees(self.angle):.1f} deg; came {self.steps} steps nearer, "
+            f"to {self.distance * 1000:.0f} mm; shook {self.shakes} times",
+        ]
+
+
+def reach(
+    arm: Arm,
+    scene: Scene,
+    *,
+    height: float = 0.11,
+    near: float = 0.06,
+    shakes: int = 3,
+    amplitude: float = 0.015,
+    start: float = math.radians(30.0),
+    stop: float = math.radians(120.0),
+    step: float = math.radians(5.0),
+    channel: int = 0,
+    port: str | None = None,
+    seed: int = 3,
+) -> ReachResult:
+    """003: scan at ``height`` [m] for a hand, approach until the sensor reads ``near``
+    [m] (0.04..0.30), shake ``shakes`` times by ``amplitude`` [m] up and down, go home.
+
+    Raises:
+        TaskError: the scan is unreachable or would collide (nothing moves), or the
+            hand is out of reach (the arm stops where it got to and says how far).
+        ValueError: a bad argument.
+    """
+    check_angles(start, stop, step)
+    _check(near, shakes, amplitude)
+    scene = live_scene(arm, scene, False, "reach")
+    scan = plan_scan(arm, scene, start, stop, step, height)
+    with scan_sensor(arm, scan, channel, port, seed) as sensor:
+        found = locate(arm, scan, sensor, start, stop, step)
+        if found is None:
+            arm.home()
+            return ReachResult(False, None, None, 0, 0, sensor.via)
+        angle, d = found
+        radius, d, steps = _approach(arm, scan, sensor, angle, d, near)
+        _shake(arm, scan, angle, radius, shakes, amplitude)
+        via = sensor.via
+    arm.home()
+    return ReachResult(True, angle, d, steps, shakes, via)
+
+
+def _check(near: float, shakes: int, amplitude: float) -> None:
+    if not (0.04 <= near <= 0.30 and 0 <= shakes <= 20 and 0 < amplitude <= 0.05):
+        raise InputError(
+            f"reach needs near 40..300 mm, shakes 0..20, amplitude 0..50 mm; got near "
+            f"{near * 1000:g} mm, shakes {shakes}, amplitude {amplitude * 1000:g} mm"
+        )
+
+
+def _approach(
+    arm: Arm, scan: Scan, sensor: DistanceSensor, angle: float, d: float, near: float
+) -> tuple[float, float, int]:
+    """Step along the beam until the sensor reads ``near`` [m]: (radius [m], last
+    distance [m], steps)."""
+    radius, steps = scan.radius, 0
+    while d > near + 1e-3:
+        radius += min(APPROACH_STEP, d - near)
+        try:
+            q = scan.joints(angle, arm.driver.read(), radius)
+        except TaskError:
+            raise TaskError(
+                f"reach: the hand is {d * 1000:.0f} mm away and the arm can come no nearer",
+                step=f"approach step {steps + 1}",
+            ) from None
+        arm.move_joints(np.degrees(q).tolist())
+        settle(arm)
+        steps += 1
+        now = sensor.distance()
+        if now is None:
+            break
+        d = now
+    return radius, d, steps
+
+
+def _shake(arm: Arm, scan: Scan, angle: float, radius: float, shakes: int, amp: float) -> None:
+    """Up ``amp`` [m], down ``amp``, ``shakes`` times, then level again."""
+    seed = arm.driver.read()
+    poses = [scan.joints(angle, seed, radius, dz) for dz in (amp, -amp, 0.0)]
+    for _ in range(shakes):
+        for q in poses:
+            arm.move_joints(np.degrees(q).tolist())

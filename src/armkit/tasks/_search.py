@@ -1,0 +1,204 @@
+"""Seed 002's search: scan an arc with the distance sensor on the hand looking for a
+local maximum of its output, scan back in fine steps to pinpoint it, align, measure
+the distance, pick the object up and drop it in the container, go back to rest and
+switch the servos off. Angles as 002's base servo: 90 deg is straight ahead, 30 is
+60 deg to the right, 120 is 30 deg to the left (any arm)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .._errors import InputError
+from ..scene import Container, Cube, Scene
+from ._choose import pick_any
+from ._jobs import plan_task
+from ._live import TaskFailed, attached, live_scene, run_checked
+from ._plan import Plan, TaskError, cube_text
+from ._scan import locate, plan_scan, scan_sensor
+from ._state import Context, State, down, grip
+
+if TYPE_CHECKING:
+    from ..arm import Arm
+
+F64 = NDArray[np.float64]
+OBJECT_SIZE = 0.025  # [m] 002's object when the scene has no cube to say
+DROP_HEIGHT = 0.015  # [m] above the container's rim
+DROP_PITCHES = tuple(math.radians(p) for p in (-90.0, -75.0, -60.0, -45.0, -30.0, 0.0))
+
+
+@dataclass(frozen=True)
+class SearchResult:
+    """What the search found and did.
+
+    Attributes:
+        found: an object was seen within the sensor's range.
+        angle: the base angle it was seen at, 002's servo convention [rad].
+        distance: the sensor's distance to it there [m].
+        position: where its bottom face's centre is estimated, scene frame [m], (3,).
+        readings: (angle [rad], output [V]) of every reading, in order.
+        plan: the pick-and-drop plan carried out, or None.
+        servos_off: the servos were switched off at the end (False: the driver cannot).
+        via: how the sensor was read.
+    """
+
+    found: bool
+    angle: float | None
+    distance: float | None
+    position: F64 | None
+    readings: tuple[tuple[float, float], ...]
+    plan: Plan | None
+    servos_off: bool
+    via: str
+
+    def lines(self) -> list[str]:
+        """The result for people (mm, deg)."""
+        out = [f"sensor read through {self.via}; {len(self.readings)} readings"]
+        if not self.found or self.position is None or self.angle is None:
+            return [*out, "nothing found within 30 cm along the arc"]
+        x, y, z = (float(v) * 1000 for v in self.position)
+        assert self.distance is not None
+        out.append(
+            f"found at {math.degrees(self.angle):.1f} deg, {self.distance * 1000:.1f} mm from "
+            f"the sensor: ({x:.1f}, {y:.1f}, {z:.1f}) mm"
+        )
+        if self.plan is not None:
+            out.append(f"picked it and dropped it: {self.plan.task}")
+        out.append("servos off" if self.servos_off else "servos left on (the driver cannot)")
+        return out
+
+
+def search(
+    arm: Arm,
+    scene: Scene,
+    *,
+    start: float = math.radians(30.0),
+    stop: float = math.radians(120.0),
+    step: float = math.radians(5.0),
+    into: str | None = None,
+    channel: int = 0,
+    port: str | None = None,
+    seed: int = 2,
+) -> SearchResult:
+    """002: scan from ``start`` to ``stop`` every ``step`` [rad] (002's servo angles),
+    then back in 1 deg steps round the best reading, pick what is there up and drop it
+    in the container ``into`` (None: the scene's only container), rest, servos off.
+
+    ``channel``: the sensor's analog input; ``port``: an ADC board's port (arms without
+    an SSC-32 on real hardware); ``seed``: the simulated sensor's noise.
+
+    Raises:
+        TaskError: the scan or the pick is unreachable or would collide (nothing moves
+            for the scan; the arm stops after it for the pick).
+        ValueError: bad angles or container.
+    """
+    check_angles(start, stop, step)
+    scene = live_scene(arm, scene, False, "search")
+    bin_name = into or _only_container(scene)
+    scene.container(bin_name)
+    scan = plan_scan(arm, scene, start, stop, step)
+    with scan_sensor(arm, scan, channel, port, seed) as sensor:
+        found = locate(arm, scan, sensor, start, stop, step)
+        via = sensor.via
+    if found is None:
+        return SearchResult(False, None, None, None, tuple(scan.readings), None, _rest(arm), via)
+    angle, dist = found
+    position = scan.object_at(arm, angle, dist, _size(arm))
+    plan = _fetch(arm, scene, position, bin_name)
+    run_checked(arm, plan, poses=False, allow=("dropped", "tipped"))
+    _check_inside(arm, plan, scene.container(bin_name))
+    readings = tuple(scan.readings)
+    return SearchResult(True, angle, dist, position, readings, plan, _rest(arm), via)
+
+
+def check_angles(start: float, stop: float, step: float) -> None:
+    values = (start, stop, step)
+    inside = all(0.0 <= a <= math.pi for a in (start, stop))
+    if not all(math.isfinite(v) for v in values) or not inside or not 0 < step <= abs(stop - start):
+        raise InputError(
+            f"search scans from and to 0..180 deg (002's base servo, 90 straight ahead) with "
+            f"0 < step <= |to - from|; got from {math.degrees(start):g} to "
+            f"{math.degrees(stop):g} step {math.degrees(step):g} deg"
+        )
+
+
+def _only_container(scene: Scene) -> str:
+    if len(scene.containers) != 1:
+        names = ", ".join(c.name for c in scene.containers) or "none"
+        raise InputError(f"search: say which container to drop into (into NAME); scene has {names}")
+    return scene.containers[0].name
+
+
+def _size(arm: Arm) -> float:
+    physics = attached(arm)
+    cubes = () if physics is None else physics.scene.cubes
+    return cubes[0].size if len(cubes) == 1 else OBJECT_SIZE
+
+
+def _fetch(arm: Arm, scene: Scene, position: F64, container: str) -> Plan:
+    """The pick at the estimated ``position`` and the drop over ``container``, planned
+    whole: the scene's nearest cube is planned where it was estimated (the truth is
+    the simulator's)."""
+    cubes = sorted(scene.cubes, key=lambda c: float(np.linalg.norm(c.position - position)))
+    yaw = math.atan2(float(position[1]), float(position[0]))
+    if cubes:
+        est = Cube(cubes[0].name, cubes[0].size, position, yaw)
+        planned = scene.with_cube(est)
+    else:
+        est = Cube("found", OBJECT_SIZE, position, yaw)
+        planned = replace(scene, cubes=(est,))
+    box = scene.container(container)
+
+    def body(c: Context, s: State) -> State:
+        s = pick_any(c, s, est.name, None)
+        return _drop(c, s, box, est.size)
+
+    return plan_task(arm, planned, f"search: drop {est.name} in {container}", body)
+
+
+def _drop(ctx: Context, st: State, box: Container, size: float) -> State:
+    """Carry the held cube over the middle of ``box`` (its lowest corner DROP_HEIGHT
+    above the rim) at the first pitch that works, and open (002 drops it)."""
+    point = box.position + np.array([0.0, 0.0, box.size[2] + size + DROP_HEIGHT])
+    kin = ctx.model.with_grip_width(size)
+    label = f"over {box.name}"
+    first: TaskError | None = None
+    for pitch in DROP_PITCHES:
+        try:
+            st = down(ctx, st, point, pitch, label, kin=kin, ignore=frozenset())
+        except TaskError as exc:
+            first = first or exc
+            continue
+        opening = ctx.model.gripper.width_max
+        return grip(ctx, st, opening, f"drop it in {box.name}")
+    assert first is not None
+    raise first
+
+
+def _check_inside(arm: Arm, plan: Plan, box: Container) -> None:
+    """On a simulated arm: TaskFailed unless the dropped cube lies inside ``box``."""
+    physics = attached(arm)
+    name = next((s.holding for s in plan.steps if s.holding), None)
+    if physics is None or name is None:
+        return
+    cube = physics.cube(name)
+    inside = np.abs(cube.center[:2] - box.position[:2]) <= np.array(box.size[:2]) / 2 - box.wall
+    if not bool(np.all(inside)):
+        raise TaskFailed(
+            f"{plan.task}: {cube_text(cube)}, not inside {box.name}",
+            step=plan.steps[-1].label, detail=cube_text(cube),
+        )  # fmt: skip
+
+
+def _rest(arm: Arm) -> bool:
+    """Back to the model's home, then the servos off if the driver can (002's uM-PWM1)."""
+    arm.home()
+    relax = getattr(arm.driver, "relax", None)
+    if callable(relax):
+        relax()
+        return True
+    return False
