@@ -10,6 +10,7 @@ import math
 from typing import Any
 
 from .._errors import ArmkitError, InputError
+from ._watch import add_watch_options, watched_arm
 
 EPILOG = (
     "Needs --scene FILE|NAME before the command (see 'armkit scene list'). The whole task "
@@ -66,6 +67,7 @@ def _task(sub: argparse._SubParsersAction[Any], name: str, text: str) -> argpars
         help="first waypoint above each grasp [mm] (>= 30, default 30)",
     )
     p.add_argument("--calibration", metavar="FILE", help="the unit's offsets (height_offset_mm, perpendicular_offset_mm); default <config>/<arm>_tasks.toml if present")  # fmt: skip
+    add_watch_options(p)
     p.set_defaults(func=_run)
     return p
 
@@ -87,7 +89,7 @@ def _run(args: argparse.Namespace) -> int:
 
     scene = scene_of(args)
     options = {"clearance": args.clearance, "calibration": args.calibration, "dry_run": True}
-    with _open_arm(args, scene) as arm:
+    with watched_arm(args, scene) as arm:
         plan = _plan(args, tasks, arm, scene, options)
         if args.dry_run:
             print(plan)
@@ -124,14 +126,3 @@ def _to(args: argparse.Namespace) -> Any:
     if (args.to is None) == (args.xyz is None):
         raise ArmkitError(f"'{args.command}' needs TO (a place, board[ROW,COL], cube or container) or --xyz X Y Z [mm], not both")  # fmt: skip
     return args.to if args.to is not None else tuple(args.xyz)
-
-
-def _open_arm(args: argparse.Namespace, scene: Any) -> Any:
-    """The Arm of --arm/--driver/--port with the scene; the simulated servo arm keeps
-    its joints between runs in its state file, as for 'move'."""
-    from ..arm import Arm
-    from ..connect import open_driver
-    from ..model import load_model
-
-    model = load_model(args.arm)
-    return Arm(model, open_driver(model, args.driver, args.port, keep=True), scene=scene)
