@@ -39,7 +39,7 @@ from ..sim import SimArm, World
 from ._state import ArmState, ObjectPose
 
 F64 = NDArray[np.float64]
-PUBLISH_HZ = 60.0  # [1/s of simulated time] live snapshots while followed
+PUBLISH_HZ = 100.0  # [1/s of simulated time] live snapshots while followed
 FOLLOWED_S = 3.0  # [s] a .follow file touched this recently means somebody watches
 LOOK_S = 0.25  # [s of wall time] between looks at the .follow file
 TOUCH_S = 1.0  # [s] how often a follower touches its file
@@ -77,13 +77,14 @@ class LivePublisher:
         if not self._watched():
             self._anchor = None
             return
-        self.publish(t)
         if not world.realtime:
             self._pace(t)
+        self.publish()
 
-    def publish(self, t: float) -> None:
-        """Write the live file now (simulated time ``t`` [s])."""
-        state = ArmState(t, self.arm.q(), self.arm.grip(), self.objects())
+    def publish(self) -> None:
+        """Write the live file now; its time is the wall clock's (``time.monotonic``, the
+        same in every process), so a follower knows how old what it shows is."""
+        state = ArmState(time.monotonic(), self.arm.q(), self.arm.grip(), self.objects())
         write_atomic(self.live, encode(state), durable=False)
 
     def _watched(self) -> bool:
@@ -170,7 +171,8 @@ class LiveSource:
         return time.monotonic()
 
     def state(self, t: float | None = None) -> ArmState:
-        """The newest of the live snapshot and the kept state (home if neither exists)."""
+        """The newest of the live snapshot and the kept state (home if neither exists);
+        its ``t`` is when the other process published it [s, ``time.monotonic``]."""
         if t is not None:
             raise ArmkitError("another process's arm can only be followed now; give t=None")
         self._touch()
@@ -183,7 +185,7 @@ class LiveSource:
         if newest.state.objects:
             self._objects = newest.state.objects
         found = newest.state
-        return ArmState(self.now(), found.q, found.grip, self._objects)
+        return ArmState(found.t, found.q, found.grip, self._objects)
 
     def close(self) -> None:
         """Stop following (the publisher stops writing within ``FOLLOWED_S``)."""
@@ -215,4 +217,4 @@ class LiveSource:
         q = np.radians(np.array(data["q_deg"], dtype=np.float64))
         if q.shape != (self.model.dof,):
             raise ValueError("not this arm's state")
-        return ArmState(0.0, q, float(data["grip_mm"]) / 1000.0)
+        return ArmState(self.now(), q, float(data["grip_mm"]) / 1000.0)
