@@ -182,10 +182,10 @@ def _finish(
 
 
 def _serve(view: Any, stop: Any, poses: dict[str, Any]) -> int:
-    print(f"armkit view: {view.url}  (Ctrl-C stops)", flush=True)
-    if view.host not in ("127.0.0.1", "localhost", "::1"):
-        print(f"armkit view: serving on {view.host}: other computers can open it and move the arm")
-    try:
+    try:  # Ctrl-C as soon as the URL is out still stops cleanly
+        print(f"armkit view: {view.url}  (Ctrl-C stops)", flush=True)
+        if view.host not in ("127.0.0.1", "localhost", "::1"):
+            print(f"armkit view: serving on {view.host}: other computers can open the page")
         while True:
             time.sleep(0.5)
     except KeyboardInterrupt:

@@ -101,12 +101,13 @@ def watched_arm(args: argparse.Namespace, scene: Any = None) -> Iterator[Any]:
 
 
 @contextlib.contextmanager
-def watching(args: argparse.Namespace, arm: Any, scene: Any = None) -> Iterator[None]:
+def watching(args: argparse.Namespace, arm: Any, scene: Any = None) -> Iterator[Any]:
     """Attach the scene's physics, the GIF recorder and the view to ``arm``'s world for
-    the block; then write the GIF (only when the block ends without an error)."""
+    the block (which gets the ``ScenePhysics``, None without a scene or a simulation);
+    then write the GIF (only when the block ends without an error)."""
     world = arm.world
     if world is None:
-        yield
+        yield None
         return
     from ..viz import GifRecorder, publisher_of
     from ..viz._state import cubes
@@ -120,7 +121,7 @@ def watching(args: argparse.Namespace, arm: Any, scene: Any = None) -> Iterator[
     with contextlib.ExitStack() as stack:
         if getattr(args, "view", False):
             stack.enter_context(_served(args, world, physics, scene))
-        yield
+        yield physics
     if detach is not None and recorder is not None:
         detach()
         _write_gif(arm, recorder, Path(args.gif), scene)

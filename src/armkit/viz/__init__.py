@@ -13,6 +13,7 @@ from ._gif import GifRecorder as GifRecorder
 from ._gif import default_tour as default_tour
 from ._gif import record_path as record_path
 from ._gif import write_gif as write_gif
+from ._gif import write_picture as write_picture
 from ._live import LivePublisher as LivePublisher
 from ._live import LiveSource as LiveSource
 from ._live import publisher_of as publisher_of

@@ -25,7 +25,7 @@ from ..model import ArmModel
 from ..scene import Scene, ScenePhysics
 from ..sim import SimArm, World
 from ._arm_shapes import TRAIL_COLOUR, arm_primitives, reach_of, table_primitive
-from ._primitives import Polyline
+from ._primitives import Polyline, Primitive
 from ._scene_shapes import cube_primitive, scene_primitives
 from ._state import ArmState, cubes
 from ._target import check_target
@@ -114,23 +114,45 @@ def write_gif(
     raster = _raster()
     T = np.eye(4) if scene is None else scene.T_world_base
     tips = (T @ fk(model, np.array([f.q for f in frames])))[:, :3, 3]
-    still = [table_primitive(model, scene), *(scene_primitives(scene) if scene else [])]
     camera = raster.look_from_front_right(T[:3, 3], reach_of(model), *size)
-    cubes = {c.name: c for c in scene.cubes} if scene is not None else {}
     images = []
     for i, state in enumerate(frames):
-        shapes = {p.name: p for p in still}
-        for obj in state.objects:
-            if obj.name in cubes:
-                shapes[f"/scene/{obj.name}"] = cube_primitive(cubes[obj.name], scene, obj.T)
-        arm = arm_primitives(model, state.q, state.grip, T_world_base=T)
         trail = [Polyline("/trail", tips[: i + 1], TRAIL_COLOUR, 2.0)] if i else []
         title = f"{model.name}  t = {state.t - frames[0].t:.2f} s"
-        images.append(raster.render([*shapes.values(), *arm, *trail], camera, title))
+        images.append(raster.render([*shapes_of(model, state, scene), *trail], camera, title))
     out = Path(path)
     duration = round(1000.0 / fps)
     images[0].save(out, save_all=True, append_images=images[1:], duration=duration, loop=0)
     return out
+
+
+def write_picture(
+    model: ArmModel,
+    state: ArmState,
+    path: str | Path,
+    *,
+    scene: Scene | None = None,
+    title: str = "",
+    size: tuple[int, int] = (800, 600),
+) -> Path:
+    """Draw one moment (``state``) of the arm and ``scene`` into the image file ``path``
+    (PNG, ...), ``size`` (width, height) [px], offscreen. Returns the path."""
+    raster = _raster()
+    T = np.eye(4) if scene is None else scene.T_world_base
+    camera = raster.look_from_front_right(T[:3, 3], reach_of(model), *size)
+    raster.render(shapes_of(model, state, scene), camera, title).save(Path(path))
+    return Path(path)
+
+
+def shapes_of(model: ArmModel, state: ArmState, scene: Scene | None) -> list[Primitive]:
+    """The table, ``scene`` with its cubes where ``state`` has them, and the arm."""
+    T = np.eye(4) if scene is None else scene.T_world_base
+    shapes = {p.name: p for p in [table_primitive(model, scene), *(scene_primitives(scene) if scene else [])]}  # fmt: skip
+    cubes = {c.name: c for c in scene.cubes} if scene is not None else {}
+    for obj in state.objects:
+        if obj.name in cubes:
+            shapes[f"/scene/{obj.name}"] = cube_primitive(cubes[obj.name], scene, obj.T)
+    return [*shapes.values(), *arm_primitives(model, state.q, state.grip, T_world_base=T)]
 
 
 def _raster() -> Any:

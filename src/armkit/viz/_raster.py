@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
-from PIL import Image, ImageDraw
+from PIL import Image, ImageDraw, ImageFont
 
 from ._primitives import RGB, Axes, Box, Capsule, Cylinder, Label, Polyline, Primitive, Sphere
 
@@ -95,8 +95,16 @@ def render(primitives: Iterable[Primitive], camera: Camera, title: str = "") -> 
     for prim in overlays:
         _overlay(draw, prim, camera)
     if title:
-        draw.text((8, 6), title, fill=(20, 20, 20))
+        draw.text((8, 6), title, fill=(20, 20, 20), font=_font(14))
     return image
+
+
+def _font(size: int) -> ImageFont.FreeTypeFont | ImageFont.ImageFont:
+    """Pillow's own font at ``size`` [px] (its bitmap font on an old Pillow)."""
+    try:
+        return ImageFont.load_default(size=size)
+    except TypeError:
+        return ImageFont.load_default()
 
 
 def _shade(colour: RGB, normal: F64) -> RGB:
@@ -146,7 +154,7 @@ def _overlay(draw: ImageDraw.ImageDraw, prim: Primitive, camera: Camera) -> None
         draw.ellipse((u - r, v - r, u + r, v + r), fill=prim.color)
     elif isinstance(prim, Label):
         (u, v), _ = (a[0] for a in camera.project(prim.position[None, :]))
-        draw.text((float(u), float(v)), prim.text, fill=prim.color)
+        draw.text((float(u), float(v)), prim.text, fill=prim.color, font=_font(12))
     elif isinstance(prim, Axes):
         ends = prim.T[:3, 3] + prim.length * prim.T[:3, :3].T
         pixels, _ = camera.project(np.vstack([prim.T[:3, 3], ends]))
