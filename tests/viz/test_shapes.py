@@ -96,10 +96,13 @@ def test_a_board_has_a_socket_at_each_socket_floor() -> None:
     scene = load_scene("board_001")
     board = scene.board("board")
     shapes = {p.name: p for p in scene_primitives(scene)}
-    socket = shapes["/scene/board/socket_1_2"]
+    socket = shapes["/scene/board_sockets/1_2"]
     assert isinstance(socket, Box)
     np.testing.assert_allclose(socket.T[:2, 3], board.socket(1, 2)[:2])
     assert socket.T[2, 3] > board.socket(1, 2)[2]  # drawn on the board's top, over the hole
+    # no primitive is named under another one (a web view would nest it in that one's frame)
+    names = set(shapes)
+    assert not [n for n in names if any(n.startswith(m + "/") for m in names)]
 
 
 def test_moved_carries_every_kind_of_primitive() -> None:

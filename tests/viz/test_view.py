@@ -40,7 +40,7 @@ def test_update_draws_the_arm_and_sends_only_changes(view: View, arm: armkit.Arm
     assert view.update()
     names = view.renderer.names
     assert "/table" in names and {"/scene/red", "/scene/green", "/scene/blue"} <= set(names)
-    assert "/scene/board" in names and "/scene/board/socket_2_2" in names
+    assert "/scene/board" in names and "/scene/board_sockets/2_2" in names
     assert {f"/arm/link_{i}" for i in range(5)} <= set(names)
     assert not view.update()  # nothing moved
     arm.move_joints([30.0, 0.0, 0.0, 0.0])

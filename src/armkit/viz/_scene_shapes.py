@@ -3,7 +3,7 @@ cubes, containers, pen stands, sheets of paper, instruments and named places.
 
 Everything is in the scene's (table's) frame [m]; the arm is drawn there through
 ``Scene.T_world_base``. Names are stable (``/scene/<object name>``,
-``/scene/<board>/socket_<row>_<col>``), so a view moves a cube by redrawing
+``/scene/<board>_sockets/<row>_<col>``), so a view moves a cube by redrawing
 the primitive of the same name (``cube_primitive``).
 """
 
@@ -92,7 +92,7 @@ def board_primitives(board: Board) -> list[Primitive]:
     for row in range(board.rows):
         for col in range(board.cols):
             floor = board.socket(row, col) + np.array([0.0, 0.0, board.socket_depth + THIN / 2])
-            name = f"/scene/{board.name}/socket_{row}_{col}"
+            name = f"/scene/{board.name}_sockets/{row}_{col}"  # not under the board: its frame
             shapes.append(Box(name, hole, pose(floor, board.yaw), SOCKET_COLOUR))
     return shapes
 
