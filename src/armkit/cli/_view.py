@@ -14,7 +14,8 @@ from typing import Any
 
 import numpy as np
 
-from .._errors import ArmkitError, InputError
+from .._errors import InputError
+from ._watch import web_module
 
 EPILOG = """\
 The page is served from this computer (no network needed): open the printed URL.
@@ -71,6 +72,11 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         metavar="DEG",
         help="joint angles [deg], one per joint; repeat for a path (moves the arm)",
     )
+    _picture_options(p)
+    p.set_defaults(func=run_view)
+
+
+def _picture_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--screenshot", metavar="FILE.png", help="write a picture of the view and exit")
     p.add_argument(
         "--size", nargs=2, type=int, default=(1024, 768), metavar=("W", "H"), help="picture [px]"
@@ -79,7 +85,6 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         "--gif", metavar="FILE.gif", help="write an animation of the --pose path and exit"
     )
     p.add_argument("--fps", type=float, default=15.0, help="animation frames per second [1/s]")
-    p.set_defaults(func=run_view)
 
 
 def run_view(args: argparse.Namespace) -> int:
@@ -96,7 +101,7 @@ def run_view(args: argparse.Namespace) -> int:
         return _follow(args, model, scene, target, outputs)
     if args.gif:
         return _gif(args, model, poses, Path(args.gif), scene)
-    web = _web()
+    web = web_module()
     arm = _open_arm(args, model, scene)
     view = web.View(_source(arm, scene), scene=scene, **_view_options(args))
     try:
@@ -146,7 +151,7 @@ def _follow(
     from ..connect import sim_state_file
     from ..viz import LiveSource
 
-    web = _web()
+    web = web_module()
     state = Path(args.port) if args.port else sim_state_file(model)
     source = LiveSource(model, state)
     view = web.View(source, scene=scene, **_view_options(args))
@@ -195,14 +200,6 @@ def _serve(view: Any, stop: Any, poses: dict[str, Any]) -> int:
     for pose in poses.values():
         print(f"  {pose.line()}")
     return 0
-
-
-def _web() -> Any:
-    try:
-        from ..viz import web
-    except ImportError as exc:
-        raise ArmkitError(f"the 3D view needs viser ({exc}): pip install 'armkit[web]'") from None
-    return web
 
 
 def _open_arm(args: argparse.Namespace, model: Any, scene: Any) -> Any:

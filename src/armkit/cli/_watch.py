@@ -75,7 +75,7 @@ def watch_world(args: argparse.Namespace) -> Any:
     check_watch_options(args)
     if not getattr(args, "view", False):
         return None
-    _web()  # the extra is there before anything is opened
+    web_module()  # the extra is there before anything is opened
     from ..sim import World
 
     return World(realtime=True)
@@ -139,7 +139,7 @@ def _physics(world: Any, scene: Any) -> Any:
 
 @contextlib.contextmanager
 def _served(args: argparse.Namespace, world: Any, physics: Any, scene: Any) -> Iterator[None]:
-    web = _web()
+    web = web_module()
     from ..viz import WorldSource
 
     with web.View(WorldSource(world, physics=physics), scene=scene, port=args.view_port) as view:
@@ -169,7 +169,8 @@ def _write_gif(arm: Any, recorder: Any, path: Path, scene: Any) -> None:
     print(f"armkit: wrote {path} ({len(frames)} frames, {took:.1f} s of motion)")
 
 
-def _web() -> Any:
+def web_module() -> Any:
+    """``armkit.viz.web`` (imports viser), or ArmkitError saying how to install it."""
     try:
         from ..viz import web
     except ImportError as exc:

@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -23,12 +23,14 @@ from ..arm import Arm
 from ..kinematics import fk
 from ..model import ArmModel
 from ..scene import Scene, ScenePhysics
-from ..sim import SimArm, World
 from ._arm_shapes import TRAIL_COLOUR, arm_primitives, reach_of, table_primitive
 from ._primitives import Polyline, Primitive
 from ._scene_shapes import cube_primitive, scene_primitives
-from ._state import ArmState, cubes
+from ._state import ArmState, Truth, cubes
 from ._target import check_target
+
+if TYPE_CHECKING:
+    from ..connect import World
 
 F64 = NDArray[np.float64]
 HOLD = 0.3  # [s] the arm rests at each pose of the path
@@ -41,7 +43,7 @@ class GifRecorder:
     (``frames``), with the cubes of ``physics`` if given; at most ``MOST_FRAMES``
     (a longer job is thinned: ``fps`` halves)."""
 
-    def __init__(self, arm: SimArm, fps: float, physics: ScenePhysics | None = None) -> None:
+    def __init__(self, arm: Truth, fps: float, physics: ScenePhysics | None = None) -> None:
         self.arm, self.fps, self.physics = arm, fps, physics
         self.frames: list[ArmState] = []
         self._next = -1.0

@@ -28,6 +28,7 @@ import weakref
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
@@ -35,8 +36,10 @@ from numpy.typing import NDArray
 from .._errors import ArmkitError
 from .._files import write_atomic
 from ..model import ArmModel
-from ..sim import SimArm, World
-from ._state import ArmState, ObjectPose
+from ._state import ArmState, ObjectPose, Truth
+
+if TYPE_CHECKING:
+    from ..connect import World
 
 F64 = NDArray[np.float64]
 PUBLISH_HZ = 100.0  # [1/s of simulated time] live snapshots while followed
@@ -60,7 +63,7 @@ class LivePublisher:
     follows it (see the module doc). ``objects`` gives the cubes' poses (set by
     whoever attaches a ``ScenePhysics``)."""
 
-    def __init__(self, arm: SimArm, state: Path) -> None:
+    def __init__(self, arm: Truth, state: Path) -> None:
         self.arm = arm
         self.live, self.follow = live_path(state), follow_path(state)
         self.objects: Callable[[], tuple[ObjectPose, ...]] = tuple
@@ -106,7 +109,7 @@ class LivePublisher:
             time.sleep(min(ahead, 1.0))
 
 
-def publish_live(world: World, arm: SimArm, state: Path) -> LivePublisher:
+def publish_live(world: World, arm: Truth, state: Path) -> LivePublisher:
     """Attach a ``LivePublisher`` of ``arm`` (kept in ``state``) to ``world``; remembered
     for ``publisher_of``. The factory calls this for every kept simulated arm."""
     publisher = LivePublisher(arm, state)

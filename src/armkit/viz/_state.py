@@ -19,10 +19,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
+from ..connect import World, world_of
 from ..drivers._driver import Driver
 from ..model import ArmModel
 from ..scene import ScenePhysics
-from ..sim import SimArm, World, world_of
 
 F64 = NDArray[np.float64]
 
@@ -70,6 +70,17 @@ class StateSource(Protocol):
         ...
 
 
+class Truth(Protocol):
+    """What a view reads of a simulated arm (``armkit.sim.SimArm``)."""
+
+    model: ArmModel
+    name: str
+
+    def q(self) -> F64: ...
+
+    def grip(self) -> float: ...
+
+
 class WorldSource:
     """Follow arm ``arm`` (None: the only one) of a simulation ``world``, at world time:
     the true joint angles and gripper opening, and, with ``physics`` attached to the
@@ -79,7 +90,7 @@ class WorldSource:
         self, world: World, arm: str | None = None, physics: ScenePhysics | None = None
     ) -> None:
         self.world = world
-        self.sim: SimArm = world.arm(arm)
+        self.sim: Truth = world.arm(arm)
         self.physics = physics
 
     @property
