@@ -71,10 +71,8 @@ def run_demo(args: argparse.Namespace) -> int:
     _put_away()
     _other_scenes()
     _draw_circle()
-    print("\nNext, try:")
-    for command in NEXT:
-        print(f"  {command}")
-    print(f"  {FOLLOW}   # then run any of the above in another terminal, and open the URL")
+    print("\nNext: " + ", ".join(f"'{command}'" for command in NEXT) + ".")
+    print(f"Watch them: '{FOLLOW}' in one terminal (open its URL), one of them in another.")
     return 0
 
 

@@ -31,7 +31,7 @@ examples:
   armkit --scene board_001 view --pose 0 20 10 -40 --screenshot view.png
   armkit --scene board_001 view --follow        # then, in another terminal:
   armkit --scene board_001 stack red green blue
-  armkit --arm lynx6 view --gif tour.gif --pose 0 0 0 0 0 --pose 30 -20 20 -10 0
+  armkit --arm lynx6 view --gif tour.gif --pose 90 90 90 90 90 --pose 60 110 70 80 90
 """
 
 

@@ -33,7 +33,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import ArmkitError
+from .._errors import ArmkitError, InputError
 from .._files import write_atomic
 from ..model import ArmModel
 from ._state import ArmState, ObjectPose, Truth
@@ -138,7 +138,7 @@ def decode(text: str, dof: int) -> ArmState:
     data = json.loads(text)
     q = np.array(data["q"], dtype=np.float64)
     if q.shape != (dof,) or not np.all(np.isfinite(q)):
-        raise ValueError(f"expected {dof} joint angles, got {data['q']!r}")
+        raise InputError(f"expected {dof} joint angles, got {data['q']!r}")
     objects = tuple(
         ObjectPose(str(o["name"]), np.array(o["T"], dtype=np.float64).reshape(4, 4))
         for o in data["objects"]
@@ -219,5 +219,5 @@ class LiveSource:
         data = json.loads(text)
         q = np.radians(np.array(data["q_deg"], dtype=np.float64))
         if q.shape != (self.model.dof,):
-            raise ValueError("not this arm's state")
+            raise InputError("not this arm's state")
         return ArmState(self.now(), q, float(data["grip_mm"]) / 1000.0)
