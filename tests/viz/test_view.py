@@ -119,3 +119,23 @@ def test_a_grasped_cube_moves_with_the_gripper_on_the_page() -> None:
             after = np.array(node.position)
             assert after[2] - before[2] == pytest.approx(0.03, abs=2e-3)
             assert [o.name for o in view.state.objects] == ["green", "blue", "red"]  # type: ignore[union-attr]
+
+
+def test_what_the_tool_draws_on_paper_is_inked() -> None:
+    from armkit.scene import Scene, Sheet
+
+    paper = Sheet("paper", np.array([0.13, -0.05, 0.0]), np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0]), 0.1, 0.1)  # fmt: skip
+    scene = Scene("drawing", sheets=(paper,))
+    with armkit.Arm("openmanipulator_x") as arm, View(DriverSource(arm.model, arm.driver), scene=scene, port=0) as view:  # fmt: skip
+        arm.move_to(180, -20, 30, -90)
+        view.update()
+        assert not [n for n in view.renderer.names if n.startswith("/ink/")]  # in the air
+        for y in (-20.0, -10.0, 0.0, 10.0):
+            arm.move_to(180, y, 0.5, -90)
+            view.update()
+        arm.move_to(180, 10, 30, -90)
+        view.update()
+        assert [n for n in view.renderer.names if n.startswith("/ink/")] == ["/ink/paper/1"]
+        ((sheet, points),) = view.ink.strokes
+        assert sheet is paper and len(points) >= 4
+        np.testing.assert_allclose(np.array(points)[:, 1], [-0.02, -0.01, 0.0, 0.01], atol=5e-4)

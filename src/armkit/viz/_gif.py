@@ -24,6 +24,7 @@ from ..kinematics import fk
 from ..model import ArmModel
 from ..scene import Scene, ScenePhysics
 from ._arm_shapes import TRAIL_COLOUR, arm_primitives, reach_of, table_primitive
+from ._ink import Ink
 from ._primitives import Polyline, Primitive
 from ._scene_shapes import cube_primitive, scene_primitives
 from ._state import ArmState, Truth, cubes
@@ -118,8 +119,14 @@ def write_gif(
     tips = (T @ fk(model, np.array([f.q for f in frames])))[:, :3, 3]
     camera = raster.look_from_front_right(T[:3, 3], reach_of(model), *size)
     images = []
+    ink, strokes = Ink(scene.sheets if scene is not None else ()), {}
     for i, state in enumerate(frames):
-        trail = [Polyline("/trail", tips[: i + 1], TRAIL_COLOUR, 2.0)] if i else []
+        stroke = ink.add(tips[i])
+        if stroke is not None:
+            strokes[stroke.name] = stroke
+        trail = (
+            [Polyline("/trail", tips[: i + 1], TRAIL_COLOUR, 2.0), *strokes.values()] if i else []
+        )
         title = f"{model.name}  t = {state.t - frames[0].t:.2f} s"
         images.append(raster.render([*shapes_of(model, state, scene), *trail], camera, title))
     out = Path(path)

@@ -5,7 +5,8 @@ view itself, so it works with no network. It shows the arm on its table and
 the scene's objects (``armkit.scene.Scene``: boards, cubes, containers, paper,
 instruments) in the scene's frame. A thread reads the ``StateSource``
 ``rate_hz`` times a second and sends what changed (the link poses, the jaws,
-the cubes that moved, the tool's trail); a target marker shows whether a
+the cubes that moved, the tool's trail, the ink on the paper where the tool
+touched it); a target marker shows whether a
 gripper target is reachable, on a cube and clear (the scene's clearance check).
 """
 
@@ -25,6 +26,7 @@ from numpy.typing import ArrayLike, NDArray
 from ..._errors import ArmkitError, InputError
 from ...scene import Scene
 from .._arm_shapes import TRAIL_COLOUR, arm_primitives, reach_of, table_primitive
+from .._ink import Ink
 from .._primitives import Label, Polyline, Primitive, Sphere
 from .._scene_shapes import cube_primitive, scene_primitives
 from .._state import ArmState, ObjectPose, StateSource
@@ -80,6 +82,7 @@ class View:
         self.scene = scene
         self.T_world_base = np.eye(4) if scene is None else scene.T_world_base
         self._objects: dict[str, F64] = {}
+        self.ink = Ink(scene.sheets if scene is not None else ())
         self.rate_hz = rate_hz
         self.frames = frames
         self.server = _serve(host, port)
@@ -219,11 +222,15 @@ class View:
             self._stop.wait(max(0.0, deadline - time.monotonic()))
 
     def _grow_trail(self, q: F64) -> None:
-        if self._trail_max <= 0:
-            return
+        """The tool's trail, and the ink on the scene's paper where the tool touches it."""
         from ...kinematics import fk
 
         tip = (self.T_world_base @ fk(self.model, q))[:3, 3]
+        stroke = self.ink.add(tip)
+        if stroke is not None:
+            self.renderer.draw_one(stroke)
+        if self._trail_max <= 0:
+            return
         if self._trail and np.linalg.norm(tip - self._trail[-1]) < TRAIL_STEP:
             return
         self._trail.append(tip)
