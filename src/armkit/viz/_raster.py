@@ -17,7 +17,18 @@ import numpy as np
 from numpy.typing import NDArray
 from PIL import Image, ImageDraw, ImageFont
 
-from ._primitives import RGB, Axes, Box, Capsule, Cylinder, Label, Polyline, Primitive, Sphere
+from ._primitives import (
+    RGB,
+    Axes,
+    Box,
+    Capsule,
+    Cylinder,
+    Label,
+    Polyline,
+    Primitive,
+    Sphere,
+    segment_frame,
+)
 
 F64 = NDArray[np.float64]
 SIDES = 10  # of a cylinder's or a capsule's prism
@@ -130,13 +141,8 @@ def _faces(prim: Primitive) -> list[_Face]:
 
 def _prism(p0: F64, p1: F64, radius: float, colour: RGB) -> list[_Face]:
     """A ``SIDES``-sided prism of ``radius`` [m] from ``p0`` to ``p1`` [m], ends closed."""
-    axis = p1 - p0
-    length = float(np.linalg.norm(axis))
-    z = axis / length if length > 1e-9 else np.array([0.0, 0.0, 1.0])
-    helper = np.array([1.0, 0.0, 0.0]) if abs(z[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
-    x = np.cross(helper, z)
-    x /= np.linalg.norm(x)
-    y = np.cross(z, x)
+    T, _ = segment_frame(p0, p1)
+    x, y = T[:3, 0], T[:3, 1]
     angles = np.linspace(0.0, 2 * math.pi, SIDES, endpoint=False)
     ring = radius * (np.cos(angles)[:, None] * x + np.sin(angles)[:, None] * y)
     a, b, c = p0 + ring, p1 + ring, (p0 + p1) / 2
