@@ -1,26 +1,37 @@
-"""How well the 3D page follows an arm moving in the same process.
+"""How well the 3D page follows an arm: moving in the same process, and moved by
+ANOTHER process (``armkit view --follow``).
 
-The simulated OpenManipulator-X swings between two poses in real time (a
-``Mover`` paces the simulation by the wall clock) while ``View`` reads it
-``rate`` times a second and sends what moved. Headless Chromium opens the
+Same process: the simulated OpenManipulator-X swings between two poses in real
+time (a ``Mover`` paces the simulation by the wall clock) while ``View`` reads
+it ``rate`` times a second and sends what moved. Follow: a second Python process
+opens the simulated arm as the CLI does (its state kept in a file, so it
+publishes on the live channel while followed) and swings it; this process's
+``View`` of a ``LiveSource`` follows it ``rate`` times a second. Headless Chromium opens the
 page; the DevTools protocol reports every websocket frame the page receives,
 stamped on the same monotonic clock as ``time.monotonic``. Each frame is
 decoded (viser's zstd-compressed msgpack) and matched to the read that
 produced it by the pose it carries, which gives:
 
-- updates/s: distinct arm states the page received per second;
+- sent/s, page/s: distinct arm states the view sent, the page received, per
+  second while the arm moved (from the first to the last state that changed);
 - lag: page receive time minus the time the state was read from the driver
-  (what a person sees is older by up to one period more: the age of the read);
+  (follow: minus the time the other process published it); what a person sees
+  is older by up to one period more (the age of the read);
 - draws/s: frames the page's renderer drew (requestAnimationFrame).
 
-    .venv/bin/python benchmarks/view.py [--seconds 5] [--rates 30 60]
+    .venv/bin/python benchmarks/view.py [--seconds 5] [--rates 30 60] [--follow-rates 30 60]
 """
 
 from __future__ import annotations
 
 import argparse
 import base64
+import os
+import subprocess
+import sys
+import tempfile
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import msgspec
@@ -28,7 +39,8 @@ import numpy as np
 import zstandard
 
 import armkit
-from armkit.viz import DriverSource, Goal, Mover
+from armkit.connect import sim_state_file
+from armkit.viz import DriverSource, Goal, LiveSource, Mover, StateSource
 from armkit.viz.web import Chromium, View
 from armkit.viz.web._picture import connected_client, wait_for_camera
 
@@ -37,8 +49,24 @@ PROBE = "/arm/link_4"  # the node whose position identifies a state
 COUNT_DRAWS = "window.__draws = 0; (function tick(){ window.__draws++; requestAnimationFrame(tick); })(); true"
 
 
+SWING = """
+import sys, time
+import numpy as np
+import armkit
+from armkit.connect import open_driver
+model = armkit.load_model("openmanipulator_x")
+with armkit.Arm(model, open_driver(model, keep=True)) as arm:
+    end = time.monotonic() + float(sys.argv[1])
+    i = 0
+    while time.monotonic() < end:
+        arm.move_joints([-60.0, 10.0, 10.0, -20.0] if i % 2 == 0 else [60.0, -20.0, 30.0, 10.0], speed=0.6)
+        i += 1
+"""
+
+
 @dataclass(frozen=True)
 class Row:
+    what: str
     rate: float
     reads: float
     sent: float
@@ -60,70 +88,113 @@ def _decode(payload: str) -> list[dict[str, object]]:
 
 
 def measure(rate: float, seconds: float) -> Row:
+    """Same process: the arm moved by a Mover, the view of its driver."""
     arm = armkit.Arm("openmanipulator_x")
+    mover = Mover(arm)
+
+    def swing(start: float) -> None:
+        i = 0
+        while time.monotonic() - start < seconds:
+            mover.request(Goal(q=POSES[i % 2], speed=0.6))
+            mover.wait_idle(seconds)
+            i += 1
+        mover.close()
+
+    return _measure("same process", DriverSource(arm.model, arm.driver), rate, swing)
+
+
+def measure_follow(rate: float, seconds: float) -> Row:
+    """Another process moves the arm; the view follows it through the live channel."""
+    with tempfile.TemporaryDirectory(prefix="armkit-bench-") as config:
+        os.environ["ARMKIT_CONFIG_DIR"] = config
+        model = armkit.load_model("openmanipulator_x")
+        source = LiveSource(model, sim_state_file(model))
+        source.state()  # the follow file exists before the other process starts
+
+        def swing(start: float) -> None:
+            code = subprocess.run([sys.executable, "-c", SWING, str(seconds)], check=False)
+            assert code.returncode == 0
+
+        try:
+            return _measure("other process", source, rate, swing)
+        finally:
+            source.close()
+            del os.environ["ARMKIT_CONFIG_DIR"]
+
+
+def _measure(what: str, source: StateSource, rate: float, swing: Callable[[float], None]) -> Row:
+    model = source.model
     sent: dict[tuple[float, ...], float] = {}
+    shown: list[float] = []  # when each update was sent [s]
     with (
-        View(DriverSource(arm.model, arm.driver), port=0, rate_hz=rate) as view,
+        View(source, port=0, rate_hz=rate) as view,
         Chromium(960, 640, record_frames=True) as browser,
     ):
 
         def remember() -> None:
             state = view.state
             if state is not None:
-                sent[_key(armkit.fk_frames(arm.model, state.q)[4, :3, 3])] = state.t
+                sent[_key(armkit.fk_frames(model, state.q)[4, :3, 3])] = state.t
+                shown.append(time.monotonic())
 
         view.on_update(remember)
         view.start()
         browser.open(view.url, "document.querySelector('canvas') !== null")
         wait_for_camera(view, connected_client(view))
         browser.evaluate(COUNT_DRAWS)
-        mover = Mover(arm)
         stats0, first_frame = view.stats(), len(browser.frames)
         start = time.monotonic()
-        i = 0
-        while time.monotonic() - start < seconds:
-            mover.request(Goal(q=POSES[i % 2], speed=0.6))
-            mover.wait_idle(seconds)
-            i += 1
+        swing(start)
         elapsed = time.monotonic() - start
         draws = float(browser.evaluate("window.__draws"))
-        mover.close()
         time.sleep(0.3)
         stats = view.stats()
         frames = browser.frames[first_frame:]
-    lags = []
-    for frame in frames:
-        for msg in _decode(frame.payload):
-            if msg.get("type") == "SetPositionMessage" and msg.get("name") == PROBE:
-                t_read = sent.get(_key(msg["position"]))
-                if t_read is not None and t_read >= start:
-                    lags.append(frame.time - t_read)
-    lag = np.array(lags) * 1000.0
+    lag = np.array(_lags(frames, sent, start)) * 1000.0
+    moving = [t for t in shown if t >= start]
+    span = moving[-1] - moving[0]  # while the arm moved (the other process starts first)
     return Row(
+        what,
         rate,
         (stats.reads - stats0.reads) / elapsed,
-        (stats.updates - stats0.updates) / elapsed,
-        len(lags) / elapsed,
+        (len(moving) - 1) / span,
+        len(lag) / span,
         (float(np.median(lag)), float(np.percentile(lag, 95)), float(lag.max())),
         draws / elapsed,
     )
+
+
+def _lags(frames: list[object], sent: dict[tuple[float, ...], float], start: float) -> list[float]:
+    lags = []
+    for frame in frames:
+        for msg in _decode(frame.payload):  # type: ignore[attr-defined]
+            if msg.get("type") == "SetPositionMessage" and msg.get("name") == PROBE:
+                t_read = sent.get(_key(msg["position"]))
+                if t_read is not None and t_read >= start:
+                    lags.append(frame.time - t_read)  # type: ignore[attr-defined]
+    return lags
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=5.0, help="motion per rate [s]")
     parser.add_argument("--rates", type=float, nargs="+", default=[30.0, 60.0], help="[Hz]")
+    parser.add_argument(
+        "--follow-rates", type=float, nargs="+", default=[30.0, 60.0], help="[Hz], --follow"
+    )
     args = parser.parse_args()
     print("armkit view following the simulated OpenManipulator-X moving in real time")
-    print(f"{args.seconds:.0f} s of motion per row; lag = page receives - state read [ms]\n")
-    header = f"{'rate Hz':>8} {'reads/s':>8} {'sent/s':>7} {'page/s':>7} {'lag p50':>8} {'p95':>6} {'max':>6} {'draws/s':>8}"
+    print(f"{args.seconds:.0f} s of motion per row; lag = page receives - state read [ms]")
+    print("(other process: - state published by the process that moves the arm)\n")
+    header = f"{'moved by':<14} {'rate Hz':>8} {'reads/s':>8} {'sent/s':>7} {'page/s':>7} {'lag p50':>8} {'p95':>6} {'max':>6} {'draws/s':>8}"
     print(header)
     print("-" * len(header))
-    for rate in args.rates:
-        r = measure(rate, args.seconds)
+    rows = [(measure, r) for r in args.rates] + [(measure_follow, r) for r in args.follow_rates]
+    for how, rate in rows:
+        r = how(rate, args.seconds)
         p50, p95, worst = r.lag_ms
         print(
-            f"{r.rate:8.0f} {r.reads:8.1f} {r.sent:7.1f} {r.received:7.1f} "
+            f"{r.what:<14} {r.rate:8.0f} {r.reads:8.1f} {r.sent:7.1f} {r.received:7.1f} "
             f"{p50:8.1f} {p95:6.1f} {worst:6.1f} {r.draws:8.1f}"
         )
 

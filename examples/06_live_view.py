@@ -1,9 +1,11 @@
 """Watch the simulated OpenManipulator-X in a live 3D page while this program moves it.
 
 The view (viser, ``pip install 'armkit[web]'``) serves a page on this computer
-only; open the printed URL in a browser. The arm visits the cubes of a small
-test scene at the pace of real time, a target marker says whether a point is
-reachable and clear, and the program prints how many updates it sent.
+only; open the printed URL in a browser. The simulation runs in real time
+(``World(realtime=True)``), 001's board scene is on the table, and its physics
+(``ScenePhysics``) grasps and carries the cubes: the view shows the World's
+truth (``WorldSource``), so the red cube leaves its socket in the gripper. A
+target marker says whether a point is reachable, on a cube and clear.
 Pass --forever to keep the page open (Ctrl-C stops).
 
 Run: .venv/bin/python examples/06_live_view.py
@@ -16,30 +18,31 @@ import sys
 import time
 
 import armkit
-from armkit.viz import DriverSource, Goal, Mover, cubes_scene, default_tour
+from armkit import tasks
+from armkit.scene import ScenePhysics, load_scene
+from armkit.sim import World
+from armkit.viz import WorldSource
 from armkit.viz.web import View
 
-with (
-    armkit.Arm("openmanipulator_x") as arm,
-    View(DriverSource(arm.model, arm.driver), scene=cubes_scene(), port=0) as view,
-):
-    view.start()
-    print(f"live view: {view.url}")
-    for xyz, pitch in (((0.2, -0.08, 0.07), -90.0), ((0.45, 0.0, 0.05), -90.0)):
-        check = view.set_target(xyz, math.radians(pitch))
-        print(
-            f"target {tuple(round(v * 1000) for v in xyz)} mm: {'reachable' if check.ok else check.reason}"
-        )
-    mover = Mover(arm)
-    start = time.monotonic()
-    for q in default_tour(arm.model):
-        mover.request(Goal(q=q, speed=1.0))
-        mover.wait_idle()
-    mover.close()
-    seconds = time.monotonic() - start
-    stats = view.stats()
-    print(f"the arm visited the cubes in {seconds:.1f} s; the page got {stats.updates} updates")
-    x, y, z, p = arm.position()
-    print(f"back home: gripper at ({x:.0f}, {y:.0f}, {z:.0f}) mm, pitch {p:.0f} deg")
-    while "--forever" in sys.argv:
-        time.sleep(1.0)
+scene = load_scene("board_001")
+world = World(realtime=True)
+with armkit.Arm("openmanipulator_x", world=world, scene=scene) as arm:
+    physics = ScenePhysics(scene)
+    world.attach(physics)
+    with View(WorldSource(world, physics=physics), scene=scene, port=0) as view:
+        view.start()
+        print(f"live view: {view.url}")
+        for xyz, pitch in (((0.22, -0.045, 0.0155), -90.0), ((0.45, 0.0, 0.05), -90.0)):
+            check = view.set_target(xyz, math.radians(pitch))
+            verdict = "reachable" if check.ok else check.reason
+            on = f" on {check.on}" if check.on else ""
+            print(f"target {tuple(round(v * 1000) for v in xyz)} mm{on}: {verdict}")
+        start = time.monotonic()
+        tasks.run_plan(arm, tasks.pick(arm, scene, "red", dry_run=True))
+        seconds = time.monotonic() - start
+        red = physics.cube("red").position * 1000
+        print(f"picked red in {seconds:.1f} s of real time; it is now at z {red[2]:.0f} mm")
+        print(f"the page got {view.stats().updates} updates")
+        while "--forever" in sys.argv:
+            time.sleep(1.0)
+world.close()

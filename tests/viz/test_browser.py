@@ -1,8 +1,8 @@
 """The view in a real browser: headless Chromium shows the arm and the cubes where
 they are, and follows the arm when it moves.
 
-Each test serves the view of the simulated OpenManipulator-X with the cubes
-scene, opens it in Debian's Chromium (software WebGL), and reads the page's
+Each test serves the view of the simulated OpenManipulator-X with 001's board
+scene (``board_001``: a board of sockets and three cubes), opens it in Debian's Chromium (software WebGL), and reads the page's
 camera back from the page itself; every object's expected pixel is its world
 position projected through that camera. A pixel "shows" an object when a
 pixel within 3 px has the object's hue (shading changes brightness only).
@@ -20,14 +20,16 @@ import pytest
 from browser_page import chromium_or_skip, colour_near, decode, project, visible_area
 
 import armkit
-from armkit.viz import DriverSource, cubes_scene, link_capsules
+from armkit.scene import arm_capsules, load_scene
+from armkit.viz import DriverSource, cube_colour
 from armkit.viz._arm_shapes import LINK_COLOUR
-from armkit.viz._cubes import CUBE_COLOURS, CUBE_SIZE
 from armkit.viz.web import Chromium, View
 from armkit.viz.web._picture import connected_client, wait_for_camera
 
 WIDTH, HEIGHT = 1280, 800
 WAIT = 15.0  # [s] longest wait for the page to show something
+BOARD = load_scene("board_001")
+CUBE_COLOURS = {c.name: cube_colour(c.name, BOARD) for c in BOARD.cubes}
 
 
 @dataclass
@@ -55,7 +57,7 @@ def page(tmp_path: Any) -> Iterator[Page]:
     exe = chromium_or_skip()
     arm = armkit.Arm("openmanipulator_x")
     with (
-        View(DriverSource(arm.model, arm.driver), scene=cubes_scene(), port=0) as view,
+        View(DriverSource(arm.model, arm.driver), scene=BOARD, port=0) as view,
         Chromium(WIDTH, HEIGHT, executable=exe) as browser,
     ):
         view.start()
@@ -74,16 +76,14 @@ def page(tmp_path: Any) -> Iterator[Page]:
 
 def _cube_pixels(page: Page) -> dict[str, tuple[int, int]]:
     out = {}
-    for prim in cubes_scene():
-        name = prim.name.rsplit("/", 1)[-1]
-        if name in CUBE_COLOURS:
-            top = prim.T[:3, 3] + np.array([0.0, 0.0, CUBE_SIZE / 2 - 0.002])  # the lit top face
-            out[name] = project(page.client.camera, top)
+    for cube in BOARD.cubes:
+        top = cube.center + np.array([0.0, 0.0, cube.size / 2 - 0.002])  # the lit top face
+        out[cube.name] = project(page.client.camera, top)
     return out
 
 
 def _link_pixels(page: Page, q: np.ndarray) -> list[tuple[int, int]]:
-    caps = link_capsules(page.arm.model, q)
+    caps = arm_capsules(page.arm.model, q)
     long_links = [
         i for i in range(1, len(caps.radii)) if np.linalg.norm(caps.p1[i] - caps.p0[i]) > 0.05
     ]

@@ -28,6 +28,8 @@ def config(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
         (["--port", "70000"], "--port must be"),
         (["--rate", "0"], "--rate must be"),
         (["--size", "10", "10", "--screenshot", "{tmp}/p.png"], "--size must be"),
+        (["--follow", "--pose", "0", "0", "0", "0"], "--follow only watches"),
+        (["--follow", "--gif", "{tmp}/a.gif"], "--follow only watches"),
     ],
 )
 def test_refusals_are_one_line_and_touch_nothing(
@@ -43,7 +45,22 @@ def test_refusals_are_one_line_and_touch_nothing(
 
 def test_gif_of_a_joint_path(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     out = tmp_path / "path.gif"
-    code = main(["view", "--cubes", "--gif", str(out), "--fps", "5", "--pose", "30", "0", "0", "0"])
+    code = main(
+        [
+            "--scene",
+            "board_001",
+            "view",
+            "--gif",
+            str(out),
+            "--fps",
+            "5",
+            "--pose",
+            "30",
+            "0",
+            "0",
+            "0",
+        ]
+    )
     assert code == 0, capsys.readouterr().err
     data = out.read_bytes()
     assert data[:6] in (b"GIF87a", b"GIF89a")

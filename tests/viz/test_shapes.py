@@ -1,4 +1,5 @@
-"""The arm as primitives: the clearance capsules, the jaws, the capsule mesh."""
+"""The arm and the scene as primitives: the clearance capsules, the jaws, the
+objects, moved primitives, the capsule mesh, the offscreen renderer."""
 
 from __future__ import annotations
 
@@ -6,7 +7,16 @@ import numpy as np
 import pytest
 
 import armkit
-from armkit.viz import Box, Capsule, arm_primitives, link_capsules, pose, table_primitive
+from armkit.scene import arm_capsules, load_scene, shipped_scenes
+from armkit.viz import (
+    Box,
+    Capsule,
+    arm_primitives,
+    moved,
+    pose,
+    scene_primitives,
+    table_primitive,
+)
 from armkit.viz._primitives import capsule_mesh, segment_frame
 
 ARMS = ["openmanipulator_x", "owi535", "lynx6", "al5d", "puma560", "planar2"]
@@ -17,17 +27,17 @@ def _random_q(model: armkit.ArmModel, rng: np.random.Generator) -> np.ndarray:
 
 
 @pytest.mark.parametrize("name", ARMS)
-def test_link_capsules_join_consecutive_frame_origins(name: str) -> None:
+def test_the_links_drawn_are_the_clearance_checks_capsules(name: str) -> None:
     model = armkit.load_model(name)
     rng = np.random.default_rng(14)
     for _ in range(20):
         q = _random_q(model, rng)
-        origins = armkit.fk_frames(model, q)[:, :3, 3]
-        caps = link_capsules(model, q)
-        assert caps.p0.shape == caps.p1.shape == (model.dof + 1, 3)
-        np.testing.assert_allclose(caps.p0, origins[:-1])
-        np.testing.assert_allclose(caps.p1, origins[1:])
-        np.testing.assert_allclose(caps.radii, model.link_radii)
+        caps = arm_capsules(model, q)
+        drawn = [s for s in arm_primitives(model, q) if isinstance(s, Capsule)]
+        assert len(drawn) == model.dof + 1
+        np.testing.assert_allclose([c.p0 for c in drawn], caps.p0)
+        np.testing.assert_allclose([c.p1 for c in drawn], caps.p1)
+        np.testing.assert_allclose([c.radius for c in drawn], caps.radii)
 
 
 def test_arm_primitives_are_the_capsules_then_jaws_then_frames() -> None:
@@ -73,3 +83,51 @@ def test_table_top_is_the_models_table_plane() -> None:
 def test_pose_rejects_bad_positions() -> None:
     with pytest.raises(ValueError, match="position"):
         pose((0.0, float("nan"), 0.0))
+
+
+@pytest.mark.parametrize("name", shipped_scenes())
+def test_every_object_of_a_shipped_scene_is_drawn(name: str) -> None:
+    scene = load_scene(name)
+    drawn = {p.name.split("/")[2] for p in scene_primitives(scene)}
+    assert set(scene.names()) <= drawn
+
+
+def test_a_board_has_a_socket_at_each_socket_floor() -> None:
+    scene = load_scene("board_001")
+    board = scene.board("board")
+    shapes = {p.name: p for p in scene_primitives(scene)}
+    socket = shapes["/scene/board_sockets/1_2"]
+    assert isinstance(socket, Box)
+    np.testing.assert_allclose(socket.T[:2, 3], board.socket(1, 2)[:2])
+    assert socket.T[2, 3] > board.socket(1, 2)[2]  # drawn on the board's top, over the hole
+    # no primitive is named under another one (a web view would nest it in that one's frame)
+    names = set(shapes)
+    assert not [n for n in names if any(n.startswith(m + "/") for m in names)]
+
+
+def test_moved_carries_every_kind_of_primitive() -> None:
+    T = pose((0.1, 0.2, 0.3), 0.5)
+    model = armkit.load_model("lynx6")
+    for prim in arm_primitives(model, model.home, frames=True):
+        out = moved(prim, T)
+        assert out.name == prim.name
+        if isinstance(prim, Capsule) and isinstance(out, Capsule):
+            np.testing.assert_allclose(out.p1, T[:3, :3] @ prim.p1 + T[:3, 3])
+    shifted = arm_primitives(model, model.home, T_world_base=T)
+    plain = arm_primitives(model, model.home)
+    assert isinstance(shifted[0], Capsule) and isinstance(plain[0], Capsule)
+    np.testing.assert_allclose(shifted[0].p0, T[:3, 3] + T[:3, :3] @ plain[0].p0)
+
+
+def test_the_offscreen_renderer_paints_the_cubes_in_their_colours() -> None:
+    from armkit.viz._raster import look_from_front_right, render
+
+    scene = load_scene("board_001")
+    model = armkit.load_model("openmanipulator_x")
+    camera = look_from_front_right(np.zeros(3), 0.38, 320, 240)
+    image = np.asarray(render([table_primitive(model), *scene_primitives(scene)], camera))
+    for cube in scene.cubes:
+        (u, v), _ = (a[0] for a in camera.project(cube.center[None, :] + [[0, 0, 0.012]]))
+        patch = image[round(v) - 1 : round(v) + 2, round(u) - 1 : round(u) + 2].reshape(-1, 3)
+        colour = {"red": 0, "green": 1, "blue": 2}[cube.name]
+        assert all(int(np.argmax(p)) == colour for p in patch), (cube.name, patch)

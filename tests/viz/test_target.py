@@ -7,7 +7,8 @@ import math
 import numpy as np
 
 import armkit
-from armkit.viz import check_target, table_clearance
+from armkit.scene import load_scene
+from armkit.viz import check_target
 from armkit.viz._target import describe
 
 OMX = armkit.load_model("openmanipulator_x")
@@ -30,15 +31,15 @@ def test_below_the_table_is_refused_with_the_link() -> None:
     # reachable for the kinematics (z < 0), but the tool link would go into the table
     check = check_target(OMX, (0.2, 0.0, -0.01), -math.pi / 2)
     assert armkit.ik(OMX, np.array([0.2, 0.0, -0.01]), -math.pi / 2).q is not None
-    assert not check.ok and "table" in check.reason and "link" in check.reason
+    assert not check.ok and check.reason == "the gripper would be 10.0 mm into the table"
 
 
-def test_table_clearance_ignores_the_base_column_and_sees_a_raised_table() -> None:
-    assert table_clearance(OMX, OMX.home) is None
+def test_a_raised_table_is_in_the_way() -> None:
     from dataclasses import replace
 
-    raised = replace(OMX, table_z=0.3)
-    assert "table" in (table_clearance(raised, OMX.home) or "")
+    raised = replace(OMX, table_z=0.1)
+    check = check_target(raised, (0.2, 0.0, 0.06), -math.pi / 2)
+    assert not check.ok and "table" in check.reason
 
 
 def test_a_joint_limit_in_the_way_is_named() -> None:
@@ -47,9 +48,16 @@ def test_a_joint_limit_in_the_way_is_named() -> None:
     assert not check.ok and check.reason == "a joint limit is in the way"
 
 
-def test_extra_clearance_checks_plug_in() -> None:
-    def board(model: armkit.ArmModel, q: np.ndarray) -> str | None:
-        return "the board is in the way"
-
-    check = check_target(OMX, (0.2, 0.0, 0.06), -math.pi / 2, clearances=(table_clearance, board))
-    assert not check.ok and check.reason == "the board is in the way"
+def test_the_board_is_in_the_way_and_a_cube_is_not_when_the_target_is_on_it() -> None:
+    scene = load_scene("board_001")
+    red = scene.cube("red")
+    on_red = check_target(OMX, red.center, -math.pi / 2, scene=scene)
+    assert on_red.ok and on_red.on == "red"
+    assert "on red, reachable and clear" in describe(on_red)
+    # inside the board, between two sockets: the gripper would go into the board
+    board = scene.board("board")
+    inside = board.origin + np.array([-0.0225, 0.0, -0.003])
+    check = check_target(OMX, inside, -math.pi / 2, scene=scene)
+    assert not check.ok and check.on == "" and "board" in check.reason
+    # the same point without the scene: only the table plane, and it is above it
+    assert check_target(OMX, inside, -math.pi / 2).ok

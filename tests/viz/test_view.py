@@ -9,8 +9,11 @@ import numpy as np
 import pytest
 
 import armkit
-from armkit.viz import DriverSource, cubes_scene
+from armkit.scene import ScenePhysics, load_scene
+from armkit.viz import DriverSource, WorldSource
 from armkit.viz.web import Teach, View
+
+BOARD = load_scene("board_001")
 
 
 @pytest.fixture
@@ -21,7 +24,7 @@ def arm() -> Iterator[armkit.Arm]:
 
 @pytest.fixture
 def view(arm: armkit.Arm) -> Iterator[View]:
-    with View(DriverSource(arm.model, arm.driver), scene=cubes_scene(), port=0) as view:
+    with View(DriverSource(arm.model, arm.driver), scene=BOARD, port=0) as view:
         yield view
 
 
@@ -36,7 +39,8 @@ def test_the_page_is_served_on_loopback_only(view: View) -> None:
 def test_update_draws_the_arm_and_sends_only_changes(view: View, arm: armkit.Arm) -> None:
     assert view.update()
     names = view.renderer.names
-    assert "/table" in names and "/scene/cube_a" in names
+    assert "/table" in names and {"/scene/red", "/scene/green", "/scene/blue"} <= set(names)
+    assert "/scene/board" in names and "/scene/board_sockets/2_2" in names
     assert {f"/arm/link_{i}" for i in range(5)} <= set(names)
     assert not view.update()  # nothing moved
     arm.move_joints([30.0, 0.0, 0.0, 0.0])
@@ -90,3 +94,48 @@ def test_a_bad_port_is_refused() -> None:
     arm = armkit.Arm("openmanipulator_x")
     with pytest.raises(ValueError, match="port"):
         View(DriverSource(arm.model, arm.driver), port=70000)
+
+
+def test_a_grasped_cube_moves_with_the_gripper_on_the_page() -> None:
+    with armkit.Arm("openmanipulator_x") as arm:  # no clearance check: it goes into the cube
+        assert arm.world is not None
+        physics = ScenePhysics(BOARD)
+        arm.world.attach(physics)
+        source = WorldSource(arm.world, physics=physics)
+        with View(source, scene=BOARD, port=0) as view:
+            red = BOARD.cube("red")
+            x, y, z = (red.center * 1000).tolist()
+            arm.grip(arm.model.gripper.width_max * 1000)
+            arm.move_to(x, y, z + 40, -90)
+            view.update()
+            node = view.renderer._nodes["/scene/red"].handle
+            before = np.array(node.position)
+            np.testing.assert_allclose(before, red.center, atol=1e-9)
+            arm.move_to(x, y, z, -90)
+            arm.grip(arm.model.gripper.width_min * 1000)
+            assert physics.holding is not None and physics.holding.cube.name == "red"
+            arm.move_to(x, y, z + 30, -90)
+            assert view.update()
+            after = np.array(node.position)
+            assert after[2] - before[2] == pytest.approx(0.03, abs=2e-3)
+            assert [o.name for o in view.state.objects] == ["green", "blue", "red"]  # type: ignore[union-attr]
+
+
+def test_what_the_tool_draws_on_paper_is_inked() -> None:
+    from armkit.scene import Scene, Sheet
+
+    paper = Sheet("paper", np.array([0.13, -0.05, 0.0]), np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0]), 0.1, 0.1)  # fmt: skip
+    scene = Scene("drawing", sheets=(paper,))
+    with armkit.Arm("openmanipulator_x") as arm, View(DriverSource(arm.model, arm.driver), scene=scene, port=0) as view:  # fmt: skip
+        arm.move_to(180, -20, 30, -90)
+        view.update()
+        assert not [n for n in view.renderer.names if n.startswith("/ink/")]  # in the air
+        for y in (-20.0, -10.0, 0.0, 10.0):
+            arm.move_to(180, y, 0.5, -90)
+            view.update()
+        arm.move_to(180, 10, 30, -90)
+        view.update()
+        assert [n for n in view.renderer.names if n.startswith("/ink/")] == ["/ink/paper/1"]
+        ((sheet, points),) = view.ink.strokes
+        assert sheet is paper and len(points) >= 4
+        np.testing.assert_allclose(np.array(points)[:, 1], [-0.02, -0.01, 0.0, 0.01], atol=5e-4)

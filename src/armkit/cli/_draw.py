@@ -13,6 +13,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError
 from ._args import number
+from ._watch import add_watch_options, watched_arm
 
 EPILOG = (
     "Needs --scene FILE|NAME before 'draw' (a scene with a sheet and a pen, e.g. 'drawing'). "
@@ -81,12 +82,12 @@ def _options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--pen-up", type=number("mm", 1.0, 100.0), default=10.0, metavar="MM", help="pen height above the paper between strokes [mm] (default 10)")  # fmt: skip
     p.add_argument("--pitch", type=number("deg", -90.0, 0.0), default=-60.0, metavar="DEG", help="pen angle above the horizontal while drawing [deg] (default -60)")  # fmt: skip
     p.add_argument("--speed", type=number("mm/s", 1.0, 500.0), default=30.0, metavar="MM_S", help="pen speed along lines [mm/s] (default 30)")  # fmt: skip
+    add_watch_options(p)
 
 
 def _run(args: argparse.Namespace) -> int:
     from ..drawing import DrawingError, DrawOptions, draw
     from ._scene import scene_of
-    from ._tasks import _open_arm
 
     path = Path(args.file)
     suffix = path.suffix.lower()
@@ -100,7 +101,7 @@ def _run(args: argparse.Namespace) -> int:
         tolerance=args.tolerance / 1e3, margin=args.margin / 1e3, pen_up=args.pen_up / 1e3,
         pitch=math.radians(args.pitch), speed=args.speed / 1e3, held=args.held,
     )  # fmt: skip
-    with _open_arm(args, scene) as arm:
+    with watched_arm(args, scene) as arm:
         job = draw(
             arm, scene, path, args.sheet, args.pen, options=opts,
             preview=args.preview, result=args.result, dry_run=args.dry_run,

@@ -10,8 +10,10 @@ between invocations in a state file, so ``move`` then ``where`` agree:
 from __future__ import annotations
 
 import argparse
+import contextlib
 import math
 import sys
+from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
@@ -45,6 +47,7 @@ from ._args import (
     number,
 )
 from ._draw import add_file_commands, add_plane_option, in_plane
+from ._watch import add_watch_options, watch_world, watching
 
 F64 = NDArray[np.float64]
 MODES = ("naive", "early", "timed")
@@ -64,15 +67,19 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         "--pitch", type=angle, metavar="DEG", help="gripper pitch [deg] (0 level, -90 down)"
     )
     _timing_options(p)
+    add_watch_options(p)
     p.set_defaults(func=_move)
     p = sub.add_parser("joints", help="move every joint to the given angles [deg]", epilog=SIM_NOTE)
     p.add_argument("angles", nargs="+", type=angle, metavar="DEG", help="one angle per joint [deg]")
     _timing_options(p)
+    add_watch_options(p)
     p.set_defaults(func=_joints)
     p = sub.add_parser("grip", help="open the gripper to WIDTH [mm]", epilog=SIM_NOTE)
     p.add_argument("width", type=number("mm", 0.0, 1000.0), metavar="WIDTH_MM", help="opening [mm]")
+    add_watch_options(p)
     p.set_defaults(func=_grip)
     p = sub.add_parser("home", help="move every joint to its home angle", epilog=SIM_NOTE)
+    add_watch_options(p)
     p.set_defaults(func=_home)
     p = sub.add_parser("where", help="print the gripper position and joint angles", epilog=SIM_NOTE)
     p.set_defaults(func=_where)
@@ -170,21 +177,39 @@ def _draw_options(p: argparse.ArgumentParser) -> None:
         metavar="FILE.csv",
         help="simulated arms only: write t_s,<joint>_deg,... one row per 1 ms of simulated time",
     )
+    add_watch_options(p)
     p.set_defaults(func=_draw)
 
 
-def _open(args: argparse.Namespace) -> Arm:
+@contextlib.contextmanager
+def _open(args: argparse.Namespace) -> Iterator[Arm]:
     """The arm of --arm on --driver/--port, once every file it will write is known
-    to be writable (the config directory, a state file given as --port)."""
+    to be writable (the config directory, a state file given as --port, a --gif);
+    watched as --view/--gif say (``armkit.cli._watch``)."""
     model = load_model(args.arm)
     check_folder(config_dir(), "the config directory")
     if args.driver == "sim" and args.port not in (None, "emu"):
         check_output(args.port, "--port (the simulated arm's state file)")
-    arm = Arm(model, open_driver(model, args.driver, args.port, keep=True))
-    if isinstance(arm.driver, TimedDriver):  # before moving from an uncertain estimate
-        rehome = f"armkit --arm {args.arm} --driver {args.driver} rehome"
-        arm.driver.warn = lambda text: print(f"armkit: warning: {text}: {rehome}", file=sys.stderr)
-    return arm
+    world = watch_world(args)
+    try:
+        arm = Arm(model, open_driver(model, args.driver, args.port, world=world, keep=True))
+        if isinstance(arm.driver, TimedDriver):  # before moving from an uncertain estimate
+            rehome = f"armkit --arm {args.arm} --driver {args.driver} rehome"
+            arm.driver.warn = lambda text: print(f"armkit: warning: {text}: {rehome}", file=sys.stderr)  # fmt: skip
+        with arm, watching(args, arm, _scene(args)):
+            yield arm
+    finally:
+        if world is not None:
+            world.close()
+
+
+def _scene(args: argparse.Namespace) -> Any:
+    """The --scene to show and simulate while watching (None if not watching or none)."""
+    if not (getattr(args, "view", False) or getattr(args, "gif", None)):
+        return None
+    from ._scene import scene_of
+
+    return scene_of(args, required=False)
 
 
 def _move(args: argparse.Namespace) -> int:

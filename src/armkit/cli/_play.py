@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from .._errors import ArmkitError
+from ._watch import add_watch_options, watched_arm
 
 EPILOG = (
     "Needs --scene FILE|NAME before the command (the shipped 'xylophone' has two octaves, "
@@ -34,16 +35,16 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     p.add_argument("--wav", metavar="OUT", help="write the contacts the simulated mallet made as sound (.wav, 16-bit mono 44.1 kHz)")  # fmt: skip
     p.add_argument("--plot", metavar="OUT", help="plot planned against played onsets [s] and their errors [ms] (.png, .svg, .pdf)")  # fmt: skip
     p.add_argument("--dry-run", action="store_true", help="plan and check only; print the plan, move nothing, write nothing")  # fmt: skip
+    add_watch_options(p)
     p.set_defaults(func=_run)
 
 
 def _run(args: argparse.Namespace) -> int:
     from .. import music
-    from ._tasks import _open_arm
 
     scene = _scene(args)
     outputs = _outputs(args)
-    with _open_arm(args, scene) as arm:
+    with watched_arm(args, scene) as arm:
         if (args.wav or args.plot) and not args.dry_run and arm.world is None:
             raise ArmkitError(
                 "--wav and --plot need the contacts the simulator hears; on hardware "

@@ -8,6 +8,7 @@ something else must agree with it.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -15,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 from .._errors import ArmkitError, InputError
 from .._files import config_dir
 from ._motion import _open as open_arm
+from ._watch import add_watch_options
 
 if TYPE_CHECKING:
     from ..arm import Arm
@@ -50,6 +52,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         help="run the whole script N times (default 1)",
     )
     p.add_argument("-q", "--quiet", action="store_true", help="do not print each line as it runs")
+    add_watch_options(p)
     p.set_defaults(func=_run)
     p = sub.add_parser(
         "check", help="check a .arm script without moving: every error with line and column",
@@ -158,7 +161,9 @@ def _choose(args: argparse.Namespace, what: str, header: Header | None, source: 
     )
 
 
-def _open(args: argparse.Namespace, setup: Setup | None, source: Source | None) -> Arm:
+def _open(
+    args: argparse.Namespace, setup: Setup | None, source: Source | None
+) -> contextlib.AbstractContextManager[Arm]:
     ns = argparse.Namespace(**vars(args))
     if setup is not None and source is not None:
         ns.arm = _choose(args, "arm", setup.arm, source)

@@ -6,12 +6,11 @@ Each task is planned whole before anything moves; ``--dry-run`` prints the plan.
 from __future__ import annotations
 
 import argparse
-import contextlib
 import math
-from collections.abc import Callable, Iterator
 from typing import Any
 
 from .._errors import ArmkitError, InputError
+from ._watch import add_watch_options, watched_arm
 
 EPILOG = (
     "Needs --scene FILE|NAME before the command (see 'armkit scene list'). The whole task "
@@ -73,6 +72,7 @@ def _search_command(sub: argparse._SubParsersAction[Any]) -> None:
     p.add_argument("--into", metavar="NAME", help="the container to drop it in (default: the scene's only one)")  # fmt: skip
     p.add_argument("--adc-port", metavar="PORT", help="the serial ADC board the sensor is wired to (arms without an SSC-32, real hardware)")  # fmt: skip
     p.add_argument("--channel", type=int, default=0, choices=range(4), help="the sensor's analog input, 0..3 (SSC-32 VA..VD; default 0)")  # fmt: skip
+    add_watch_options(p)
     p.set_defaults(func=_search)
     text = "003: find a hand held out with the distance sensor, come near it and shake it"
     p = sub.add_parser("reach", help=text, description=text + ".", epilog=SEARCH_EPILOG)
@@ -81,6 +81,7 @@ def _search_command(sub: argparse._SubParsersAction[Any]) -> None:
     p.add_argument("--shakes", type=int, default=3, metavar="N", help="up-and-down shakes, 0..20 (default 3)")  # fmt: skip
     p.add_argument("--adc-port", metavar="PORT", help="the serial ADC board the sensor is wired to (arms without an SSC-32, real hardware)")  # fmt: skip
     p.add_argument("--channel", type=int, default=0, choices=range(4), help="the sensor's analog input, 0..3 (default 0)")  # fmt: skip
+    add_watch_options(p)
     p.set_defaults(func=_reach)
 
 
@@ -91,8 +92,7 @@ def _reach(args: argparse.Namespace) -> int:
     scene = scene_of(args)
     if not math.isfinite(args.height) or not 0.0 < args.height <= 500.0:
         raise InputError(f"--height must be 0..500 mm, got {args.height}")
-    with _open_arm(args, scene) as arm, _objects(args, arm, scene) as save:
-        save()
+    with watched_arm(args, scene) as arm:
         result = tasks.reach(
             arm, scene, height=args.height / 1000.0, near=args.near / 1000.0,
             shakes=args.shakes, channel=args.channel, port=args.adc_port,
@@ -107,8 +107,7 @@ def _search(args: argparse.Namespace) -> int:
 
     scene = scene_of(args)
     angles = {k: math.radians(getattr(args, k)) for k in ("from", "to", "step")}
-    with _open_arm(args, scene) as arm, _objects(args, arm, scene) as save:
-        save()
+    with watched_arm(args, scene) as arm:
         result = tasks.search(
             arm, scene, start=angles["from"], stop=angles["to"], step=angles["step"],
             into=args.into, channel=args.channel, port=args.adc_port,
@@ -130,6 +129,7 @@ def _task(sub: argparse._SubParsersAction[Any], name: str, text: str) -> argpars
         help="first waypoint above each grasp [mm] (>= 30, default 30)",
     )
     p.add_argument("--calibration", metavar="FILE", help="the unit's offsets (height_offset_mm, perpendicular_offset_mm); default <config>/<arm>_tasks.toml if present")  # fmt: skip
+    add_watch_options(p)
     p.set_defaults(func=_run)
     return p
 
@@ -151,47 +151,18 @@ def _run(args: argparse.Namespace) -> int:
 
     scene = scene_of(args)
     options = {"clearance": args.clearance, "calibration": args.calibration, "dry_run": True}
-    with _open_arm(args, scene) as arm, _objects(args, arm, scene) as save:
+    with watched_arm(args, scene) as arm:
         plan = _plan(args, tasks, arm, scene, options)
         if args.dry_run:
             print(plan)
             return 0
         print(plan.lines()[0])
-        save()
         tasks.run_checked(
             arm, plan, say=lambda k, step: print(f"{k:4d}/{len(plan.steps)}  {step.label}")
         )
         for line in plan.lines()[len(plan.steps) + 1 :]:
             print(line)
     return 0
-
-
-@contextlib.contextmanager
-def _objects(args: argparse.Namespace, arm: Any, scene: Any) -> Iterator[Callable[[], None]]:
-    """On a simulated arm, the scene's objects in its world: with ``--driver sim`` and no
-    port, kept between runs in their state file (like the arm's joints), locked while
-    in use and written back once the task has started moving. Yields ``save``: call it
-    when the first motion is about to happen."""
-    from .._lock import exclusive
-    from ..scene._state import load_physics, save_physics, scene_state_file
-    from ..sim._state import state_key
-    from ..tasks import attach_scene
-
-    if arm.world is None or args.driver != "sim" or args.port is not None:
-        attach_scene(arm, scene)
-        yield lambda: None
-        return
-    path = scene_state_file(scene, state_key(arm.model))
-    lock = exclusive(path, f"the simulated objects of {scene.name}")
-    moved: list[bool] = []
-    try:
-        physics = load_physics(path, scene)
-        attach_scene(arm, scene, physics)
-        yield lambda: moved.append(True)
-    finally:
-        if moved:
-            save_physics(path, physics)
-        lock.release()
 
 
 def _plan(
@@ -217,14 +188,3 @@ def _to(args: argparse.Namespace) -> Any:
     if (args.to is None) == (args.xyz is None):
         raise ArmkitError(f"'{args.command}' needs TO (a place, board[ROW,COL], cube or container) or --xyz X Y Z [mm], not both")  # fmt: skip
     return args.to if args.to is not None else tuple(args.xyz)
-
-
-def _open_arm(args: argparse.Namespace, scene: Any) -> Any:
-    """The Arm of --arm/--driver/--port with the scene; the simulated servo arm keeps
-    its joints between runs in its state file, as for 'move'."""
-    from ..arm import Arm
-    from ..connect import open_driver
-    from ..model import load_model
-
-    model = load_model(args.arm)
-    return Arm(model, open_driver(model, args.driver, args.port, keep=True), scene=scene)

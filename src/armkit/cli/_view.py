@@ -14,17 +14,23 @@ from typing import Any
 
 import numpy as np
 
-from .._errors import ArmkitError, InputError
+from .._errors import InputError
+from ._watch import web_module
 
 EPILOG = """\
 The page is served from this computer (no network needed): open the printed URL.
 --host 127.0.0.1 (default) lets only this computer see it; 0.0.0.0 serves every network.
 Units: target and poses in mm and degrees.
 
+--follow shows the simulated arm that OTHER armkit commands move (each of them
+publishes its arm while somebody follows, and runs in real time then).
+
 examples:
   armkit view                                   # the simulated OpenManipulator-X, teach from the page
-  armkit view --cubes --target 200 -80 60 --pitch -90
-  armkit view --cubes --pose 0 20 10 -40 --screenshot view.png
+  armkit --scene board_001 view --target 265 0 20 --pitch -90
+  armkit --scene board_001 view --pose 0 20 10 -40 --screenshot view.png
+  armkit --scene board_001 view --follow        # then, in another terminal:
+  armkit --scene board_001 stack red green blue
   armkit --arm lynx6 view --gif tour.gif --pose 90 90 90 90 90 --pose 60 110 70 80 90
 """
 
@@ -51,7 +57,11 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     )
     p.add_argument("--rate", type=float, default=30.0, metavar="HZ", help="updates per second [Hz]")
     p.add_argument("--frames", action="store_true", help="draw every joint frame's axes")
-    p.add_argument("--cubes", action="store_true", help="show a board with three cubes")
+    p.add_argument(
+        "--follow",
+        action="store_true",
+        help="show the simulated arm as other armkit commands move it (no teaching)",
+    )
     p.add_argument("--target", nargs=3, type=float, metavar=("X", "Y", "Z"), help="target [mm]")
     p.add_argument("--pitch", type=float, metavar="DEG", help="target pitch [deg] (default any)")
     p.add_argument(
@@ -62,6 +72,11 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         metavar="DEG",
         help="joint angles [deg], one per joint; repeat for a path (moves the arm)",
     )
+    _picture_options(p)
+    p.set_defaults(func=run_view)
+
+
+def _picture_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--screenshot", metavar="FILE.png", help="write a picture of the view and exit")
     p.add_argument(
         "--size", nargs=2, type=int, default=(1024, 768), metavar=("W", "H"), help="picture [px]"
@@ -70,33 +85,25 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         "--gif", metavar="FILE.gif", help="write an animation of the --pose path and exit"
     )
     p.add_argument("--fps", type=float, default=15.0, help="animation frames per second [1/s]")
-    p.set_defaults(func=run_view)
 
 
 def run_view(args: argparse.Namespace) -> int:
     """Check every input and output first, then open the arm and serve or draw."""
     from ..model import load_model
+    from ._scene import scene_of
 
     model = load_model(args.arm)
     poses = _poses(args.pose, model)
     outputs = _outputs(args)
     target = _target(args)
+    scene = scene_of(args, required=False)
+    if args.follow:
+        return _follow(args, model, scene, target, outputs)
     if args.gif:
-        return _gif(args, model, poses, Path(args.gif))
-    web = _web()
-    from ..viz import DriverSource, cubes_scene
-    from ..viz._target import describe
-
-    arm = _open_arm(args, model)
-    scene = cubes_scene(model.table_z) if args.cubes else []
-    view = web.View(
-        DriverSource(model, arm.driver),
-        scene=scene,
-        host=args.host,
-        port=args.http_port,
-        rate_hz=args.rate,
-        frames=args.frames,
-    )
+        return _gif(args, model, poses, Path(args.gif), scene)
+    web = web_module()
+    arm = _open_arm(args, model, scene)
+    view = web.View(_source(arm, scene), scene=scene, **_view_options(args))
     try:
         teach = web.Teach(view, arm)
         view.start()
@@ -107,48 +114,101 @@ def run_view(args: argparse.Namespace) -> int:
         if target is not None:
             teach.drag_target(target[0], target[1])
             teach.mover.wait_idle()
-            print(f"armkit view: {describe(view.target)}")
-        if outputs:
-            path = web.render_png(view, outputs[0], *args.size)
-            print(f"armkit view: wrote {path}")
-            return 0
-        return _serve(view, teach)
+        return _finish(args, web, view, outputs, target, teach.close, teach.poses)
     finally:
         view.close()
         arm.close()
 
 
-def _serve(view: Any, teach: Any) -> int:
-    print(f"armkit view: {view.url}  (Ctrl-C stops)", flush=True)
-    if view.host not in ("127.0.0.1", "localhost", "::1"):
-        print(f"armkit view: serving on {view.host}: other computers can open it and move the arm")
+def _view_options(args: argparse.Namespace) -> dict[str, Any]:
+    return {"host": args.host, "port": args.http_port, "rate_hz": args.rate, "frames": args.frames}
+
+
+def _source(arm: Any, scene: Any) -> Any:
+    """What the view shows: the simulated arm's world (its cubes moved by the scene's
+    physics), or the real arm's driver."""
+    from ..viz import DriverSource, WorldSource
+
+    if arm.world is None:
+        return DriverSource(arm.model, arm.driver)
+    physics = None
+    if scene is not None:
+        from ..scene import ScenePhysics
+
+        physics = ScenePhysics(scene)
+        arm.world.attach(physics)
+    return WorldSource(arm.world, arm.world.arm().name, physics)
+
+
+def _follow(
+    args: argparse.Namespace, model: Any, scene: Any, target: Any, outputs: list[Path]
+) -> int:
+    """Show the simulated arm other processes move (``armkit.viz.LiveSource``)."""
+    if args.driver != "sim" or args.port == "emu":
+        raise InputError("--follow shows a simulated arm kept by other armkit commands (--driver sim); a real arm: drop --follow")  # fmt: skip
+    if args.pose or args.gif:
+        raise InputError("--follow only watches: drop --pose and --gif (move the arm from another command)")  # fmt: skip
+    from ..connect import sim_state_file
+    from ..viz import LiveSource
+
+    web = web_module()
+    state = Path(args.port) if args.port else sim_state_file(model)
+    source = LiveSource(model, state)
+    view = web.View(source, scene=scene, **_view_options(args))
     try:
+        view.start()
+        view.update()
+        return _finish(args, web, view, outputs, target, lambda: None, {})
+    finally:
+        view.close()
+        source.close()
+
+
+def _finish(
+    args: argparse.Namespace,
+    web: Any,
+    view: Any,
+    outputs: list[Path],
+    target: Any,
+    stop: Any,
+    poses: dict[str, Any],
+) -> int:
+    """Show the target, then write the picture or serve until Ctrl-C."""
+    from ..viz._target import describe
+
+    if target is not None:
+        check = view.set_target(target[0], target[1]) if args.follow else view.target
+        print(f"armkit view: {describe(check)}")
+    if outputs:
+        path = web.render_png(view, outputs[0], *args.size)
+        print(f"armkit view: wrote {path}")
+        return 0
+    return _serve(view, stop, poses)
+
+
+def _serve(view: Any, stop: Any, poses: dict[str, Any]) -> int:
+    try:  # Ctrl-C as soon as the URL is out still stops cleanly
+        print(f"armkit view: {view.url}  (Ctrl-C stops)", flush=True)
+        if view.host not in ("127.0.0.1", "localhost", "::1"):
+            print(f"armkit view: serving on {view.host}: other computers can open the page")
         while True:
             time.sleep(0.5)
     except KeyboardInterrupt:
         print("\narmkit view: stopped")
     finally:
-        teach.close()
-    for pose in teach.poses.values():
+        stop()
+    for pose in poses.values():
         print(f"  {pose.line()}")
     return 0
 
 
-def _web() -> Any:
-    try:
-        from ..viz import web
-    except ImportError as exc:
-        raise ArmkitError(f"the 3D view needs viser ({exc}): pip install 'armkit[web]'") from None
-    return web
-
-
-def _open_arm(args: argparse.Namespace, model: Any) -> Any:
+def _open_arm(args: argparse.Namespace, model: Any, scene: Any) -> Any:
     """The Arm of --arm/--driver/--port; a simulated arm keeps its pose between runs in
     its state file, as for 'move' (``armkit.connect.open_driver(..., keep=True)``)."""
     from ..arm import Arm
     from ..connect import open_driver
 
-    return Arm(model, open_driver(model, args.driver, args.port, keep=True))
+    return Arm(model, open_driver(model, args.driver, args.port, keep=True), scene=scene)
 
 
 def _poses(given: list[list[float]] | None, model: Any) -> list[Any]:
@@ -182,6 +242,8 @@ def _outputs(args: argparse.Namespace) -> list[Path]:
         raise InputError(f"--rate must be 1..240 Hz, got {args.rate}")
     if not 0 <= args.http_port <= 65535:
         raise InputError(f"--port must be 0..65535, got {args.http_port}")
+    if args.gif and args.driver != "sim" and args.port != "emu":
+        raise InputError("--gif animates a simulated arm; drop --driver (or use --port emu)")
     if args.screenshot and args.gif:
         raise InputError("give --screenshot or --gif, not both")
     w, h = args.size
@@ -215,14 +277,13 @@ def check_output(path: Path, suffix: str, flag: str) -> Path:
     return path
 
 
-def _gif(args: argparse.Namespace, model: Any, poses: list[Any], path: Path) -> int:
+def _gif(args: argparse.Namespace, model: Any, poses: list[Any], path: Path, scene: Any) -> int:
     from ..arm import Arm
-    from ..viz import cubes_scene, default_tour, record_path, write_gif
+    from ..viz import default_tour, record_path, write_gif
 
-    scene = cubes_scene(model.table_z) if args.cubes else []
-    with Arm(model, args.driver, args.port) as arm:
-        path_q = poses or default_tour(model)
-        times, q = record_path(arm, path_q, args.fps)
-    write_gif(model, times, q, path, scene=scene, fps=args.fps)
-    print(f"armkit view: wrote {path} ({len(times)} frames, {times[-1]:.1f} s of motion)")
+    with Arm(model, args.driver, args.port, scene=scene) as arm:
+        frames = record_path(arm, poses or default_tour(model, scene), args.fps)
+    write_gif(model, frames, path, scene=scene, fps=args.fps)
+    took = frames[-1].t - frames[0].t
+    print(f"armkit view: wrote {path} ({len(frames)} frames, {took:.1f} s of motion)")
     return 0

@@ -43,13 +43,19 @@ def simulate(model: ArmModel, kind: str, world: World | None, state: Path | None
     keep = Persistence(state, model, _what(model, state)) if state is not None else None
     opened: list[SimArm] = []
     try:
-        return _BUILDERS[kind](model, where, keep, opened)
+        driver = _BUILDERS[kind](model, where, keep, opened)
     except BaseException:
         for arm in opened:
             where.remove_arm(arm.name)
         if keep is not None:
             keep.release()
         raise
+    if state is not None:  # others may follow it live (armkit view --follow)
+        from ..viz._live import publish_live
+
+        for arm in opened:
+            publish_live(where, arm, state)
+    return driver
 
 
 def _what(model: ArmModel, state: Path) -> str:

@@ -26,6 +26,10 @@ from ._objects import Place as Place
 from ._physics import SceneEvent as SceneEvent
 from ._physics import ScenePhysics as ScenePhysics
 from ._scene import Scene as Scene
+from ._state import load_physics as load_physics
+from ._state import physics_text as physics_text
+from ._state import save_physics as save_physics
+from ._state import scene_state_file as scene_state_file
 from ._support import Settled as Settled
 from ._support import settle as settle
 from ._surfaces import PAPER_SIZES as PAPER_SIZES

@@ -45,6 +45,11 @@ def rest_scene(physics: ScenePhysics) -> Scene:
 
 def save_physics(path: Path, physics: ScenePhysics) -> None:
     """Write the cubes at rest and the held cube of ``physics`` to ``path`` (atomic)."""
+    write_atomic(path, physics_text(physics), durable=False)
+
+
+def physics_text(physics: ScenePhysics) -> str:
+    """The cubes at rest and the held cube of ``physics`` as the state file's JSON text."""
     held = physics.holding
     data = {
         "version": VERSION,
@@ -54,7 +59,7 @@ def save_physics(path: Path, physics: ScenePhysics) -> None:
         if held is None
         else {"cube": _cube(held.cube), "T_tool_object": held.T_tool_object.tolist()},
     }
-    write_atomic(path, json.dumps(data, indent=1) + "\n", durable=False)
+    return json.dumps(data, indent=1) + "\n"
 
 
 def load_physics(path: Path, scene: Scene) -> ScenePhysics:

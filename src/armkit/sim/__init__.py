@@ -24,6 +24,7 @@ from .._clock import Clock
 from ._arm import SimArm as SimArm
 from ._arm import Truth as Truth
 from ._recording import Recording as Recording
+from ._state import state_key as state_key
 from ._world import Observer as Observer
 from ._world import World as World
 from ._world import WorldClock as WorldClock
@@ -35,4 +36,13 @@ def world_of(driver: Any) -> World | None:
     return clock.world if isinstance(clock, WorldClock) else None
 
 
-__all__ = ["Observer", "Recording", "SimArm", "Truth", "World", "WorldClock", "world_of"]
+__all__ = [
+    "Observer",
+    "Recording",
+    "SimArm",
+    "Truth",
+    "World",
+    "WorldClock",
+    "state_key",
+    "world_of",
+]

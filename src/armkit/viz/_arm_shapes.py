@@ -1,21 +1,20 @@
 """An arm as primitives: the link capsules of the clearance check, the jaws, the frames.
 
-The links are exactly ``ArmModel.link_radii``'s capsules: capsule i joins the
-origins of frames i and i + 1 of ``fk_frames`` (capsule 0 the base column,
-the last one the flange to the tool point), so what the view shows is what the
-clearance check tests.
+The links are the clearance check's own capsules (``armkit.scene.arm_capsules``:
+capsule i joins the origins of frames i and i + 1 of ``fk_frames``, capsule 0 the
+base column, the last one the flange to the tool point), so what the view shows
+is what the clearance check tests.
 """
 
 from __future__ import annotations
-
-from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..kinematics import fk_frames
 from ..model import ArmModel
-from ._primitives import RGB, Axes, Box, Capsule, Primitive, pose
+from ..scene import Scene, arm_capsules
+from ._primitives import RGB, Axes, Box, Capsule, Primitive, moved, pose
 
 F64 = NDArray[np.float64]
 
@@ -24,35 +23,23 @@ BASE_COLOUR: RGB = (70, 70, 78)  # dark grey: the base column
 JAW_COLOUR: RGB = (40, 40, 46)
 TABLE_COLOUR: RGB = (214, 208, 196)
 TRAIL_COLOUR: RGB = (30, 110, 230)
-DEFAULT_RADIUS = 0.015  # [m] when a model has no link radii
 JAW_LENGTH = 0.03  # [m] along the approach axis, ending at the tool point
 JAW_THICKNESS = 0.006  # [m]
 
 
-@dataclass(frozen=True, eq=False)
-class Capsules:
-    """Link capsules of one pose: segments ``p0``, ``p1`` [m], shape (K, 3) each,
-    ``radii`` [m], shape (K,); K = dof + 1."""
-
-    p0: F64
-    p1: F64
-    radii: F64
-
-
-def link_capsules(model: ArmModel, q: ArrayLike) -> Capsules:
-    """The arm's link capsules at joint angles ``q`` [rad], shape (dof,)."""
-    origins = fk_frames(model, q)[:, :3, 3]
-    radii = model.link_radii or (DEFAULT_RADIUS,) * (model.dof + 1)
-    return Capsules(origins[:-1].copy(), origins[1:].copy(), np.array(radii, dtype=np.float64))
-
-
 def arm_primitives(
-    model: ArmModel, q: ArrayLike, grip: float | None = None, *, frames: bool = False
+    model: ArmModel,
+    q: ArrayLike,
+    grip: float | None = None,
+    *,
+    frames: bool = False,
+    T_world_base: F64 | None = None,
 ) -> list[Primitive]:
     """The arm at joint angles ``q`` [rad] with its jaws open to ``grip`` [m] (None:
-    fully open), named ``/arm/link_<i>``, ``/arm/jaw_<l|r>``, ``/arm/frame_<i>``."""
+    fully open), named ``/arm/link_<i>``, ``/arm/jaw_<l|r>``, ``/arm/frame_<i>``; in the
+    scene's frame when ``T_world_base`` (4, 4) is given (a scene's base placement)."""
     F = fk_frames(model, q)
-    caps = link_capsules(model, q)
+    caps = arm_capsules(model, q)
     shapes: list[Primitive] = [
         Capsule(
             f"/arm/link_{i}",
@@ -67,7 +54,9 @@ def arm_primitives(
     shapes += jaw_boxes(F[-1], width, float(caps.radii[-1]))
     if frames:
         shapes += [Axes(f"/arm/frame_{i}", T, 0.04) for i, T in enumerate(F)]
-    return shapes
+    if T_world_base is None:
+        return shapes
+    return [moved(s, T_world_base) for s in shapes]
 
 
 def jaw_boxes(T_tool: F64, width: float, radius: float) -> list[Primitive]:
@@ -85,12 +74,14 @@ def jaw_boxes(T_tool: F64, width: float, radius: float) -> list[Primitive]:
     return jaws
 
 
-def table_primitive(model: ArmModel, half_width: float | None = None) -> Box:
-    """The table: a thin slab whose top is the plane ``model.table_z``, wide enough
-    for the arm's reach (or ``half_width`` [m])."""
-    reach = half_width or max(0.2, 1.1 * reach_of(model))
+def table_primitive(model: ArmModel, scene: Scene | None = None) -> Box:
+    """The table: a thin slab whose top is the plane ``model.table_z`` (a scene's
+    ``table_z``), around the arm's base, wide enough for the arm's reach."""
+    reach = max(0.2, 1.1 * reach_of(model))
     thickness = 0.01
-    T = pose((0.0, 0.0, model.table_z - thickness / 2))
+    base = np.zeros(3) if scene is None else scene.T_world_base[:3, 3]
+    top = model.table_z if scene is None else scene.table_z
+    T = pose((float(base[0]), float(base[1]), top - thickness / 2))
     return Box("/table", np.array([2 * reach, 2 * reach, thickness]), T, TABLE_COLOUR)
 
 

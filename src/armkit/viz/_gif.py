@@ -1,9 +1,11 @@
-"""An animated GIF of an arm moving along a joint path (matplotlib 3-D).
+"""An animated GIF of an arm at work (drawn offscreen with Pillow: ``_raster``).
 
-``record_path`` moves an ``Arm`` through joint poses and samples its
-read-back ``fps`` times per second of its own clock (virtual time on the
-simulator, so a long path records in a moment); ``write_gif`` draws each
-sample from the same primitives as the web view.
+``GifRecorder`` is an Observer of a simulation World: it keeps the arm's true
+state (joints, gripper, the cubes of a ``ScenePhysics``) ``fps`` times per
+simulated second while any job runs (virtual time: a long job records in a
+moment). ``record_path`` moves an ``Arm`` through joint poses and samples it
+the same way. ``write_gif`` draws each sample from the same primitives as the
+web view: the table, the scene, the arm, the cubes where they are, the trail.
 """
 
 from __future__ import annotations
@@ -11,7 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -20,138 +22,151 @@ from .._errors import ArmkitError
 from ..arm import Arm
 from ..kinematics import fk
 from ..model import ArmModel
+from ..scene import Scene, ScenePhysics
 from ._arm_shapes import TRAIL_COLOUR, arm_primitives, reach_of, table_primitive
-from ._cubes import CUBE_POSITIONS, CUBE_SIZE
-from ._primitives import Box, Capsule, Cylinder, Primitive
+from ._ink import Ink
+from ._primitives import Polyline, Primitive
+from ._scene_shapes import cube_primitive, scene_primitives
+from ._state import ArmState, Truth, cubes
 from ._target import check_target
+
+if TYPE_CHECKING:
+    from ..connect import World
 
 F64 = NDArray[np.float64]
 HOLD = 0.3  # [s] the arm rests at each pose of the path
 LONGEST = 120.0  # [s] of arm time one recording may take
+MOST_FRAMES = 900  # a longer recording keeps every other frame (and halves its rate)
 
 
-def default_tour(model: ArmModel) -> list[F64]:
-    """Home, then 40 mm above each cube of the cubes scene that the arm can reach
-    pointing down (any pitch if not), then home [rad], each shape (dof,)."""
+class GifRecorder:
+    """Observer: the true state of ``arm`` every 1/``fps`` [s] of simulated time
+    (``frames``), with the cubes of ``physics`` if given; at most ``MOST_FRAMES``
+    (a longer job is thinned: ``fps`` halves)."""
+
+    def __init__(self, arm: Truth, fps: float, physics: ScenePhysics | None = None) -> None:
+        self.arm, self.fps, self.physics = arm, fps, physics
+        self.frames: list[ArmState] = []
+        self._next = -1.0
+
+    def on_step(self, world: World, t: float) -> None:
+        """Keep a frame when one is due."""
+        if t < self._next:
+            return
+        self._next = t + 1.0 / self.fps - 1e-9
+        self.frames.append(ArmState(t, self.arm.q(), self.arm.grip(), cubes(self.physics)))
+        if len(self.frames) > MOST_FRAMES:
+            self.frames = self.frames[::2]
+            self.fps /= 2.0
+
+
+def default_tour(model: ArmModel, scene: Scene | None = None) -> list[F64]:
+    """Home, then 40 mm above each cube of ``scene`` (or three points in front of the
+    arm) that the arm can reach pointing down (any pitch if not), then home [rad]."""
+    reach = reach_of(model)
+    points = [np.array([0.6 * reach, y * reach, model.table_z + 0.1 * reach]) for y in (-0.4, 0.0, 0.4)]  # fmt: skip
+    if scene is not None and scene.cubes:
+        lift = np.array([0.0, 0.0, 0.04])
+        points = [
+            scene.to_base(c.center + lift + np.array([0.0, 0.0, c.size / 2])) for c in scene.cubes
+        ]
     tour = [model.home]
-    for x, y, z in CUBE_POSITIONS.values():
-        above = np.array([x, y, model.table_z + z + CUBE_SIZE + 0.04])
+    for above in points:
         for pitch in (-math.pi / 2, None):
-            check = check_target(model, above, pitch, tour[-1])
+            check = check_target(model, above, pitch, tour[-1], scene)
             if check.q is not None:
                 tour.append(check.q)
                 break
     return [*tour, model.home]
 
 
-def record_path(arm: Arm, poses: Sequence[F64], fps: float) -> tuple[F64, F64]:
-    """Move ``arm`` through ``poses`` [rad] (each (dof,)) and sample its joints every
-    1/``fps`` [s]: times (N,) [s] from the start and joint angles (N, dof) [rad]."""
-    dt = 1.0 / fps
-    start = arm.clock.now()
-    times, qs = [0.0], [arm.driver.read()]
-    for q in poses:
-        arm.move_joints(np.degrees(q).tolist(), wait=False)
-        rest_until = None
-        while rest_until is None or arm.clock.now() < rest_until:
-            arm.clock.sleep(dt)
-            times.append(arm.clock.now() - start)
-            qs.append(arm.driver.read())
-            if rest_until is None and np.max(np.abs(qs[-1] - q)) < math.radians(0.1):
-                rest_until = arm.clock.now() + HOLD
-            if times[-1] > LONGEST:
+def record_path(arm: Arm, poses: Sequence[F64], fps: float) -> list[ArmState]:
+    """Move the simulated ``arm`` through ``poses`` [rad] (each (dof,)), resting
+    ``HOLD`` s at each, recording its truth ``fps`` times per simulated second."""
+    world = arm.world
+    if world is None:
+        raise ArmkitError("an animation records a simulated arm; drop --driver/--port")
+    recorder = GifRecorder(world.arm(), fps)
+    detach = world.attach(recorder)
+    try:
+        start = arm.clock.now()
+        for q in poses:
+            arm.move_joints(np.degrees(q).tolist())
+            arm.clock.sleep(HOLD)
+            if arm.clock.now() - start > LONGEST:
                 raise ArmkitError(f"the path takes longer than {LONGEST:.0f} s; give fewer poses")
-    return np.array(times), np.array(qs)
+    finally:
+        detach()
+    return recorder.frames
 
 
 def write_gif(
     model: ArmModel,
-    times: F64,
-    q: F64,
+    frames: Sequence[ArmState],
     path: str | Path,
     *,
-    scene: Sequence[Primitive] = (),
+    scene: Scene | None = None,
     fps: float = 15.0,
+    size: tuple[int, int] = (640, 480),
 ) -> Path:
-    """Draw ``q`` [rad], shape (N, dof), sampled at ``times`` [s] (N,), into the GIF
-    ``path`` at ``fps`` frames per second, with ``scene`` and the tool's trail."""
-    plt, animation = _matplotlib()
-    fig = plt.figure(figsize=(6.4, 4.8), dpi=80)
-    ax = fig.add_subplot(projection="3d")
-    tips = fk(model, q)[:, :3, 3]
-    static = [table_primitive(model), *scene]
-
-    def frame(i: int) -> list[Any]:
-        ax.cla()
-        _axes(ax, model)
-        for prim in [*static, *arm_primitives(model, q[i])]:
-            _draw(ax, prim)
-        ax.plot(*tips[: i + 1].T, color=_rgb(TRAIL_COLOUR), linewidth=1.5)
-        ax.set_title(f"{model.name}  t = {times[i]:.2f} s")
-        return []
-
-    anim = animation.FuncAnimation(fig, frame, frames=len(times), blit=False)
+    """Draw ``frames`` (each a moment of the arm and the cubes) into the GIF ``path``
+    at ``fps`` frames per second, ``size`` (width, height) [px]: the table, ``scene``,
+    the arm, the cubes where they are and the tool's trail."""
+    if not frames:
+        raise ArmkitError("nothing was recorded: the job did not run on a simulated arm")
+    raster = _raster()
+    T = np.eye(4) if scene is None else scene.T_world_base
+    tips = (T @ fk(model, np.array([f.q for f in frames])))[:, :3, 3]
+    camera = raster.look_from_front_right(T[:3, 3], reach_of(model), *size)
+    images = []
+    ink, strokes = Ink(scene.sheets if scene is not None else ()), {}
+    for i, state in enumerate(frames):
+        stroke = ink.add(tips[i])
+        if stroke is not None:
+            strokes[stroke.name] = stroke
+        trail = (
+            [Polyline("/trail", tips[: i + 1], TRAIL_COLOUR, 2.0), *strokes.values()] if i else []
+        )
+        title = f"{model.name}  t = {state.t - frames[0].t:.2f} s"
+        images.append(raster.render([*shapes_of(model, state, scene), *trail], camera, title))
     out = Path(path)
-    anim.save(out, writer=animation.PillowWriter(fps=fps))
-    plt.close(fig)
+    duration = round(1000.0 / fps)
+    images[0].save(out, save_all=True, append_images=images[1:], duration=duration, loop=0)
     return out
 
 
-def _matplotlib() -> tuple[Any, Any]:
+def write_picture(
+    model: ArmModel,
+    state: ArmState,
+    path: str | Path,
+    *,
+    scene: Scene | None = None,
+    title: str = "",
+    size: tuple[int, int] = (800, 600),
+) -> Path:
+    """Draw one moment (``state``) of the arm and ``scene`` into the image file ``path``
+    (PNG, ...), ``size`` (width, height) [px], offscreen. Returns the path."""
+    raster = _raster()
+    T = np.eye(4) if scene is None else scene.T_world_base
+    camera = raster.look_from_front_right(T[:3, 3], reach_of(model), *size)
+    raster.render(shapes_of(model, state, scene), camera, title).save(Path(path))
+    return Path(path)
+
+
+def shapes_of(model: ArmModel, state: ArmState, scene: Scene | None) -> list[Primitive]:
+    """The table, ``scene`` with its cubes where ``state`` has them, and the arm."""
+    T = np.eye(4) if scene is None else scene.T_world_base
+    shapes = {p.name: p for p in [table_primitive(model, scene), *(scene_primitives(scene) if scene else [])]}  # fmt: skip
+    cubes = {c.name: c for c in scene.cubes} if scene is not None else {}
+    for obj in state.objects:
+        if obj.name in cubes:
+            shapes[f"/scene/{obj.name}"] = cube_primitive(cubes[obj.name], scene, obj.T)
+    return [*shapes.values(), *arm_primitives(model, state.q, state.grip, T_world_base=T)]
+
+
+def _raster() -> Any:
     try:
-        import matplotlib
-
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        from matplotlib import animation
+        from . import _raster
     except ImportError:
-        raise ArmkitError("an animation needs matplotlib: pip install 'armkit[plot]'") from None
-    return plt, animation
-
-
-def _axes(ax: Any, model: ArmModel) -> None:
-    r = reach_of(model)
-    ax.set_xlim(-0.5 * r, r)
-    ax.set_ylim(-0.75 * r, 0.75 * r)
-    ax.set_zlim(model.table_z, model.table_z + r)
-    ax.set_box_aspect((1.5, 1.5, 1.0))
-    ax.view_init(elev=28, azim=-50)
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("y [m]")
-    ax.set_zlabel("z [m]")
-
-
-def _draw(ax: Any, prim: Primitive) -> None:
-    if isinstance(prim, Capsule):
-        pts = np.stack([prim.p0, prim.p1])
-        ax.plot(
-            *pts.T,
-            color=_rgb(prim.color),
-            linewidth=max(2.0, prim.radius * 400),
-            solid_capstyle="round",
-        )
-    elif isinstance(prim, Box | Cylinder):
-        _solid(ax, prim)
-
-
-def _solid(ax: Any, prim: Box | Cylinder) -> None:
-    """A box (or a cylinder's bounding box) as six faces."""
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
-
-    if isinstance(prim, Box):
-        size = prim.size
-    else:
-        size = np.array([2 * prim.radius, 2 * prim.radius, prim.height])
-    signs = np.array(
-        [[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=np.float64
-    )
-    corners = (prim.T[:3, :3] @ (signs * size / 2).T).T + prim.T[:3, 3]
-    faces = [[0, 1, 3, 2], [4, 5, 7, 6], [0, 1, 5, 4], [2, 3, 7, 6], [0, 2, 6, 4], [1, 3, 7, 5]]
-    poly = Poly3DCollection(
-        [corners[f] for f in faces], facecolor=_rgb(prim.color), edgecolor="0.3", linewidth=0.3
-    )
-    ax.add_collection3d(poly)
-
-
-def _rgb(color: tuple[int, int, int]) -> tuple[float, float, float]:
-    return (color[0] / 255.0, color[1] / 255.0, color[2] / 255.0)
+        raise ArmkitError("an animation needs Pillow: pip install 'armkit[plot]'") from None
+    return _raster

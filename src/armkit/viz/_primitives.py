@@ -10,7 +10,7 @@ drawing it again. Colours are RGB in 0..255.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -184,3 +184,19 @@ def _array(value: ArrayLike, shape: tuple[int, ...], what: str) -> F64:
     if not ok or not np.all(np.isfinite(a)):
         raise InputError(f"{what} must be finite numbers of shape {shape}, got {value!r}")
     return a
+
+
+def moved(prim: Primitive, T: F64) -> Primitive:
+    """``prim`` carried by the transform ``T`` (4, 4) (same name, shape and colour)."""
+    if np.array_equal(T, np.eye(4)):
+        return prim
+    R, t = T[:3, :3], T[:3, 3]
+    if isinstance(prim, Box | Cylinder | Axes):
+        return replace(prim, T=T @ prim.T)
+    if isinstance(prim, Capsule):
+        return replace(prim, p0=R @ prim.p0 + t, p1=R @ prim.p1 + t)
+    if isinstance(prim, Sphere):
+        return replace(prim, center=R @ prim.center + t)
+    if isinstance(prim, Polyline):
+        return replace(prim, points=prim.points @ R.T + t)
+    return replace(prim, position=R @ prim.position + t)

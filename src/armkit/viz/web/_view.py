@@ -1,10 +1,13 @@
 """``View``: a live 3D page of an arm on its table (viser, served from this process).
 
 The page is viser's own client, bundled in the viser package and served by the
-view itself, so it works with no network. A thread reads the ``StateSource``
+view itself, so it works with no network. It shows the arm on its table and
+the scene's objects (``armkit.scene.Scene``: boards, cubes, containers, paper,
+instruments) in the scene's frame. A thread reads the ``StateSource``
 ``rate_hz`` times a second and sends what changed (the link poses, the jaws,
-the tool's trail); a target marker shows whether a gripper target is
-reachable and clear.
+the cubes that moved, the tool's trail, the ink on the paper where the tool
+touched it); a target marker shows whether a
+gripper target is reachable, on a cube and clear (the scene's clearance check).
 """
 
 from __future__ import annotations
@@ -21,9 +24,12 @@ import viser
 from numpy.typing import ArrayLike, NDArray
 
 from ..._errors import ArmkitError, InputError
+from ...scene import Scene
 from .._arm_shapes import TRAIL_COLOUR, arm_primitives, reach_of, table_primitive
+from .._ink import Ink
 from .._primitives import Label, Polyline, Primitive, Sphere
-from .._state import ArmState, StateSource
+from .._scene_shapes import cube_primitive, scene_primitives
+from .._state import ArmState, ObjectPose, StateSource
 from .._target import TargetCheck, check_target
 from ._render import Renderer
 
@@ -47,8 +53,10 @@ class View:
     """A live 3D page of ``source``'s arm (see the module doc).
 
     Args:
-        source: what to show (``DriverSource``, later the simulation World).
-        scene: static primitives (table objects); the table plane is always drawn.
+        source: what to show (``WorldSource``, ``DriverSource``, ``LiveSource``).
+        scene: what is on the table (its cubes move as the source's objects say);
+            the table plane is always drawn.
+        extra: more primitives to draw once (scene frame).
         host, port: where to serve the page; 127.0.0.1 = this computer only, 0 = any free port.
         rate_hz: how often the source is read [1/s].
         frames: draw each joint frame's axes.
@@ -59,7 +67,8 @@ class View:
         self,
         source: StateSource,
         *,
-        scene: Sequence[Primitive] = (),
+        scene: Scene | None = None,
+        extra: Sequence[Primitive] = (),
         host: str = "127.0.0.1",
         port: int = 8080,
         rate_hz: float = 30.0,
@@ -70,6 +79,10 @@ class View:
             raise InputError(f"rate must be in (0, 1000] Hz, got {rate_hz}")
         self.source = source
         self.model = source.model
+        self.scene = scene
+        self.T_world_base = np.eye(4) if scene is None else scene.T_world_base
+        self._objects: dict[str, F64] = {}
+        self.ink = Ink(scene.sheets if scene is not None else ())
         self.rate_hz = rate_hz
         self.frames = frames
         self.server = _serve(host, port)
@@ -87,7 +100,7 @@ class View:
         self._started = time.monotonic()
         self.target: TargetCheck | None = None
         self._listeners: list[Callable[[], None]] = []
-        self._setup_page(scene)
+        self._setup_page(extra)
 
     @property
     def url(self) -> str:
@@ -129,31 +142,54 @@ class View:
             moved = self._last_q is None or not np.array_equal(state.q, self._last_q)
             grip_changed = self._state is None or state.grip != self._state.grip
             self._state = state
-            if not (moved or grip_changed):
+            objects = self._moved_objects(state.objects)
+            if not (moved or grip_changed or objects):
                 return False
             self._last_q = state.q.copy()
             with self.server.atomic():
                 self.renderer.draw(
-                    arm_primitives(self.model, state.q, state.grip, frames=self.frames)
+                    arm_primitives(
+                        self.model,
+                        state.q,
+                        state.grip,
+                        frames=self.frames,
+                        T_world_base=self.T_world_base,
+                    )
                 )
+                self.renderer.draw(objects)
                 self._grow_trail(state.q)
             self._updates += 1
             return True
 
+    def _moved_objects(self, objects: tuple[ObjectPose, ...]) -> list[Primitive]:
+        """Cube primitives of the objects whose pose changed since last shown."""
+        if self.scene is None:
+            return []
+        cubes = {c.name: c for c in self.scene.cubes}
+        out: list[Primitive] = []
+        for obj in objects:
+            last = self._objects.get(obj.name)
+            if obj.name in cubes and (last is None or not np.array_equal(last, obj.T)):
+                self._objects[obj.name] = obj.T
+                out.append(cube_primitive(cubes[obj.name], self.scene, obj.T))
+        return out
+
     def set_target(self, position: ArrayLike, pitch: float | None = None) -> TargetCheck:
-        """Check the gripper target ``position`` [m], shape (3,), at ``pitch`` [rad]
-        (None: any) and show it: a green ball when reachable and clear, red with the
-        reason otherwise."""
+        """Check the gripper target ``position`` [m] (arm base frame), shape (3,), at
+        ``pitch`` [rad] (None: any) against the scene and show it: a green ball when
+        reachable and clear (saying which cube it is on), red with the reason otherwise."""
         seed = None if self._state is None else self._state.q
-        check = check_target(self.model, position, pitch, seed)
+        check = check_target(self.model, position, pitch, seed, self.scene)
         colour = OK_COLOUR if check.ok else BAD_COLOUR
         text = "reachable" if check.ok else check.reason
+        text = f"on {check.on}: {text}" if check.on else text
+        where = self.T_world_base[:3, :3] @ check.position + self.T_world_base[:3, 3]
         with self._lock:
             self.target = check
             self.renderer.draw(
                 [
-                    Sphere("/target/ball", check.position, 0.012, colour),
-                    Label("/target/why", check.position + np.array([0.0, 0.0, 0.02]), text, colour),
+                    Sphere("/target/ball", where, 0.012, colour),
+                    Label("/target/why", where + np.array([0.0, 0.0, 0.02]), text, colour),
                 ]
             )
         return check
@@ -186,11 +222,15 @@ class View:
             self._stop.wait(max(0.0, deadline - time.monotonic()))
 
     def _grow_trail(self, q: F64) -> None:
-        if self._trail_max <= 0:
-            return
+        """The tool's trail, and the ink on the scene's paper where the tool touches it."""
         from ...kinematics import fk
 
-        tip = fk(self.model, q)[:3, 3]
+        tip = (self.T_world_base @ fk(self.model, q))[:3, 3]
+        stroke = self.ink.add(tip)
+        if stroke is not None:
+            self.renderer.draw_one(stroke)
+        if self._trail_max <= 0:
+            return
         if self._trail and np.linalg.norm(tip - self._trail[-1]) < TRAIL_STEP:
             return
         self._trail.append(tip)
@@ -198,7 +238,7 @@ class View:
         if len(self._trail) >= 2:
             self.renderer.draw_one(Polyline("/trail", np.array(self._trail), TRAIL_COLOUR, 2.0))
 
-    def _setup_page(self, scene: Sequence[Primitive]) -> None:
+    def _setup_page(self, extra: Sequence[Primitive]) -> None:
         s = self.server
         s.gui.configure_theme(show_share_button=False, control_width="medium")
         s.scene.set_up_direction("+z")
@@ -212,10 +252,12 @@ class View:
         )
         s.scene.add_light_directional("/lights/sun", intensity=1.6, position=(0.3, -0.5, 1.0))
         reach = reach_of(self.model)
-        s.initial_camera.position = (1.1 * reach, -1.0 * reach, 0.95 * reach)
-        s.initial_camera.look_at = (0.3 * reach, 0.0, 0.3 * reach)
+        x, y, z = self.T_world_base[:3, 3].tolist()
+        s.initial_camera.position = (x + 1.1 * reach, y - 1.0 * reach, z + 0.95 * reach)
+        s.initial_camera.look_at = (x + 0.3 * reach, y, z + 0.3 * reach)
         s.initial_camera.up = (0.0, 0.0, 1.0)
-        self.renderer.draw([table_primitive(self.model), *scene])
+        objects = scene_primitives(self.scene) if self.scene is not None else []
+        self.renderer.draw([table_primitive(self.model, self.scene), *objects, *extra])
 
 
 def _serve(host: str, port: int) -> viser.ViserServer:
