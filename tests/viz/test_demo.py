@@ -37,7 +37,7 @@ def test_the_demo_shows_every_arm_and_scene_and_leaves_nothing_behind(
     for scene in shipped_scenes():
         assert scene.split("_")[-1] in out
     assert "red 15.5, green 40.5, blue 65.5" in out  # stacked, each one cube higher
-    assert "placed object on container" in out
+    assert "placed object on bin" in out
     assert not config.exists()  # nothing kept: every arm was in memory
     from PIL import Image
 

@@ -32,7 +32,7 @@ from ._watch import add_watch_options, watch_world, watching
 NEXT = (
     "armkit --scene board_001 pick red --gif pick.gif",
     "armkit --scene board_001 view --screenshot board.png",
-    "armkit --scene search_002 move-item object container",
+    "armkit --scene search_002 move-item object bin",
     "armkit --arm lynx6 ik 200 0 50 --pitch -45 --all",
     "armkit scene list",
 )
@@ -145,7 +145,7 @@ def _put_away() -> None:
         assert arm.world is not None  # simulated
         physics = ScenePhysics(scene)
         arm.world.attach(physics)
-        plan = tasks.move_item(arm, scene, "object", "container", dry_run=True)
+        plan = tasks.move_item(arm, scene, "object", "bin", dry_run=True)
         tasks.run_plan(arm, plan)
         where = physics.cube("object").position * 1000
     events = "; ".join(e.detail for e in physics.events)

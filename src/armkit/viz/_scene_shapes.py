@@ -1,5 +1,5 @@
 """A scene (``armkit.scene.Scene``) as primitives: the table, boards and their sockets,
-cubes, containers, pen stands, sheets of paper, instruments and named places.
+cubes, containers, pen stands, sheets of paper, instruments, hands and named places.
 
 Everything is in the scene's (table's) frame [m]; the arm is drawn there through
 ``Scene.T_world_base``. Names are stable (``/scene/<object name>``,
@@ -28,6 +28,7 @@ PEN_COLOUR: RGB = (240, 200, 30)  # yellow
 BAR_COLOURS: tuple[RGB, ...] = ((170, 120, 60), (190, 140, 70))  # two woods, alternating
 DRUM_COLOUR: RGB = (180, 40, 40)
 PLACE_COLOUR: RGB = (60, 60, 60)
+HAND_COLOUR: RGB = (225, 180, 150)  # skin
 # Cubes named after a colour are drawn in it; other cubes take the palette in turn.
 NAMED_COLOURS: dict[str, RGB] = {
     "red": (215, 25, 25),
@@ -61,6 +62,8 @@ def scene_primitives(scene: Scene) -> list[Primitive]:
         shapes.append(Cylinder(f"/scene/{stand.pen}", 0.005, length, pose(tip), PEN_COLOUR))
     for instrument in scene.instruments:
         shapes += instrument_primitives(instrument)
+    for hand in scene.hands:
+        shapes.append(Box(f"/scene/{hand.name}", np.array(hand.size), pose(hand.position), HAND_COLOUR))  # fmt: skip
     for place in scene.places:
         shapes.append(Label(f"/scene/{place.name}", place.position, place.name, PLACE_COLOUR))
     shapes += [cube_primitive(cube, scene) for cube in scene.cubes]
