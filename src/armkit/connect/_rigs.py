@@ -68,7 +68,7 @@ def dynamixel_rig(
     ``[drivers.dynamixel]`` table (or ``config``)."""
     cfg = config if config is not None else dynamixel_section(model)
     points = calibration_points(model, cfg)
-    device = SimDynamixelBus([sid for sid, *_ in points], clock=world.now)
+    device = SimDynamixelBus([sid for sid, *_ in points], clock=world.now, baudrate=cfg.baudrate)
     mounts = [Mount(sid, joint, ticks, values) for sid, joint, ticks, values in points]
     arm = add_servo_arm(world, model, device, mounts, truth=truth)
     arm.device = device

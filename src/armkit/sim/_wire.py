@@ -19,7 +19,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from ._outbox import ByteDevice
+from ._outbox import ByteDevice, deliver
 from ._world import World
 
 POLL_S = 0.0005  # simulated time a non-blocking read that finds nothing costs [s]
@@ -51,10 +51,8 @@ class Wire:
         """Send ``data``; returns its length."""
         raw = bytes(data)
         with self.world.lock:
-            if self.device.baudrate is not None and self.device.baudrate != self.baudrate:
+            if not deliver(self.device, raw, self.world.now(), self.baudrate):
                 self.misheard += len(raw)
-            else:
-                self.device.receive(raw, self.world.now())
         return len(raw)
 
     def read(self, size: int = 1) -> bytes:
