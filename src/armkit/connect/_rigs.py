@@ -58,6 +58,9 @@ def servo_rig(model: ArmModel, world: World, kind: str, truth: Truth | None) -> 
     arm.device = device
     if isinstance(device, SimSSC32):
         device.analog = arm.analog  # VA..VD read the arm's analog inputs
+    else:  # a unit set up as the README's calibration flow says: each range widened
+        for _, table in tables:
+            device.configure(table.channel, min(table.pulses_us), max(table.pulses_us))
     return Rig(device, arm, setup.baudrate)
 
 
