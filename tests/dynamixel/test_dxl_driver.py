@@ -124,7 +124,9 @@ def test_failure_part_way_leaves_every_servo_holding(
     timer = threading.Timer(0.15, emu.inject, (13, "vanish"))
     timer.start()
     with pytest.raises(
-        DeviceError, match=r"servo 13: .*no reply.*every servo that answers holds \(servos \[13\]"
+        DeviceError,
+        match=r"servo 13: .*no reply.*servos \[11, 12, 14\] hold where they were; servos \[13\] "
+        "were sent the hold but did not confirm it",
     ):
         drv.move(np.radians([30.0, 20.0, 0.0, 30.0]), duration=2.0)
     timer.join()

@@ -155,13 +155,18 @@ class DynamixelDriver:
                 last = k == len(parts) - 1
                 origin = self._profile_move(origin, target, piece_s, ramp, wait or not last)
         except DeviceError as exc:
-            lost: list[int] = []
-            with contextlib.suppress(DeviceError):
-                lost = self._hold()
-            silent = f" (servos {lost} did not answer)" if lost else ""
-            raise DeviceError(
-                f"{exc}; the move was abandoned and every servo that answers holds{silent}"
-            ) from exc
+            raise DeviceError(f"{exc}; the move was abandoned: {self._hold_report()}") from exc
+
+    def _hold_report(self) -> str:
+        """Hold the joints after a failed move; which servos hold, in words."""
+        try:
+            held, silent = self._hold()
+        except DeviceError as exc:
+            return f"the hold could not be sent ({exc})"
+        words = f"servos {held} hold where they were" if held else "no servo confirmed a hold"
+        return words + (
+            f"; servos {silent} were sent the hold but did not confirm it" if silent else ""
+        )
 
     def _profile_move(
         self,
@@ -269,32 +274,41 @@ class DynamixelDriver:
         self.bus.write(self.gripper_id, "Goal Position", tick)
         self._stopped([self.gripper_id], 3.0)
 
-    def _hold(self) -> list[int]:
-        """Command every servo that answers to its present position; the IDs that did not.
-        One try per servo, so that a missing one delays the others as little as possible."""
-        held, lost = {}, []
-        self._sent = None  # the goal sent last no longer holds
+    def _hold(self) -> tuple[list[int], list[int]]:
+        """Hold every joint where its last profile has it now: one SYNC_WRITE of hold
+        profiles and goals, which needs no reply, so no servo's silence or garbage can
+        keep the others from holding. Then each servo is asked once for its Goal Position.
+        Returns (IDs that confirmed the hold, IDs sent it that did not confirm)."""
+        sent, self._sent, now = self._sent, None, self.clock.now()
+        if sent is None:  # no move sent: every servo rests on the goal it had
+            return [], []
+        goals = dict(zip(self.ids, self.to_ticks(sent.where(now)).tolist(), strict=True))
+        if not sent.done(now):  # ended profiles hold their goals already
+            self.bus.set_profiles({sid: _HOLD_PROFILE_MS for sid in goals})
+            self.bus.sync_write("Goal Position", goals)
+        held: list[int] = []
+        silent: list[int] = []
         retries, self.bus.retries = self.bus.retries, 0
         try:
-            for sid in [*self.ids, self.gripper_id]:
+            for sid, goal in goals.items():
                 try:
-                    held[sid] = self.bus.read(sid, "Present Position", alert_ok=True)
+                    ok = self.bus.read(sid, "Goal Position", alert_ok=True) == goal
                 except DeviceError:
-                    lost.append(sid)
+                    ok = False
+                (held if ok else silent).append(sid)
         finally:
             self.bus.retries = retries
-        if held:
-            self.bus.set_profiles({sid: _HOLD_PROFILE_MS for sid in held if sid in self.ids})
-            self.bus.sync_write("Goal Position", held)
-        return lost
+        return held, silent
 
     def stop(self) -> None:
-        """Hold every servo at its present position now. Safe to repeat, a no-op once closed."""
+        """Hold every joint where it is now. Safe to repeat, a no-op once closed."""
         if not self.bus.is_open:
             return
-        lost = self._hold()
-        if lost:
-            raise DeviceError(f"servos {lost} did not answer, so they could not be stopped")
+        _, silent = self._hold()
+        if silent:
+            raise DeviceError(
+                f"servos {silent} were sent a hold but did not confirm it; they may still move"
+            )
 
     def relax(self) -> None:
         """Torque off on every servo: the arm goes limp (support it first)."""
