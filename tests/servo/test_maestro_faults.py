@@ -68,7 +68,7 @@ def test_small_group_moves_arrive_together_and_on_time() -> None:
 
 
 def test_a_clamped_target_is_reported_with_how_to_widen_the_range() -> None:
-    world, driver, device = lynx6()
+    _, driver, device = lynx6()
     device.ranges = [FACTORY_RANGE] * len(device.ranges)  # a Maestro as it leaves the factory
     wrist = driver.joints[3]
     q = np.array(load_model("lynx6").home)
