@@ -126,7 +126,7 @@ def test_failure_part_way_leaves_every_servo_holding(
     with pytest.raises(
         DeviceError,
         match=r"servo 13: .*no reply.*servos \[11, 12, 14\] hold where they were; servos \[13\] "
-        "were sent the hold but did not confirm it",
+        "did not confirm that they hold",
     ):
         drv.move(np.radians([30.0, 20.0, 0.0, 30.0]), duration=2.0)
     timer.join()

@@ -33,7 +33,7 @@ def test_stop_holds_every_servo_even_those_whose_replies_fail(faults: dict[int, 
     world.advance(0.5)
     for sid, fault in faults.items():
         bus.inject(sid, fault, times=50)
-    with pytest.raises(DeviceError, match=r"servos \[(12, )?13\] were sent a hold") as info:
+    with pytest.raises(DeviceError, match=r"servos \[(12, )?13\] did not confirm") as info:
         driver.stop()
     world.advance(1.0)
     for sid, goal in zip(JOINTS, final.tolist(), strict=True):

@@ -29,6 +29,7 @@ from . import _xm430 as xm
 from ._dxl_packet import ALERT_BIT, describe_error
 from ._dxl_sdk import (
     COMM_SUCCESS,
+    GuardedPort,
     Protocol,
     comm_fault,
     import_sdk,
@@ -100,7 +101,7 @@ class DynamixelBus(ServoSettings):
         return bus
 
     def _attach(self, proto: Protocol, port: Any, retries: int, clock: Clock | None) -> None:
-        self.protocol, self._port, self._ph = proto, port, proto.packet_handler()
+        self.protocol, self._port, self._ph = proto, GuardedPort(port), proto.packet_handler()
         self.clock = clock or WallClock()
         self.retries = retries
         self.settle_s = 0.1  # after a failed exchange: wait for late replies, then drop them

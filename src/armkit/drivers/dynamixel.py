@@ -34,6 +34,7 @@ from numpy.typing import NDArray
 from .._clock import Clock, WallClock
 from .._errors import DeviceError, InputError
 from ..devices import _xm430 as xm
+from ..devices._port import PortGoneError
 from ..devices.dynamixel import DynamixelBus
 from ..model import ArmModel, DynamixelSection, dynamixel_section
 from ..model._limits import check_grip, check_joints, check_speed, limits, move_time, ramp_time
@@ -164,9 +165,7 @@ class DynamixelDriver:
         except DeviceError as exc:
             return f"the hold could not be sent ({exc})"
         words = f"servos {held} hold where they were" if held else "no servo confirmed a hold"
-        return words + (
-            f"; servos {silent} were sent the hold but did not confirm it" if silent else ""
-        )
+        return words + (f"; servos {silent} did not confirm that they hold" if silent else "")
 
     def _profile_move(
         self,
@@ -277,7 +276,7 @@ class DynamixelDriver:
     def _hold(self) -> tuple[list[int], list[int]]:
         """Hold every joint where its last profile has it now: one SYNC_WRITE of hold
         profiles and goals, which needs no reply, so no servo's silence or garbage can
-        keep the others from holding. Then each servo is asked once for its Goal Position.
+        keep the others from holding. Then each servo is asked for its Goal Position.
         Returns (IDs that confirmed the hold, IDs sent it that did not confirm)."""
         sent, self._sent, now = self._sent, None, self.clock.now()
         if sent is None:  # no move sent: every servo rests on the goal it had
@@ -288,16 +287,14 @@ class DynamixelDriver:
             self.bus.sync_write("Goal Position", goals)
         held: list[int] = []
         silent: list[int] = []
-        retries, self.bus.retries = self.bus.retries, 0
-        try:
-            for sid, goal in goals.items():
-                try:
-                    ok = self.bus.read(sid, "Goal Position", alert_ok=True) == goal
-                except DeviceError:
-                    ok = False
-                (held if ok else silent).append(sid)
-        finally:
-            self.bus.retries = retries
+        for sid, goal in goals.items():  # after the hold went out: retrying delays nobody
+            try:
+                ok = self.bus.read(sid, "Goal Position", alert_ok=True) == goal
+            except PortGoneError:
+                raise
+            except DeviceError:
+                ok = False
+            (held if ok else silent).append(sid)
         return held, silent
 
     def stop(self) -> None:
@@ -307,7 +304,7 @@ class DynamixelDriver:
         _, silent = self._hold()
         if silent:
             raise DeviceError(
-                f"servos {silent} were sent a hold but did not confirm it; they may still move"
+                f"servos {silent} did not confirm that they hold; they may still move"
             )
 
     def relax(self) -> None:
