@@ -14,6 +14,7 @@ from typing import Any, Protocol, TypeVar
 
 from .._clock import Clock, WallClock
 from .._errors import DeviceError, ReplyError
+from .._lock import Lock, exclusive
 from ._port import gone
 
 CR = b"\r"
@@ -84,9 +85,15 @@ class SerialLink:
         self.name, self.baudrate = name, baudrate
         self.timeout_s, self.retries = timeout_s, retries
         self.clock = clock or WallClock()
+        self._lock: Lock | None = None
         if isinstance(port, str):
             self.port = port
-            self._serial = _open(name, port, baudrate, timeout_s)
+            self._lock = exclusive(port, f"the {name} on {port}")
+            try:
+                self._serial = _open(name, port, baudrate, timeout_s)
+            except BaseException:
+                self._lock.release()
+                raise
         else:
             self.port = str(getattr(port, "port", None) or f"a {name} line")
             port.baudrate, port.timeout = baudrate, timeout_s
@@ -134,8 +141,12 @@ class SerialLink:
         self._guard("reset the input buffer", self._serial.reset_input_buffer)
 
     def close(self) -> None:
-        """Release the port. Safe to call twice."""
-        self._serial.close()
+        """Release the port (and its lock). Safe to call twice."""
+        try:
+            self._serial.close()
+        finally:
+            if self._lock is not None:
+                self._lock.release()
 
 
 def _open(name: str, port: str, baudrate: int, timeout_s: float) -> Any:

@@ -25,6 +25,7 @@ from typing import Any
 
 from .._clock import Clock, WallClock
 from .._errors import DeviceError
+from .._lock import Lock, exclusive
 from . import _xm430 as xm
 from ._dxl_packet import ALERT_BIT, describe_error
 from ._dxl_sdk import (
@@ -75,7 +76,13 @@ class DynamixelBus(ServoSettings):
     ) -> None:
         sdk = import_sdk()
         self._attach(sdk_protocol(), sdk.PortHandler(port), retries, clock)
-        self._open(port, baudrate)
+        lock = exclusive(port, f"the Dynamixel bus on {port}")
+        self._lock: Lock | None = lock
+        try:
+            self._open(port, baudrate)
+        except BaseException:
+            lock.release()
+            raise
 
     @classmethod
     def on_port(
@@ -105,6 +112,7 @@ class DynamixelBus(ServoSettings):
         self.clock = clock or WallClock()
         self.retries = retries
         self.settle_s = 0.1  # after a failed exchange: wait for late replies, then drop them
+        self._lock = None  # held while a port opened by path is open
         self._groups: dict[tuple[Any, ...], Any] = {}
 
     def _open(self, port: str, baudrate: int) -> None:
@@ -127,9 +135,13 @@ class DynamixelBus(ServoSettings):
         return bool(getattr(self._port, "is_open", False))
 
     def close(self) -> None:
-        """Close the port. Safe to call twice."""
-        if self.is_open:
-            self._port.closePort()
+        """Close the port (and release its lock). Safe to call twice."""
+        try:
+            if self.is_open:
+                self._port.closePort()
+        finally:
+            if self._lock is not None:
+                self._lock.release()
 
     def __enter__(self) -> DynamixelBus:
         return self
