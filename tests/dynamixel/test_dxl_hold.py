@@ -53,3 +53,30 @@ def test_stop_with_healthy_servos_says_nothing_and_holds() -> None:
     world.advance(1.0)
     assert all(bus.servos[sid].get("Moving") == 0 for sid in JOINTS)
     driver.close()
+
+
+def test_connect_writes_drive_mode_and_uses_robotis_gripper_ticks() -> None:
+    """Issue 10: direction never depends on the unit's history (a gripper left in reverse
+    Drive Mode, bit 0); the gripper's ticks are ROBOTIS's (ticks fall as the jaws open)."""
+    from armkit.connect._rigs import dynamixel_rig
+    from armkit.devices._dxl_protocol import PortHandler
+    from armkit.devices.dynamixel import DynamixelBus
+    from armkit.sim._wire import Wire, serial_port
+
+    world = World()
+    model = load_model("openmanipulator_x")
+    rig = dynamixel_rig(model, world, None)
+    bus = rig.device
+    assert isinstance(bus, SimDynamixelBus)
+    bus.servos[15].set("Drive Mode", 1)  # reversed by a previous owner
+    bus.servos[12].set("Drive Mode", 1)
+    wire = Wire(bus, world, baudrate=rig.baudrate, timeout=0)
+    port = DynamixelBus.on_port(PortHandler(serial_port(wire), world.clock), clock=world.clock)
+    driver = DynamixelDriver(model, port, config=rig.config, clock=world.clock)
+    assert bus.servos[15].value("Drive Mode") == 0
+    assert [bus.servos[s].value("Drive Mode") for s in JOINTS] == [4, 4, 4, 4]
+    driver.grip(0.075)
+    assert bus.servos[15].value("Goal Position") == 1613
+    driver.grip(0.020)
+    assert bus.servos[15].value("Goal Position") == 2483
+    driver.close()

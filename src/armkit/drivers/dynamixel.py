@@ -11,8 +11,11 @@ than one turn of range).
 Gripper (current-based position mode, so it squeezes with at most
 ``gripper_current`` x 2.69 mA instead of stalling at full torque): the opening
 maps linearly from ``width_mm[0]`` at ``gripper_ticks[0]`` to ``width_mm[1]`` at
-``gripper_ticks[1]``. The default ticks (1500 closed, 2600 open) are a starting
-point; measure your unit and set ``gripper_ticks`` in its calibration file.
+``gripper_ticks[1]``. The default ticks are ROBOTIS's (2483 closed, 1613 open:
+its stroke per tick, with ticks falling as the jaws open); measure your unit and
+set ``gripper_ticks`` in its calibration file. Every servo's Drive Mode is
+written on connect (normal direction; time-based profiles on the joints), so
+the direction never depends on what a unit was last set to.
 
 Moves use time-based profiles (Drive Mode bit 2): every joint gets the same
 total and ramp time (the shared timing rule of ``armkit.model._limits``), so
@@ -106,7 +109,8 @@ class DynamixelDriver:
         mode = xm.MODE_EXTENDED_POSITION if self._extended else xm.MODE_POSITION
         for sid in self.ids:
             self.bus.set_operating_mode(sid, mode)
-        self.bus.set_time_based(self.ids, True)
+            self.bus.set_eeprom(sid, "Drive Mode", xm.DRIVE_MODE_TIME_BASED)  # normal direction
+        self.bus.set_eeprom(self.gripper_id, "Drive Mode", 0)
         self.bus.set_operating_mode(self.gripper_id, xm.MODE_CURRENT_POSITION)
         self.bus.write(self.gripper_id, "Goal Current", gripper_current)
         self.bus.set_torque([*self.ids, self.gripper_id], True)
