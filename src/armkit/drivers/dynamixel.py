@@ -37,18 +37,17 @@ from numpy.typing import NDArray
 from .._clock import Clock, WallClock
 from .._errors import DeviceError, InputError
 from ..devices import _xm430 as xm
-from ..devices._port import PortGoneError
 from ..devices.dynamixel import DynamixelBus
 from ..model import ArmModel, DynamixelSection, dynamixel_section
 from ..model._limits import check_grip, check_joints, check_speed, limits, move_time, ramp_time
 from ._driver import pieces
+from ._dxl_hold import describe, hold
 from ._dxl_points import calibration_points as calibration_points
 from ._sent import SentProfile
 
 MAX_PROFILE_MS = 32737  # time-based Profile Velocity limit
 _POLL_S = 0.005  # between reads of Moving and Present Position while waiting [s]
 _SETTLE_S = 0.3  # longest wait for a stopped servo's encoder to reach its goal tick [s]
-_HOLD_PROFILE_MS = (50, 100)  # (ramp, total) of a stop: settle on the held tick in 0.1 s
 
 
 def open_driver(model: ArmModel, port: str | None) -> DynamixelDriver:
@@ -165,11 +164,9 @@ class DynamixelDriver:
     def _hold_report(self) -> str:
         """Hold the joints after a failed move; which servos hold, in words."""
         try:
-            held, silent = self._hold()
+            return describe(*self._hold())
         except DeviceError as exc:
             return f"the hold could not be sent ({exc})"
-        words = f"servos {held} hold where they were" if held else "no servo confirmed a hold"
-        return words + (f"; servos {silent} did not confirm that they hold" if silent else "")
 
     def _profile_move(
         self,
@@ -278,28 +275,13 @@ class DynamixelDriver:
         self._stopped([self.gripper_id], 3.0)
 
     def _hold(self) -> tuple[list[int], list[int]]:
-        """Hold every joint where its last profile has it now: one SYNC_WRITE of hold
-        profiles and goals, which needs no reply, so no servo's silence or garbage can
-        keep the others from holding. Then each servo is asked for its Goal Position.
-        Returns (IDs that confirmed the hold, IDs sent it that did not confirm)."""
+        """Hold every joint where its last profile has it now (``_dxl_hold``): (IDs that
+        confirmed, IDs that did not)."""
         sent, self._sent, now = self._sent, None, self.clock.now()
         if sent is None:  # no move sent: every servo rests on the goal it had
             return [], []
         goals = dict(zip(self.ids, self.to_ticks(sent.where(now)).tolist(), strict=True))
-        if not sent.done(now):  # ended profiles hold their goals already
-            self.bus.set_profiles({sid: _HOLD_PROFILE_MS for sid in goals})
-            self.bus.sync_write("Goal Position", goals)
-        held: list[int] = []
-        silent: list[int] = []
-        for sid, goal in goals.items():  # after the hold went out: retrying delays nobody
-            try:
-                ok = self.bus.read(sid, "Goal Position", alert_ok=True) == goal
-            except PortGoneError:
-                raise
-            except DeviceError:
-                ok = False
-            (held if ok else silent).append(sid)
-        return held, silent
+        return hold(self.bus, goals, send=not sent.done(now))
 
     def stop(self) -> None:
         """Hold every joint where it is now. Safe to repeat, a no-op once closed."""
