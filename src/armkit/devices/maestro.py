@@ -126,11 +126,25 @@ def motion_limits(delta_us: float, time_s: float) -> tuple[int, int]:
             accel,
         )
         for speed in {max(1, math.floor(exact)), max(1, math.ceil(exact - 1e-9))}
-        for accel in range(ACCEL_MAX + 1)
+        for accel in _accel_candidates(abs(delta_us), speed * SPEED_UNIT_US_PER_S, time_s)
     ]
     late = [option for option in options if option[0] >= time_s * (1 - 1e-9)]
     _, speed, accel = min(late) if late else max(options)  # below one unit: the slowest
     return speed, accel
+
+
+def _accel_candidates(d: float, v: float, time_s: float) -> set[int]:
+    """Acceleration limits [units] around the exact one that makes ``d`` [µs] at speed
+    limit ``v`` [µs/s] last ``time_s`` [s] (trapezoid: d/v + v/a; triangle: 2 sqrt(d/a)),
+    plus none (0) and the extremes."""
+    exact = []
+    if time_s > d / v:
+        exact.append(v / (time_s - d / v) / ACCEL_UNIT_US_PER_S2)
+    exact.append(4.0 * d / (time_s * time_s) / ACCEL_UNIT_US_PER_S2)
+    found = {0, 1, ACCEL_MAX}
+    for a in exact:
+        found |= {min(ACCEL_MAX, max(1, math.floor(a))), min(ACCEL_MAX, max(1, math.ceil(a)))}
+    return found
 
 
 class Maestro:
