@@ -60,3 +60,26 @@ def test_with_arm_raises_the_first_error_not_stops(kind: str) -> None:
     assert "the port has gone" in str(info.value)
     assert info.value.__context__ is None or not isinstance(info.value.__context__, DeviceError)
     assert any("stopping the arm afterwards failed" in n for n in info.value.__notes__)
+
+
+def test_the_cli_shows_the_first_error_in_one_line(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str], tmp_path: Any
+) -> None:
+    """The Maestro's port vanishes at the move: the move's own error (its position query)
+    is the one line the user reads, not stop()'s (a write) that follows it."""
+    from armkit.cli import main
+
+    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path))
+    _, driver, wire = rig("maestro")
+    move = driver.move
+
+    def unplugged_move(*args: Any, **kwargs: Any) -> None:
+        wire.unplug()
+        move(*args, **kwargs)
+
+    monkeypatch.setattr(driver, "move", unplugged_move)
+    monkeypatch.setattr("armkit.cli._motion.open_driver", lambda *a, **k: driver)
+    code = main(["--arm", "lynx6", "joints", "100", "90", "90", "90", "90"])
+    err = capsys.readouterr().err.strip()
+    assert code != 0 and len(err.splitlines()) == 1
+    assert err.startswith("armkit: error: Maestro on sim://maestro: reset the input buffer failed")
