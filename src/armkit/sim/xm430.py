@@ -52,6 +52,14 @@ _INDIRECT = {
     xm.register(f"Indirect Data {n}").address: xm.register(f"Indirect Address {n}").address
     for n in range(1, 2 * xm.INDIRECT_COUNT + 1)
 }
+_FIRST_INDIRECT = min(_INDIRECT)
+_PRESENT = {  # the registers every read refreshes, looked up once
+    name: xm.register(name)
+    for name in (
+        "Present Position", "Present Velocity", "Present Current", "Position Trajectory",
+        "Velocity Trajectory", "Realtime Tick", "Moving", "Moving Status",
+    )
+}  # fmt: skip
 _RAM = [r for r in _REGISTERS if not r.eeprom and r.writable and not r.name.startswith("Indirect")]
 
 
@@ -72,7 +80,7 @@ class Servo:
     ) -> None:
         self.memory = bytearray(xm.CONTROL_TABLE_SIZE)
         self._clock = clock
-        self._shift = 0  # ticks the multi-turn CLEAR removed from the reading
+        self._shift = 0  # reported minus actual position [tick]: Homing Offset - CLEARed turns
         self.profile = Profile(float(position), 0.0, clock())
         self.plans = 0  # how many moves were started (a re-sent goal must not add one)
         self.feedback: Callable[[], tuple[float, float]] | None = None  # (tick, tick/s)
@@ -110,8 +118,9 @@ class Servo:
         return xm.BAUD_RATES.get(self.value("Baud Rate"), 0)
 
     def _frame(self) -> float:
-        """Reported position minus actual position [tick]: Homing Offset and any CLEAR."""
-        return self.value("Homing Offset") - self._shift
+        """Reported position minus actual position [tick]: Homing Offset and any CLEAR
+        (kept in ``_shift``: the setpoint asks it at every step)."""
+        return self._shift
 
     # -- reading -----------------------------------------------------------------
     def read(self, address: int, size: int) -> bytes:
@@ -119,11 +128,12 @@ class Servo:
         Indirect Data bytes read the byte their Indirect Address names."""
         self._refresh(self._clock())
         raw = bytearray(self.memory[address : address + size])
-        for i in range(size):
-            pointer = _INDIRECT.get(address + i)
-            if pointer is not None:
-                target = int.from_bytes(self.memory[pointer : pointer + 2], "little")
-                raw[i] = self.memory[target] if target < len(self.memory) else 0
+        if address + size > _FIRST_INDIRECT:
+            for i in range(size):
+                pointer = _INDIRECT.get(address + i)
+                if pointer is not None:
+                    target = int.from_bytes(self.memory[pointer : pointer + 2], "little")
+                    raw[i] = self.memory[target] if target < len(self.memory) else 0
         return bytes(raw)
 
     def _refresh(self, now: float) -> None:
@@ -136,16 +146,22 @@ class Servo:
         else:
             position, velocity = wanted, wanted_speed
         units = velocity / TICKS_PER_S_PER_UNIT
-        self.set("Present Position", round(position))
-        self.set("Present Velocity", round(units))
-        self.set("Present Current", round(0.5 * units))
-        self.set("Position Trajectory", round(wanted))
-        self.set("Velocity Trajectory", round(wanted_speed / TICKS_PER_S_PER_UNIT))
-        self.set("Realtime Tick", int(now * 1000.0) % 32768)
-        self.set("Moving", int(running or abs(units) > self.value("Moving Threshold")))
         arrived = not running and abs(position - self.value("Goal Position")) < 1.0
         status = (xm.IN_POSITION if arrived else 0) | (xm.PROFILE_ONGOING if running else 0)
-        self.set("Moving Status", status | profile.kind << xm.PROFILE_SHIFT)
+        values = {
+            "Present Position": round(position),
+            "Present Velocity": round(units),
+            "Present Current": round(0.5 * units),
+            "Position Trajectory": round(wanted),
+            "Velocity Trajectory": round(wanted_speed / TICKS_PER_S_PER_UNIT),
+            "Realtime Tick": int(now * 1000.0) % 32768,
+            "Moving": int(running or abs(units) > self.value("Moving Threshold")),
+            "Moving Status": status | profile.kind << xm.PROFILE_SHIFT,
+        }
+        memory = self.memory
+        for name, value in values.items():
+            reg = _PRESENT[name]
+            memory[reg.address : reg.address + reg.size] = reg.encode(value)
 
     def setpoint(self, now: float) -> float | None:
         """Where the profile asks the motor to be at ``now`` [tick, actual]; None: torque off."""
@@ -216,6 +232,7 @@ class Servo:
         """Homing Offset moves the reported frame; the shaft stays where it is."""
         delta = offset - self.value("Homing Offset")
         self.set("Homing Offset", offset)
+        self._shift += delta
         p = self.profile
         self.profile = Profile(p.start + delta, p.distance, p.t0, p.ramp, p.total, p.kind)
         self.set("Goal Position", self.value("Goal Position") + delta)
@@ -285,8 +302,8 @@ class Servo:
                 self.memory[reg.address : reg.address + reg.size] = reg.encode(reg.default)
         for name, value in kept.items():
             self.set(name, value)
+        actual = self.profile.at(self._clock())[0] - self._shift  # the shaft stays put
         self._shift = 0
-        actual = self.profile.at(self._clock())[0]
         self.profile = Profile(actual, 0.0, self._clock())
         self.set("Goal Position", round(actual))
 
@@ -298,7 +315,7 @@ class Servo:
             return RESULT_FAIL
         present = self.get("Present Position")
         turns = present - present % xm.TICKS_PER_TURN
-        self._shift += turns
+        self._shift -= turns
         self.profile = Profile(self.profile.goal - turns, 0.0, now, kind=self.profile.kind)
         self.set("Goal Position", self.value("Goal Position") - turns)
         return 0
