@@ -32,6 +32,7 @@ from collections.abc import Callable
 
 from ..devices import _dxl_packet as pkt
 from ..devices import _xm430 as xm
+from ._xm430_memory import covered, merged, read_through, runs
 from ._xm430_profile import (
     TICKS_PER_S2_PER_UNIT,
     TICKS_PER_S_PER_UNIT,
@@ -46,13 +47,6 @@ RESULT_FAIL, LIMIT_ERROR, ACCESS_ERROR = 1, 6, 7
 RESET_ALL, RESET_KEEP_ID, RESET_KEEP_ID_BAUD = 0xFF, 0x01, 0x02  # FACTORY_RESET options
 _TORQUE_ENABLE = xm.register("Torque Enable").address
 _REGISTERS = sorted(xm.XM430_W350.values(), key=lambda r: r.address)
-_BY_ADDRESS = {r.address: r for r in _REGISTERS}
-# Indirect Data byte address -> address of the Indirect Address register that points it
-_INDIRECT = {
-    xm.register(f"Indirect Data {n}").address: xm.register(f"Indirect Address {n}").address
-    for n in range(1, 2 * xm.INDIRECT_COUNT + 1)
-}
-_FIRST_INDIRECT = min(_INDIRECT)
 _PRESENT = {  # the registers every read refreshes, looked up once
     name: xm.register(name)
     for name in (
@@ -127,14 +121,7 @@ class Servo:
         """``size`` bytes from ``address`` after updating the present-state registers;
         Indirect Data bytes read the byte their Indirect Address names."""
         self._refresh(self._clock())
-        raw = bytearray(self.memory[address : address + size])
-        if address + size > _FIRST_INDIRECT:
-            for i in range(size):
-                pointer = _INDIRECT.get(address + i)
-                if pointer is not None:
-                    target = int.from_bytes(self.memory[pointer : pointer + 2], "little")
-                    raw[i] = self.memory[target] if target < len(self.memory) else 0
-        return bytes(raw)
+        return read_through(self.memory, address, size)
 
     def _refresh(self, now: float) -> None:
         profile = self.profile
@@ -177,35 +164,27 @@ class Servo:
     def write(self, address: int, data: bytes) -> int:
         """WRITE as the firmware does it; returns the status error number (0 = ok).
         Nothing is written unless every register written may take its value."""
-        runs = self._runs(address, data)
-        for start, chunk in runs:
+        pieces = runs(self.memory, address, data)
+        for start, chunk in pieces:
             error = self._check(start, chunk)
             if error:
                 return error
-        for start, chunk in runs:
-            for reg in _covered(start, len(chunk)):
-                value, effect = self._merged(reg, start, chunk), self.effects.get(reg.name)
+        for start, chunk in pieces:
+            for reg in covered(start, len(chunk)):
+                value, effect = merged(self.memory, reg, start, chunk), self.effects.get(reg.name)
                 if effect is None:
                     self.set(reg.name, value)
                 else:
                     effect(value)
         return 0
 
-    def _merged(self, reg: xm.Register, start: int, chunk: bytes) -> int:
-        """``reg``'s value after writing ``chunk`` at ``start`` (a partial write keeps the
-        register's other bytes)."""
-        raw = bytearray(self.memory[reg.address : reg.address + reg.size])
-        part = chunk[reg.address - start : reg.address - start + reg.size]
-        raw[: len(part)] = part
-        return reg.decode(raw)
-
     def _check(self, address: int, data: bytes) -> int:
-        regs = _covered(address, len(data))
+        regs = covered(address, len(data))
         if not regs or any(not r.writable for r in regs):
             return ACCESS_ERROR
         if self.value("Torque Enable") and any(r.eeprom for r in regs):
             return ACCESS_ERROR
-        if any(not self._allowed(r, self._merged(r, address, data)) for r in regs):
+        if any(not self._allowed(r, merged(self.memory, r, address, data)) for r in regs):
             return LIMIT_ERROR
         return 0
 
@@ -262,21 +241,6 @@ class Servo:
         ramp, total = velocity_profile_times(distance, velocity, accel)
         return ramp, total, profile_kind(ramp, total, pv > 0)
 
-    def _runs(self, address: int, data: bytes) -> list[tuple[int, bytes]]:
-        """A write as runs of consecutive target bytes: an Indirect Data byte goes where its
-        Indirect Address points."""
-        runs: list[tuple[int, bytearray]] = []
-        for i, byte in enumerate(data):
-            target = address + i
-            pointer = _INDIRECT.get(target)
-            if pointer is not None:
-                target = int.from_bytes(self.memory[pointer : pointer + 2], "little")
-            if runs and runs[-1][0] + len(runs[-1][1]) == target:
-                runs[-1][1].append(byte)
-            else:
-                runs.append((target, bytearray((byte,))))
-        return [(start, bytes(chunk)) for start, chunk in runs]
-
     # -- instructions other than READ/WRITE -----------------------------------
     def overload(self) -> None:
         """Trip the overload error: torque off, the alert bit on until REBOOT."""
@@ -324,8 +288,3 @@ class Servo:
     def error_bits(self) -> int:
         """The alert bit for every status while a hardware error is latched."""
         return pkt.ALERT_BIT if self.value("Hardware Error Status") else 0
-
-
-def _covered(address: int, size: int) -> list[xm.Register]:
-    """The registers that start inside ``address .. address + size``."""
-    return [_BY_ADDRESS[a] for a in range(address, address + size) if a in _BY_ADDRESS]
