@@ -218,7 +218,15 @@ class Arm:
     def __exit__(
         self, kind: type[BaseException] | None, exc: BaseException | None, tb: TracebackType | None
     ) -> None:
-        self.close()
+        """Stop and close; when the block failed, its error stays the one raised (a failure
+        to stop afterwards, likely from the same cause, is added to it as a note)."""
+        if exc is None:
+            self.close()
+            return
+        try:
+            self.close()
+        except Exception as cleanup:
+            exc.add_note(f"and stopping the arm afterwards failed too: {cleanup}")
 
     def _joint_target(self, angles: Mapping[str, float] | Sequence[float]) -> F64:
         if isinstance(angles, Mapping):

@@ -105,7 +105,7 @@ def test_typed_driver_sections() -> None:
     assert owi.calibration_pose["shoulder"][0]["wrist"] == "upper"
     dxl = dynamixel_section(load_model("openmanipulator_x"))
     assert (
-        dxl.ids == (11, 12, 13, 14) and dxl.gripper_id == 15 and dxl.gripper_ticks == (1500, 2600)
+        dxl.ids == (11, 12, 13, 14) and dxl.gripper_id == 15 and dxl.gripper_ticks == (2483, 1613)
     )
     with pytest.raises(ModelError, match="not an OWI-535"):
         owi_section(load_model("lynx6"))

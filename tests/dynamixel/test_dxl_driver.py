@@ -99,9 +99,9 @@ def test_slower_speed_means_a_longer_profile(emu: DynamixelEmulator, drv: Dynami
 
 
 def test_grip_maps_width_to_ticks(emu: DynamixelEmulator, drv: DynamixelDriver) -> None:
-    assert drv.grip_ticks(0.020) == 1500 and drv.grip_ticks(0.075) == 2600
+    assert drv.grip_ticks(0.020) == 2483 and drv.grip_ticks(0.075) == 1613
     drv.grip(0.075)
-    assert emu.servos[15].get("Present Position") == 2600
+    assert emu.servos[15].get("Present Position") == 1613
 
 
 def test_stop_holds_every_servo_where_it_is(emu: DynamixelEmulator, drv: DynamixelDriver) -> None:
@@ -124,7 +124,9 @@ def test_failure_part_way_leaves_every_servo_holding(
     timer = threading.Timer(0.15, emu.inject, (13, "vanish"))
     timer.start()
     with pytest.raises(
-        DeviceError, match=r"servo 13: .*no reply.*every servo that answers holds \(servos \[13\]"
+        DeviceError,
+        match=r"servo 13: .*no reply.*servos \[11, 12, 14\] hold where they were; servos \[13\] "
+        "did not confirm that they hold",
     ):
         drv.move(np.radians([30.0, 20.0, 0.0, 30.0]), duration=2.0)
     timer.join()

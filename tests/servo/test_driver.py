@@ -120,9 +120,9 @@ def test_grip_width_goes_through_the_gripper_table(
 def test_stop_holds_every_servo(arm: ServoArmDriver, ssc32_emu: SSC32Emulator) -> None:
     arm.move(deg([150.0, 90.0, 90.0, 90.0, 90.0]), wait=False)
     arm.stop()
+    held = math.degrees(arm.read()[0])  # a reply: the board has read every line before it
     stops = [line for line in ssc32_emu.received if line.startswith(b"STOP")]
     assert stops == [b"STOP%d\r" % ch for ch in range(6)]
-    held = math.degrees(arm.read()[0])
     assert 90.0 <= held < 150.0
 
 

@@ -53,9 +53,9 @@ def test_replies_are_parsed_and_impossible_ones_refused() -> None:
         parse_moving(b"\x02")
 
 
-def test_speed_units_never_exceed_the_asked_rate() -> None:
+def test_speed_units_never_make_a_servo_late() -> None:
     assert speed_units(100.0, 1.0) == 4  # 100 µs/s = 4 x 25 µs/s
-    assert speed_units(110.0, 1.0) == 4  # rounded down: slower, never faster
+    assert speed_units(110.0, 1.0) == 5  # rounded up: never late (the ramps take up the rest)
     assert speed_units(1.0, 10.0) == 1  # never 0, which would mean unlimited
 
 

@@ -99,3 +99,42 @@ def test_ctrl_c_stops_it_cleanly_and_mistakes_are_one_line(tmp_path: Path) -> No
     assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "[drivers.ssc32]" in bad.stderr
     bad = _armkit(tmp_path, "emulate", "usb")
     assert bad.returncode == 2 and "invalid choice" in bad.stderr
+
+
+SDK_SCRIPT = """
+import sys
+from dynamixel_sdk import (COMM_SUCCESS, GroupBulkRead, GroupSyncRead, PacketHandler,
+                           PortHandler)
+
+port = PortHandler(sys.argv[1])
+assert port.openPort() and port.setBaudRate(1000000)
+ph = PacketHandler(2.0)
+# ROBOTIS's way: Present Position through Indirect Address 1..4 -> Indirect Data 1..4
+for k in range(4):
+    assert ph.write2ByteTxRx(port, 13, 168 + 2 * k, 132 + k) == (COMM_SUCCESS, 0)
+value, result, error = ph.read4ByteTxRx(port, 13, 224)
+assert (result, error) == (COMM_SUCCESS, 0), (result, error)
+bulk = GroupBulkRead(port, ph)
+assert bulk.addParam(11, 0, 2) and bulk.addParam(12, 132, 4)
+assert bulk.txRxPacket() == COMM_SUCCESS
+fast = GroupSyncRead(port, ph, 132, 4)
+for sid in (11, 12, 13, 14, 15):
+    fast.addParam(sid)
+assert fast.fastSyncRead() == COMM_SUCCESS
+print(value, bulk.getData(11, 0, 2), [fast.getData(s, 132, 4) for s in (11, 12, 13, 14, 15)])
+port.closePort()
+"""
+
+
+def test_an_official_dynamixel_sdk_script_runs_against_armkit_emulate(tmp_path: Path) -> None:
+    """A small dynamixel-sdk program, run as its own process, reads through the indirect
+    area, BULK_READ and FAST_SYNC_READ from ``armkit emulate dynamixel``."""
+    pytest.importorskip("dynamixel_sdk")
+    script = tmp_path / "sdk_script.py"
+    script.write_text(SDK_SCRIPT)
+    with emulator(tmp_path, "dynamixel") as (port, _):
+        done = subprocess.run(
+            [sys.executable, str(script), port], capture_output=True, text=True, timeout=60
+        )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.split() == ["2048", "1020", "[2048,", "2048,", "2048,", "2048,", "2048]"]

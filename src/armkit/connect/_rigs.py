@@ -58,6 +58,9 @@ def servo_rig(model: ArmModel, world: World, kind: str, truth: Truth | None) -> 
     arm.device = device
     if isinstance(device, SimSSC32):
         device.analog = arm.analog  # VA..VD read the arm's analog inputs
+    else:  # a unit set up as the README's calibration flow says: each range widened
+        for _, table in tables:
+            device.configure(table.channel, min(table.pulses_us), max(table.pulses_us))
     return Rig(device, arm, setup.baudrate)
 
 
@@ -68,7 +71,7 @@ def dynamixel_rig(
     ``[drivers.dynamixel]`` table (or ``config``)."""
     cfg = config if config is not None else dynamixel_section(model)
     points = calibration_points(model, cfg)
-    device = SimDynamixelBus([sid for sid, *_ in points], clock=world.now)
+    device = SimDynamixelBus([sid for sid, *_ in points], clock=world.now, baudrate=cfg.baudrate)
     mounts = [Mount(sid, joint, ticks, values) for sid, joint, ticks, values in points]
     arm = add_servo_arm(world, model, device, mounts, truth=truth)
     arm.device = device

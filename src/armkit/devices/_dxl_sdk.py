@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from .._errors import DeviceError
+from ._port import gone
 
 COMM_SUCCESS = 0
 COMM_RX_CORRUPT = -3002
@@ -96,3 +97,30 @@ def sync_read_replies(
             return sid, result, replies
         replies[sid] = (bytes(data), error)
     return -1, result, replies
+
+
+class GuardedPort:
+    """An SDK port handler whose OS or pyserial failures (a vanished adapter: termios.error,
+    SerialException, OSError) come out as a DeviceError naming the port."""
+
+    def __init__(self, port: Any) -> None:
+        object.__setattr__(self, "_inner", port)
+
+    def __getattr__(self, name: str) -> Any:
+        value = getattr(self._inner, name)
+        if not callable(value):
+            return value
+        return lambda *args, **kwargs: self._call(name, value, args, kwargs)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        setattr(self._inner, name, value)
+
+    def _call(self, name: str, method: Any, args: Any, kwargs: Any) -> Any:
+        try:
+            return method(*args, **kwargs)
+        except DeviceError:
+            raise
+        except Exception as exc:
+            self._inner.is_using = False  # the SDK would call the port busy from now on
+            where = getattr(self._inner, "port_name", "") or "the Dynamixel port"
+            raise gone("Dynamixel bus", where, name, exc) from exc

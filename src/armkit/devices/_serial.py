@@ -14,6 +14,8 @@ from typing import Any, Protocol, TypeVar
 
 from .._clock import Clock, WallClock
 from .._errors import DeviceError, ReplyError
+from .._lock import Lock, exclusive
+from ._port import gone
 
 CR = b"\r"
 T = TypeVar("T")
@@ -83,9 +85,15 @@ class SerialLink:
         self.name, self.baudrate = name, baudrate
         self.timeout_s, self.retries = timeout_s, retries
         self.clock = clock or WallClock()
+        self._lock: Lock | None = None
         if isinstance(port, str):
             self.port = port
-            self._serial = _open(name, port, baudrate, timeout_s)
+            self._lock = exclusive(port, f"the {name} on {port}")
+            try:
+                self._serial = _open(name, port, baudrate, timeout_s)
+            except BaseException:
+                self._lock.release()
+                raise
         else:
             self.port = str(getattr(port, "port", None) or f"a {name} line")
             port.baudrate, port.timeout = baudrate, timeout_s
@@ -93,10 +101,7 @@ class SerialLink:
 
     def write(self, data: bytes) -> None:
         """Send ``data`` as it is."""
-        try:
-            self._serial.write(data)
-        except Exception as exc:
-            raise DeviceError(f"{self.name} on {self.port}: write failed: {exc}") from None
+        self._guard("write", lambda: self._serial.write(data))
 
     def exchange(
         self, request: bytes, size: int | None, parse: Callable[[bytes], T], what: str
@@ -105,7 +110,7 @@ class SerialLink:
         DeviceError naming ``what`` was asked and the last fault after 1 + retries tries."""
         problem = ""
         for _ in range(1 + self.retries):
-            self._serial.reset_input_buffer()
+            self._guard("reset the input buffer", self._serial.reset_input_buffer)
             self.write(request)
             try:
                 return parse(_complete(self._read(size), size))
@@ -118,15 +123,30 @@ class SerialLink:
         )
 
     def _read(self, size: int | None) -> bytes:
-        return bytes(self._serial.read_until(CR) if size is None else self._serial.read(size))
+        serial = self._serial
+        return self._guard(
+            "read", lambda: bytes(serial.read_until(CR) if size is None else serial.read(size))
+        )
+
+    def _guard(self, what: str, call: Callable[[], T]) -> T:
+        """``call()``, its OS or pyserial failure (a vanished port) as a DeviceError naming
+        the port."""
+        try:
+            return call()
+        except Exception as exc:  # SerialException, termios.error, OSError: the port is gone
+            raise gone(self.name, self.port, what, exc) from exc
 
     def _drain(self) -> None:
         self.clock.sleep(self.timeout_s)
-        self._serial.reset_input_buffer()
+        self._guard("reset the input buffer", self._serial.reset_input_buffer)
 
     def close(self) -> None:
-        """Release the port. Safe to call twice."""
-        self._serial.close()
+        """Release the port (and its lock). Safe to call twice."""
+        try:
+            self._serial.close()
+        finally:
+            if self._lock is not None:
+                self._lock.release()
 
 
 def _open(name: str, port: str, baudrate: int, timeout_s: float) -> Any:

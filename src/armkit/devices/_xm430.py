@@ -47,7 +47,7 @@ class Register:
         name: the e-manual's name (``"Goal Position"``).
         address: first byte. size: 1, 2 or 4 bytes, little-endian.
         signed: two's complement. writable: False for read-only registers.
-        default: factory value.
+        default: factory value.  limit: name of the register bounding |value| ("" = none).
     """
 
     name: str
@@ -56,6 +56,7 @@ class Register:
     signed: bool = False
     writable: bool = True
     default: int = 0
+    limit: str = ""  # the register whose value bounds |value| on a write (error 6 beyond)
 
     @property
     def eeprom(self) -> bool:
@@ -113,10 +114,12 @@ _REGISTERS: tuple[Register, ...] = (
     Register("Position D Gain", 80, 2),
     Register("Position I Gain", 82, 2),
     Register("Position P Gain", 84, 2, default=800),
+    Register("Feedforward 2nd Gain", 88, 2),
+    Register("Feedforward 1st Gain", 90, 2),
     Register("Bus Watchdog", 98, 1),
-    Register("Goal PWM", 100, 2, signed=True, default=885),
-    Register("Goal Current", 102, 2, signed=True, default=1193),
-    Register("Goal Velocity", 104, 4, signed=True),
+    Register("Goal PWM", 100, 2, signed=True, default=885, limit="PWM Limit"),
+    Register("Goal Current", 102, 2, signed=True, default=1193, limit="Current Limit"),
+    Register("Goal Velocity", 104, 4, signed=True, limit="Velocity Limit"),
     Register("Profile Acceleration", 108, 4),
     Register("Profile Velocity", 112, 4),
     Register("Goal Position", 116, 4, signed=True, default=2048),
@@ -133,9 +136,68 @@ _REGISTERS: tuple[Register, ...] = (
     Register("Present Temperature", 146, 1, writable=False, default=30),
 )
 
-XM430_W350: dict[str, Register] = {reg.name: reg for reg in _REGISTERS}
+# Indirect Address n (2 bytes) names the control-table byte that Indirect Data n
+# (1 byte) reads and writes; factory default: the address of Indirect Data n itself.
+# Two blocks of 28 (e-Manual XM430-W350, "Indirect Address, Indirect Data").
+INDIRECT_BLOCKS = ((1, 168, 224), (29, 578, 634))  # (first n, first address, first data)
+INDIRECT_COUNT = 28  # entries per block
 
-CONTROL_TABLE_SIZE = 147  # bytes: last register ends at address 146
+
+def _indirect() -> tuple[Register, ...]:
+    regs: list[Register] = []
+    for first, address, data in INDIRECT_BLOCKS:
+        for k in range(INDIRECT_COUNT):
+            regs.append(
+                Register(f"Indirect Address {first + k}", address + 2 * k, 2, default=data + k)
+            )
+            regs.append(Register(f"Indirect Data {first + k}", data + k, 1))
+    return tuple(sorted(regs, key=lambda r: r.address))
+
+
+XM430_W350: dict[str, Register] = {reg.name: reg for reg in (*_REGISTERS, *_indirect())}
+
+CONTROL_TABLE_SIZE = 662  # bytes: Indirect Data 56 ends at address 661
+
+# Baud Rate register value -> bit/s (e-Manual XM430-W350, "Baud Rate (8)").
+BAUD_RATES: dict[int, int] = {
+    0: 9_600,
+    1: 57_600,
+    2: 115_200,
+    3: 1_000_000,
+    4: 2_000_000,
+    5: 3_000_000,
+    6: 4_000_000,
+    7: 4_500_000,
+}
+
+# Goal Position range per Operating Mode [tick] (e-Manual, "Goal Position (116)"): None =
+# between Min and Max Position Limit; modes absent here do not use Goal Position.
+EXTENDED_LIMIT = 1_048_575
+GOAL_POSITION_RANGE: dict[int, tuple[int, int] | None] = {
+    MODE_POSITION: None,
+    MODE_EXTENDED_POSITION: (-EXTENDED_LIMIT, EXTENDED_LIMIT),
+    MODE_CURRENT_POSITION: (-EXTENDED_LIMIT, EXTENDED_LIMIT),
+}
+
+# Status Return Level (68): which instructions get a status packet.
+STATUS_LEVEL_PING, STATUS_LEVEL_READ, STATUS_LEVEL_ALL = 0, 1, 2
+
+# Moving Status (123) bits (e-Manual, "Moving Status (123)").
+IN_POSITION = 0x01
+PROFILE_ONGOING = 0x02
+FOLLOWING_ERROR = 0x08
+PROFILE_SHIFT = 4  # bits 5..4: 0 step, 1 rectangular, 2 triangular, 3 trapezoidal
+PROFILE_STEP, PROFILE_RECTANGULAR, PROFILE_TRIANGULAR, PROFILE_TRAPEZOIDAL = 0, 1, 2, 3
+
+
+def baud_value(rate: int) -> int:
+    """The Baud Rate register value of ``rate`` [bit/s]; InputError for an unknown rate."""
+    for value, bps in BAUD_RATES.items():
+        if bps == rate:
+            return value
+    raise InputError(
+        f"baud rate {rate} is not an XM430 rate; use one of {list(BAUD_RATES.values())}"
+    )
 
 
 def register(name: str) -> Register:

@@ -25,10 +25,12 @@ from typing import Any
 
 from .._clock import Clock, WallClock
 from .._errors import DeviceError
+from .._lock import Lock, exclusive
 from . import _xm430 as xm
 from ._dxl_packet import ALERT_BIT, describe_error
 from ._dxl_sdk import (
     COMM_SUCCESS,
+    GuardedPort,
     Protocol,
     comm_fault,
     import_sdk,
@@ -74,7 +76,13 @@ class DynamixelBus(ServoSettings):
     ) -> None:
         sdk = import_sdk()
         self._attach(sdk_protocol(), sdk.PortHandler(port), retries, clock)
-        self._open(port, baudrate)
+        lock = exclusive(port, f"the Dynamixel bus on {port}")
+        self._lock: Lock | None = lock
+        try:
+            self._open(port, baudrate)
+        except BaseException:
+            lock.release()
+            raise
 
     @classmethod
     def on_port(
@@ -100,10 +108,11 @@ class DynamixelBus(ServoSettings):
         return bus
 
     def _attach(self, proto: Protocol, port: Any, retries: int, clock: Clock | None) -> None:
-        self.protocol, self._port, self._ph = proto, port, proto.packet_handler()
+        self.protocol, self._port, self._ph = proto, GuardedPort(port), proto.packet_handler()
         self.clock = clock or WallClock()
         self.retries = retries
         self.settle_s = 0.1  # after a failed exchange: wait for late replies, then drop them
+        self._lock = None  # held while a port opened by path is open
         self._groups: dict[tuple[Any, ...], Any] = {}
 
     def _open(self, port: str, baudrate: int) -> None:
@@ -126,9 +135,13 @@ class DynamixelBus(ServoSettings):
         return bool(getattr(self._port, "is_open", False))
 
     def close(self) -> None:
-        """Close the port. Safe to call twice."""
-        if self.is_open:
-            self._port.closePort()
+        """Close the port (and release its lock). Safe to call twice."""
+        try:
+            if self.is_open:
+                self._port.closePort()
+        finally:
+            if self._lock is not None:
+                self._lock.release()
 
     def __enter__(self) -> DynamixelBus:
         return self

@@ -31,6 +31,8 @@ GET_MOVING_STATE = 0x93
 GET_ERRORS = 0xA1
 CHANNELS = range(24)  # Mini Maestro 24; the Micro Maestro has 6
 SPEED_UNIT_US_PER_S = 25.0  # one speed unit: 0.25 µs per 10 ms
+ACCEL_UNIT_US_PER_S2 = 312.5  # one acceleration unit: 0.25 µs per 10 ms per 80 ms
+ACCEL_MAX = 255  # largest acceleration limit (User's Guide, "Set Acceleration")
 LIMIT_MAX = 0x3FFF  # largest 14-bit value a data pair can carry
 
 
@@ -92,9 +94,57 @@ def parse_moving(reply: bytes) -> bool:
 
 
 def speed_units(delta_us: float, time_s: float) -> int:
-    """The speed limit [units of 25 µs/s] that covers ``delta_us`` in at least ``time_s``
-    (rounded down, so never faster; at least 1, since 0 would mean unlimited)."""
-    return max(1, math.floor(abs(delta_us) / time_s / SPEED_UNIT_US_PER_S))
+    """The speed limit [units of 25 µs/s] that covers ``delta_us`` in at most ``time_s``
+    (rounded up; at least 1, since 0 would mean unlimited)."""
+    return max(1, math.ceil(abs(delta_us) / time_s / SPEED_UNIT_US_PER_S - 1e-9))
+
+
+def ramped_time(delta_us: float, speed: float, accel: float) -> float:
+    """How long the Maestro takes for ``delta_us`` [µs] at speed limit ``speed`` [µs/s]
+    and acceleration limit ``accel`` [µs/s^2] (0 = none): it ramps up, cruises, ramps down."""
+    d = abs(delta_us)
+    if accel <= 0:
+        return d / speed
+    if d < speed * speed / accel:
+        return 2.0 * math.sqrt(d / accel)
+    return d / speed + speed / accel
+
+
+def motion_limits(delta_us: float, time_s: float) -> tuple[int, int]:
+    """(speed units, acceleration units) that take ``delta_us`` [µs] in the time closest
+    to ``time_s`` [s] the Maestro's units allow, never shorter (never faster on average).
+
+    A speed of 1.6 units rounded to 1 would take 1.6 x as long; rounded to 2 with an
+    acceleration limit, its ramps take up the time the rounding gained: the search
+    is over both roundings of the speed and every acceleration limit (0 = none).
+    """
+    exact = abs(delta_us) / time_s / SPEED_UNIT_US_PER_S
+    options = [
+        (
+            ramped_time(delta_us, speed * SPEED_UNIT_US_PER_S, accel * ACCEL_UNIT_US_PER_S2),
+            speed,
+            accel,
+        )
+        for speed in {max(1, math.floor(exact)), max(1, math.ceil(exact - 1e-9))}
+        for accel in _accel_candidates(abs(delta_us), speed * SPEED_UNIT_US_PER_S, time_s)
+    ]
+    late = [option for option in options if option[0] >= time_s * (1 - 1e-9)]
+    _, speed, accel = min(late) if late else max(options)  # below one unit: the slowest
+    return speed, accel
+
+
+def _accel_candidates(d: float, v: float, time_s: float) -> set[int]:
+    """Acceleration limits [units] around the exact one that makes ``d`` [µs] at speed
+    limit ``v`` [µs/s] last ``time_s`` [s] (trapezoid: d/v + v/a; triangle: 2 sqrt(d/a)),
+    plus none (0) and the extremes."""
+    exact = []
+    if time_s > d / v:
+        exact.append(v / (time_s - d / v) / ACCEL_UNIT_US_PER_S2)
+    exact.append(4.0 * d / (time_s * time_s) / ACCEL_UNIT_US_PER_S2)
+    found = {0, 1, ACCEL_MAX}
+    for a in exact:
+        found |= {min(ACCEL_MAX, max(1, math.floor(a))), min(ACCEL_MAX, max(1, math.ceil(a)))}
+    return found
 
 
 class Maestro:
@@ -156,18 +206,18 @@ class Maestro:
         time_ms: int | None = None,
         speeds: Mapping[int, int] | None = None,
     ) -> None:
-        """Move several servos to arrive together: each one's speed limit is set to
-        cover its distance in the move's time (at least ``time_ms``, longer if a
-        ``speeds`` limit [µs/s] needs it), then all targets go out in one write.
-        Speeds round down to 25 µs/s steps, so servos arrive within one step of each
-        other and never early. Servos never commanded before jump."""
+        """Move several servos to arrive together: each one's speed and acceleration
+        limits are set to cover its distance in the move's time (at least ``time_ms``,
+        longer if a ``speeds`` limit [µs/s] needs it; ``motion_limits``), then all
+        targets go out in one write. Servos never commanded before jump."""
         data = b"".join(target_bytes(ch, pw) for ch, pw in pulses.items())  # validates
         starts = {ch: self.get_position(ch) for ch in pulses}
         move_s = _move_time(pulses, starts, time_ms, speeds or {})
-        limits = b"".join(
-            speed_bytes(ch, speed_units(pw - starts[ch], move_s) if move_s > 0 else 0)
-            for ch, pw in pulses.items()
-        )
+        limits = b""
+        for ch, pw in pulses.items():
+            delta = round(pw * 4) / 4.0 - starts[ch]  # as the Maestro sees it: quarter-µs
+            speed, accel = motion_limits(delta, move_s) if move_s > 0 and delta else (0, 0)
+            limits += speed_bytes(ch, speed) + acceleration_bytes(ch, accel)
         self._link.write(limits + data)
 
     def wait(self, timeout_s: float, poll_s: float = 0.005) -> None:
@@ -181,12 +231,17 @@ class Maestro:
                 )
             self.clock.sleep(poll_s)
 
-    def stop(self, channels: Iterable[int]) -> None:
-        """Hold each servo in ``channels`` where it is now (target := position)."""
+    def stop(self, channels: Iterable[int], at: Mapping[int, float] | None = None) -> None:
+        """Hold each servo in ``channels`` where it is now (target := position): at the
+        pulse ``at`` gives for it [µs] (the host's own estimate: no reply needed; a
+        channel absent from ``at`` was never commanded and is left), else at the
+        position it reports."""
+        data = b""
         for ch in channels:
-            pulse = self.get_position(ch)
+            pulse = self.get_position(ch) if at is None else at.get(ch, 0.0)
             if pulse:
-                self._link.write(bytes([SET_TARGET, ch]) + _seven_bit_pair(round(pulse * 4)))
+                data += bytes([SET_TARGET, ch]) + _seven_bit_pair(round(pulse * 4))
+        self._link.write(data)
 
     def close(self) -> None:
         """Release the port. Safe to call twice."""

@@ -11,8 +11,11 @@ than one turn of range).
 Gripper (current-based position mode, so it squeezes with at most
 ``gripper_current`` x 2.69 mA instead of stalling at full torque): the opening
 maps linearly from ``width_mm[0]`` at ``gripper_ticks[0]`` to ``width_mm[1]`` at
-``gripper_ticks[1]``. The default ticks (1500 closed, 2600 open) are a starting
-point; measure your unit and set ``gripper_ticks`` in its calibration file.
+``gripper_ticks[1]``. The default ticks are ROBOTIS's (2483 closed, 1613 open:
+its stroke per tick, with ticks falling as the jaws open); measure your unit and
+set ``gripper_ticks`` in its calibration file. Every servo's Drive Mode is
+written on connect (normal direction; time-based profiles on the joints), so
+the direction never depends on what a unit was last set to.
 
 Moves use time-based profiles (Drive Mode bit 2): every joint gets the same
 total and ramp time (the shared timing rule of ``armkit.model._limits``), so
@@ -38,13 +41,13 @@ from ..devices.dynamixel import DynamixelBus
 from ..model import ArmModel, DynamixelSection, dynamixel_section
 from ..model._limits import check_grip, check_joints, check_speed, limits, move_time, ramp_time
 from ._driver import pieces
+from ._dxl_hold import describe, hold
 from ._dxl_points import calibration_points as calibration_points
 from ._sent import SentProfile
 
 MAX_PROFILE_MS = 32737  # time-based Profile Velocity limit
 _POLL_S = 0.005  # between reads of Moving and Present Position while waiting [s]
 _SETTLE_S = 0.3  # longest wait for a stopped servo's encoder to reach its goal tick [s]
-_HOLD_PROFILE_MS = (50, 100)  # (ramp, total) of a stop: settle on the held tick in 0.1 s
 
 
 def open_driver(model: ArmModel, port: str | None) -> DynamixelDriver:
@@ -105,7 +108,8 @@ class DynamixelDriver:
         mode = xm.MODE_EXTENDED_POSITION if self._extended else xm.MODE_POSITION
         for sid in self.ids:
             self.bus.set_operating_mode(sid, mode)
-        self.bus.set_time_based(self.ids, True)
+            self.bus.set_eeprom(sid, "Drive Mode", xm.DRIVE_MODE_TIME_BASED)  # normal direction
+        self.bus.set_eeprom(self.gripper_id, "Drive Mode", 0)
         self.bus.set_operating_mode(self.gripper_id, xm.MODE_CURRENT_POSITION)
         self.bus.write(self.gripper_id, "Goal Current", gripper_current)
         self.bus.set_torque([*self.ids, self.gripper_id], True)
@@ -155,13 +159,14 @@ class DynamixelDriver:
                 last = k == len(parts) - 1
                 origin = self._profile_move(origin, target, piece_s, ramp, wait or not last)
         except DeviceError as exc:
-            lost: list[int] = []
-            with contextlib.suppress(DeviceError):
-                lost = self._hold()
-            silent = f" (servos {lost} did not answer)" if lost else ""
-            raise DeviceError(
-                f"{exc}; the move was abandoned and every servo that answers holds{silent}"
-            ) from exc
+            raise DeviceError(f"{exc}; the move was abandoned: {self._hold_report()}") from exc
+
+    def _hold_report(self) -> str:
+        """Hold the joints after a failed move; which servos hold, in words."""
+        try:
+            return describe(*self._hold())
+        except DeviceError as exc:
+            return f"the hold could not be sent ({exc})"
 
     def _profile_move(
         self,
@@ -269,32 +274,24 @@ class DynamixelDriver:
         self.bus.write(self.gripper_id, "Goal Position", tick)
         self._stopped([self.gripper_id], 3.0)
 
-    def _hold(self) -> list[int]:
-        """Command every servo that answers to its present position; the IDs that did not.
-        One try per servo, so that a missing one delays the others as little as possible."""
-        held, lost = {}, []
-        self._sent = None  # the goal sent last no longer holds
-        retries, self.bus.retries = self.bus.retries, 0
-        try:
-            for sid in [*self.ids, self.gripper_id]:
-                try:
-                    held[sid] = self.bus.read(sid, "Present Position", alert_ok=True)
-                except DeviceError:
-                    lost.append(sid)
-        finally:
-            self.bus.retries = retries
-        if held:
-            self.bus.set_profiles({sid: _HOLD_PROFILE_MS for sid in held if sid in self.ids})
-            self.bus.sync_write("Goal Position", held)
-        return lost
+    def _hold(self) -> tuple[list[int], list[int]]:
+        """Hold every joint where its last profile has it now (``_dxl_hold``): (IDs that
+        confirmed, IDs that did not)."""
+        sent, self._sent, now = self._sent, None, self.clock.now()
+        if sent is None:  # no move sent: every servo rests on the goal it had
+            return [], []
+        goals = dict(zip(self.ids, self.to_ticks(sent.where(now)).tolist(), strict=True))
+        return hold(self.bus, goals, send=not sent.done(now))
 
     def stop(self) -> None:
-        """Hold every servo at its present position now. Safe to repeat, a no-op once closed."""
+        """Hold every joint where it is now. Safe to repeat, a no-op once closed."""
         if not self.bus.is_open:
             return
-        lost = self._hold()
-        if lost:
-            raise DeviceError(f"servos {lost} did not answer, so they could not be stopped")
+        _, silent = self._hold()
+        if silent:
+            raise DeviceError(
+                f"servos {silent} did not confirm that they hold; they may still move"
+            )
 
     def relax(self) -> None:
         """Torque off on every servo: the arm goes limp (support it first)."""

@@ -85,7 +85,10 @@ class DynamixelSection:
         ids: one servo ID per joint, model order (0..252, all different).
         gripper_id: the gripper's servo ID.  baudrate: bus speed [bit/s].
         ticks_per_turn: ticks in one turn.  center_tick: tick at joint angle 0.
-        gripper_ticks: (closed, open) ticks.  gripper_current: current limit [2.69 mA units].
+        gripper_ticks: (closed, open) ticks; default ROBOTIS's own (open_manipulator_x
+            libraries: gripper -0.010 m closed .. +0.010 m open at -0.015 m per rad, Drive
+            Mode normal): 2048 -+ 0.010 / 0.015 rad x 4096 / 2pi = 2483 closed, 1613 open.
+        gripper_current: current limit [2.69 mA units].
         position_tolerance_ticks: how close a servo must come to count as arrived [ticks].
         operating_mode: the joints' mode, ``"position"`` (one turn, 0..4095) or
             ``"extended"`` (multi-turn: joints with more than one turn of range).
@@ -96,7 +99,7 @@ class DynamixelSection:
     baudrate: int = 1_000_000
     ticks_per_turn: int = 4096
     center_tick: float = 2048.0
-    gripper_ticks: tuple[int, int] = (1500, 2600)
+    gripper_ticks: tuple[int, int] = (2483, 1613)  # ROBOTIS's gripper range, see below
     gripper_current: int = 300
     position_tolerance_ticks: int = 30
     operating_mode: str = "position"
@@ -244,7 +247,9 @@ def _dynamixel(check: Checker, data: Any, model: ArmModel) -> DynamixelSection:
         baudrate=check.choice_int(get("baudrate", 1_000_000), f"{w}.baudrate", BAUDRATES),
         ticks_per_turn=ticks,
         center_tick=check.within(get("center_tick", 2048), f"{w}.center_tick", 0, ticks),
-        gripper_ticks=_gripper_ticks(check, get("gripper_ticks", [1500, 2600]), w),
+        gripper_ticks=_gripper_ticks(
+            check, get("gripper_ticks", list(DynamixelSection.gripper_ticks)), w
+        ),
         gripper_current=check.integer(get("gripper_current", 300), f"{w}.gripper_current", 1, 2047),
         position_tolerance_ticks=check.integer(
             get("position_tolerance_ticks", 30), f"{w}.position_tolerance_ticks", 1, 1000

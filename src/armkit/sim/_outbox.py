@@ -34,6 +34,22 @@ class ByteDevice(Protocol):
         ...
 
 
+def deliver(device: ByteDevice, data: bytes, now: float, baudrate: int | None) -> bool:
+    """Bytes from a host at ``baudrate`` [bit/s] (None: unknown) to ``device`` at ``now`` [s].
+
+    A device with a ``hear(data, now, baudrate)`` method sorts the rate out itself (a
+    Dynamixel bus: each servo has its own); any other hears only at its ``baudrate``
+    (None: any). Returns False when the bytes were noise to the device.
+    """
+    hear = getattr(device, "hear", None)
+    if hear is not None:
+        return bool(hear(data, now, baudrate))
+    if device.baudrate is not None and device.baudrate != baudrate:
+        return False
+    device.receive(data, now)
+    return True
+
+
 class Outbox:
     """Replies waiting to be read: (due time [s], bytes), in order of due time."""
 

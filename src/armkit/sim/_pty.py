@@ -19,8 +19,34 @@ import threading
 import tty
 from typing import Self
 
-from ._outbox import ByteDevice
+from ._outbox import ByteDevice, deliver
 from ._world import World
+
+# termios speed constant -> bit/s, for the standard rates this platform names
+_RATES = {
+    getattr(termios, f"B{rate}"): rate
+    for rate in (
+        9600,
+        19200,
+        38400,
+        57600,
+        115200,
+        230400,
+        460800,
+        500000,
+        576000,
+        921600,
+        1000000,
+        1152000,
+        1500000,
+        2000000,
+        2500000,
+        3000000,
+        3500000,
+        4000000,
+    )
+    if hasattr(termios, f"B{rate}")
+}
 
 
 class PtyServer:
@@ -57,18 +83,15 @@ class PtyServer:
             data = os.read(self._master, 4096)
         except OSError:
             return
-        if not self._baud_matches():
-            self.misheard += len(data)
-            return
         with self.world.lock:
-            self.device.receive(data, self.world.now())
+            heard = deliver(self.device, data, self.world.now(), self._host_rate())
+        if not heard:
+            self.misheard += len(data)
 
-    def _baud_matches(self) -> bool:
-        wanted = self.device.baudrate
-        if wanted is None:
-            return True
+    def _host_rate(self) -> int | None:
+        """The rate the client set on the terminal [bit/s] (None: not a standard one)."""
         speed = termios.tcgetattr(self._slave)[5]
-        return bool(speed == getattr(termios, f"B{wanted}", None))
+        return _RATES.get(speed)
 
     def _send_due(self) -> None:
         with self.world.lock:

@@ -7,33 +7,66 @@ from dataclasses import dataclass, field
 
 @dataclass
 class VirtualServo:
-    """One channel's output pulse [µs], moving linearly in time; 0 = never commanded."""
+    """One channel's output pulse [µs], moving in time; 0 = never commanded (or off).
+
+    Linear in time, or with ``ramp_s`` > 0 a trapezoid: the speed grows for ``ramp_s``
+    [s], holds, and falls for the last ``ramp_s`` (``ramp_s`` <= half the duration).
+    """
 
     start_us: float = 0.0
     target_us: float = 0.0
     t0: float = 0.0
     duration_s: float = 0.0
+    ramp_s: float = 0.0
 
     def pulse(self, now: float) -> float:
         """The pulse being sent at time ``now`` [s, device clock]."""
         if self.duration_s <= 0.0 or now >= self.t0 + self.duration_s:
             return self.target_us
-        frac = (now - self.t0) / self.duration_s
+        frac = _fraction(now - self.t0, self.duration_s, self.ramp_s)
         return self.start_us + (self.target_us - self.start_us) * frac
 
     def moving(self, now: float) -> bool:
         """True while the pulse is still changing."""
         return self.duration_s > 0.0 and now < self.t0 + self.duration_s
 
-    def go(self, target_us: float, duration_s: float, now: float) -> None:
-        """Start a move from here to ``target_us`` lasting ``duration_s`` (a first move jumps)."""
+    def go(self, target_us: float, duration_s: float, now: float, ramp_s: float = 0.0) -> None:
+        """Start a move from here to ``target_us`` lasting ``duration_s`` with ``ramp_s`` [s]
+        of acceleration at each end (a first move, or one from off, jumps)."""
         start = self.pulse(now)
         self.start_us, self.target_us, self.t0 = start, target_us, now
         self.duration_s = duration_s if start > 0.0 else 0.0
+        self.ramp_s = min(ramp_s, self.duration_s / 2.0)
 
     def hold(self, now: float) -> None:
         """Stop where the servo is now."""
         self.go(self.pulse(now), 0.0, now)
+
+
+def _fraction(t: float, total: float, ramp: float) -> float:
+    """How far along (0..1) a move of ``total`` [s] with ``ramp`` [s] ramps is at ``t`` [s]."""
+    if ramp <= 0.0:
+        return t / total
+    peak = 1.0 / (total - ramp)
+    if t < ramp:
+        return 0.5 * peak / ramp * t * t
+    if t <= total - ramp:
+        return peak * (t - 0.5 * ramp)
+    return 1.0 - 0.5 * peak / ramp * (total - t) ** 2
+
+
+def ramped_move(distance: float, speed: float, accel: float) -> tuple[float, float]:
+    """(duration, ramp) [s] of a move of ``distance`` [µs] at most ``speed`` [µs/s] with
+    ``accel`` [µs/s^2] (0 for either = unlimited)."""
+    d = abs(distance)
+    if d == 0.0 or (speed <= 0.0 and accel <= 0.0):
+        return 0.0, 0.0
+    if accel <= 0.0:
+        return d / speed, 0.0
+    if speed <= 0.0 or d < speed * speed / accel:
+        ramp = (d / accel) ** 0.5
+        return 2.0 * ramp, ramp
+    return d / speed + speed / accel, speed / accel
 
 
 @dataclass(frozen=True)
@@ -52,10 +85,13 @@ class PulseOutputs:
     servos: list[VirtualServo]
     busy_until: float = 0.0  # when the last move started ends [s, device clock]
 
-    def go(self, channel: int, target_us: float, duration_s: float, now: float) -> VirtualServo:
-        """Move ``channel`` to ``target_us`` [µs] over ``duration_s`` [s] from ``now``."""
+    def go(
+        self, channel: int, target_us: float, duration_s: float, now: float, ramp_s: float = 0.0
+    ) -> VirtualServo:
+        """Move ``channel`` to ``target_us`` [µs] over ``duration_s`` [s] from ``now`` (with
+        ``ramp_s`` [s] of acceleration at each end)."""
         servo = self.servos[channel]
-        servo.go(target_us, duration_s, now)
+        servo.go(target_us, duration_s, now, ramp_s)
         self.busy_until = max(self.busy_until, servo.t0 + servo.duration_s)
         return servo
 

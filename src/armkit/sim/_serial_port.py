@@ -38,11 +38,17 @@ class SimSerial(serial.SerialBase):  # type: ignore[misc]
 
     def read(self, size: int = 1) -> bytes:
         self._reconfigure_port()
-        return bytes(self._wire.read(size))
+        try:
+            return bytes(self._wire.read(size))
+        except OSError as exc:  # what pyserial's posix port raises for a vanished device
+            raise serial.SerialException(f"read failed: {exc}") from exc
 
     def write(self, data: bytes) -> int:
         self._reconfigure_port()
-        return int(self._wire.write(data))
+        try:
+            return int(self._wire.write(data))
+        except OSError as exc:
+            raise serial.SerialException(f"write failed: {exc}") from exc
 
     def reset_input_buffer(self) -> None:
         self._wire.reset_input_buffer()

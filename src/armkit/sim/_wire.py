@@ -16,10 +16,12 @@ then runs through pyserial's own ``read_until``, settings and checks.
 
 from __future__ import annotations
 
+import errno
+import termios
 from collections.abc import Callable
 from typing import Any
 
-from ._outbox import ByteDevice
+from ._outbox import ByteDevice, deliver
 from ._world import World
 
 POLL_S = 0.0005  # simulated time a non-blocking read that finds nothing costs [s]
@@ -41,24 +43,34 @@ class Wire:
         self.port = f"sim://{device.name}"
         self.is_open = True
         self.misheard = 0  # bytes the device could not understand (wrong baud rate)
+        self.unplugged = False  # the adapter is gone: every use of the line fails (``unplug``)
         self._on_close: list[Callable[[], None]] = []
 
     def on_close(self, action: Callable[[], None]) -> None:
         """Run ``action`` once when the host closes the line."""
         self._on_close.append(action)
 
+    def unplug(self) -> None:
+        """Pull the USB adapter out: from now on every read, write and flush of the line
+        fails with the OS's error, as a vanished /dev/tty* does (EIO)."""
+        self.unplugged = True
+
+    def _check_plugged(self) -> None:
+        if self.unplugged:
+            raise OSError(errno.EIO, "Input/output error", self.port)
+
     def write(self, data: bytes | bytearray | memoryview) -> int:
         """Send ``data``; returns its length."""
+        self._check_plugged()
         raw = bytes(data)
         with self.world.lock:
-            if self.device.baudrate is not None and self.device.baudrate != self.baudrate:
+            if not deliver(self.device, raw, self.world.now(), self.baudrate):
                 self.misheard += len(raw)
-            else:
-                self.device.receive(raw, self.world.now())
         return len(raw)
 
     def read(self, size: int = 1) -> bytes:
         """Up to ``size`` bytes, waiting (in simulated time) as ``timeout`` says."""
+        self._check_plugged()
         world, outbox = self.world, self.device.outbox
         got = bytearray()
         with world.lock:
@@ -100,6 +112,8 @@ class Wire:
 
     def reset_input_buffer(self) -> None:
         """Drop what has arrived (replies still in flight arrive later)."""
+        if self.unplugged:  # tcflush on a vanished tty
+            raise termios.error(errno.EIO, "Input/output error")
         with self.world.lock:
             self.device.outbox.drop_due(self.world.now())
 

@@ -1,20 +1,23 @@
 """A simulated Dynamixel bus: XM430-W350 servos answering Protocol 2.0 packets.
 
 Frames are split and checked with armkit's own codec (``devices._dxl_packet``);
-a frame with a bad CRC is ignored, like a servo does. Implemented: PING
-(unicast and broadcast), READ, WRITE, REBOOT, SYNC_READ, SYNC_WRITE, over the
-XM430-W350 control table (``sim.xm430``). ``INSTRUCTIONS`` is the table of
-instruction -> handler: a new instruction of the manual is one row and one method.
+a frame with a bad CRC is ignored, like a servo does. ``instructions`` is the
+table of instruction -> handler (ROBOTIS e-Manual, "DYNAMIXEL Protocol 2.0",
+Instruction): PING (unicast and broadcast), READ, WRITE, REG_WRITE + ACTION,
+FACTORY_RESET, REBOOT, CLEAR, SYNC_READ, SYNC_WRITE, FAST_SYNC_READ, BULK_READ,
+BULK_WRITE, over the XM430-W350 control table (``sim.xm430``).
+
+Who answers (e-Manual XM430-W350): a servo answers packets for its ID (its
+present ID register) and executes, silently, packets for its Secondary ID (12);
+Status Return Level (68) 0 answers only PING, 1 also the reads; a broadcast gets
+no status but PING's. Each servo listens at the rate of its Baud Rate register
+(8): a host at another rate reaches no servo (``hear``).
 
 Faults (``inject``): ``"drop"`` (the servo executes but its reply is lost),
 ``"corrupt"`` (reply with a wrong CRC), ``"late"`` (reply after ``late_s``),
 ``"vanish"`` (the servo stops answering and executing until ``revive``),
 ``"overload"`` (Hardware Error Status overload bit, torque off, alert bit in
 every status until REBOOT).
-
-Known differences from the real bus (issue 11, point 5: the next step):
-BULK_READ/BULK_WRITE, REG_WRITE + ACTION, FACTORY_RESET, CLEAR, FAST_SYNC_READ;
-the Baud Rate register is not checked against the host's rate.
 """
 
 from __future__ import annotations
@@ -24,24 +27,28 @@ from collections.abc import Callable, Iterable
 
 from ..devices import _dxl_packet as pkt
 from ..devices import _xm430 as xm
+from ._dxl_groups import GroupInstructions, u16
 from ._outbox import Outbox, log
 from .xm430 import ACCESS_ERROR, Servo
 
 FAULTS = ("drop", "corrupt", "late", "vanish", "overload")
 OPENMANIPULATOR_X_IDS = (11, 12, 13, 14, 15)
 _INSTRUCTION_ERROR = 2
+_CLEAR_KEY = b"\x44\x58\x4c\x22"  # CLEAR's fixed parameters after the option byte
+Reply = tuple[int, bytes, Callable[[], None] | None]  # error, data, what to do after replying
+_READS = (pkt.Inst.PING, pkt.Inst.READ)
 
 
-class SimDynamixelBus:
-    """XM430 servos on one bus (``ids``), on ``clock`` [s].
+class SimDynamixelBus(GroupInstructions):
+    """XM430 servos on one bus (``ids``), on ``clock`` [s], listening at ``baudrate`` [bit/s].
 
     Attributes:
-        servos: ID -> ``Servo``.  received: bytes read from the bus (count).  frames: the
-            last frames read (bounded).
-        outbox: the servos' status packets.  baudrate: None (any rate is answered).
+        servos: first ID -> ``Servo``.  received: bytes read from the bus (count).  frames:
+            the last frames read (bounded).  outbox: the servos' status packets.
     """
 
     name = "dynamixel"
+    baudrate: int | None = None  # per servo: see ``hear``
 
     def __init__(
         self,
@@ -49,10 +56,10 @@ class SimDynamixelBus:
         *,
         clock: Callable[[], float],
         late_s: float = 0.08,
+        baudrate: int = 1_000_000,
     ) -> None:
-        self.baudrate: int | None = None
         self._clock = clock
-        self.servos = {sid: Servo(sid, clock) for sid in ids}
+        self.servos = {sid: Servo(sid, clock, baudrate=baudrate) for sid in ids}
         self.late_s = late_s
         self.outbox = Outbox()
         self.received = 0  # bytes read from the bus
@@ -60,10 +67,18 @@ class SimDynamixelBus:
         self._buffer = bytearray()
         self._pending: dict[int, list[str]] = {}
         self._vanished: set[int] = set()
-        self.instructions: dict[int, Callable[[pkt.Packet], None]] = {
-            pkt.Inst.SYNC_WRITE: self._sync_write,
-            pkt.Inst.SYNC_READ: self._sync_read,
+        self._rate: int | None = None  # the host's rate for the bytes being read
+        self.unicast: dict[int, Callable[[Servo, pkt.Packet], Reply]] = {
+            pkt.Inst.PING: lambda s, p: (0, s.read(0, 2) + s.read(6, 1), None),
+            pkt.Inst.READ: self._read,
+            pkt.Inst.WRITE: lambda s, p: (s.write(u16(p.params, 0), p.params[2:]), b"", None),
+            pkt.Inst.REG_WRITE: self._reg_write,
+            pkt.Inst.ACTION: self._action,
+            pkt.Inst.FACTORY_RESET: lambda s, p: (0, b"", lambda: s.factory_reset(p.params[0])),
+            pkt.Inst.REBOOT: lambda s, p: (0, b"", s.reboot),
+            pkt.Inst.CLEAR: self._clear,
         }
+        self.instructions: dict[int, Callable[[pkt.Packet], None]] = self.group_instructions()
 
     def inject(self, servo_id: int, fault: str, times: int = 1) -> None:
         """Make ``servo_id`` misbehave: one of ``FAULTS`` (reply faults hit the next ``times``)."""
@@ -91,6 +106,15 @@ class SimDynamixelBus:
         return any(servo.busy(t) for servo in self.servos.values())
 
     # -- the wire --------------------------------------------------------------
+    def hear(self, data: bytes, now: float, baudrate: int | None) -> bool:
+        """Bytes from a host at ``baudrate`` [bit/s] (None: unknown, every servo hears);
+        False when no servo listens at that rate (the bytes are noise to all)."""
+        if baudrate is not None and all(s.baudrate != baudrate for s in self.servos.values()):
+            return False
+        self._rate = baudrate
+        self.receive(data, now)
+        return True
+
     def receive(self, data: bytes, now: float) -> None:
         """Bytes from the host: every complete frame is executed at once."""
         self.received += len(data)
@@ -109,43 +133,56 @@ class SimDynamixelBus:
 
     def handle(self, packet: pkt.Packet) -> None:
         """Execute one instruction packet and send the replies it calls for."""
-        special = self.instructions.get(packet.instruction)
-        if special is not None:
-            special(packet)
+        group = self.instructions.get(packet.instruction)
+        if group is not None:
+            group(packet)
             return
-        for servo in self._targets(packet):
-            error, data = self._execute(servo, packet)
-            if packet.id != pkt.BROADCAST_ID or packet.instruction == pkt.Inst.PING:
-                self._reply(servo, error, data)
-            if packet.instruction == pkt.Inst.REBOOT:
-                servo.reboot()
+        handler = self.unicast.get(packet.instruction)
+        for servo, primary in self._addressed(packet.id):
+            error, data, after = (
+                (_INSTRUCTION_ERROR, b"", None) if handler is None else handler(servo, packet)
+            )
+            broadcast = packet.id == pkt.BROADCAST_ID and packet.instruction != pkt.Inst.PING
+            if primary and not broadcast and self._answers(servo, packet.instruction):
+                self.reply(servo, error, data)
+            if after is not None:
+                after()
 
-    def _execute(self, servo: Servo, packet: pkt.Packet) -> tuple[int, bytes]:
-        """(status error, reply data) of PING, READ, WRITE or REBOOT on one servo."""
-        address = _u16(packet.params, 0)
-        if packet.instruction == pkt.Inst.PING:
-            return 0, servo.read(0, 2) + servo.read(6, 1)
-        if packet.instruction == pkt.Inst.READ:
-            size = _u16(packet.params, 2)
-            if address + size > xm.CONTROL_TABLE_SIZE:
-                return ACCESS_ERROR, b""
-            return 0, servo.read(address, size)
-        if packet.instruction == pkt.Inst.WRITE:
-            return servo.write(address, packet.params[2:]), b""
-        if packet.instruction == pkt.Inst.REBOOT:
-            return 0, b""
-        return _INSTRUCTION_ERROR, b""
+    def _addressed(self, target: int) -> list[tuple[Servo, bool]]:
+        """(servo, by its primary ID) for every present servo a packet to ``target`` reaches."""
+        found = []
+        for servo in self.present():
+            if target in (pkt.BROADCAST_ID, servo.value("ID")):
+                found.append((servo, True))
+            elif servo.value("Secondary ID") == target:
+                found.append((servo, False))
+        return found
 
-    def _present(self, servo_id: int) -> Servo | None:
-        return None if servo_id in self._vanished else self.servos.get(servo_id)
+    def present(self) -> list[Servo]:
+        """The servos that hear the host now (not vanished, at the host's baud rate), by ID."""
+        servos = [s for sid, s in self.servos.items() if sid not in self._vanished]
+        if self._rate is not None:
+            servos = [s for s in servos if s.baudrate == self._rate]
+        return sorted(servos, key=lambda s: s.value("ID"))
 
-    def _targets(self, packet: pkt.Packet) -> list[Servo]:
-        ids = sorted(self.servos) if packet.id == pkt.BROADCAST_ID else [packet.id]
-        return [servo for servo in map(self._present, ids) if servo is not None]
+    def by_id(self, servo_id: int) -> Servo | None:
+        """The present servo whose ID register is ``servo_id``."""
+        return next((s for s in self.present() if s.value("ID") == servo_id), None)
 
-    def _reply(self, servo: Servo, error: int = 0, data: bytes = b"") -> None:
+    @staticmethod
+    def _answers(servo: Servo, instruction: int) -> bool:
+        level = servo.value("Status Return Level")
+        if instruction == pkt.Inst.PING or level >= xm.STATUS_LEVEL_ALL:
+            return True
+        return level == xm.STATUS_LEVEL_READ and instruction in _READS
+
+    def reply(self, servo: Servo, error: int = 0, data: bytes = b"") -> None:
+        """Send ``servo``'s status packet (through its injected faults)."""
         sid = servo.value("ID")
-        frame = pkt.status(sid, error | servo.error_bits, data)
+        self.send(sid, pkt.status(sid, error | servo.error_bits, data))
+
+    def send(self, sid: int, frame: bytes) -> None:
+        """Put ``frame`` on the bus as servo ``sid`` says it (through its injected faults)."""
         fault = self._pending[sid].pop(0) if self._pending.get(sid) else ""
         if fault == "drop":
             return
@@ -153,19 +190,30 @@ class SimDynamixelBus:
             frame = frame[:-1] + bytes((frame[-1] ^ 0xFF,))
         self.outbox.send(frame, self._clock(), self.late_s if fault == "late" else 0.0)
 
-    def _sync_read(self, packet: pkt.Packet) -> None:
-        ids, read = packet.params[4:], pkt.Packet(0, pkt.Inst.READ, packet.params[:4])
-        for servo in filter(None, map(self._present, ids)):
-            self._reply(servo, *self._execute(servo, read))
+    # -- per-servo instructions ----------------------------------------------------
+    @staticmethod
+    def _read(servo: Servo, packet: pkt.Packet) -> Reply:
+        address, size = u16(packet.params, 0), u16(packet.params, 2)
+        if address + size > xm.CONTROL_TABLE_SIZE:
+            return ACCESS_ERROR, b"", None
+        return 0, servo.read(address, size), None
 
-    def _sync_write(self, packet: pkt.Packet) -> None:
-        params = packet.params
-        address, size, body = _u16(params, 0), _u16(params, 2), params[4:]
-        for offset in range(0, len(body) - size, size + 1):
-            servo = self._present(body[offset])
-            if servo is not None:
-                servo.write(address, body[offset + 1 : offset + 1 + size])
+    @staticmethod
+    def _reg_write(servo: Servo, packet: pkt.Packet) -> Reply:
+        servo.registered = (u16(packet.params, 0), packet.params[2:])
+        servo.set("Registered Instruction", 1)
+        return 0, b"", None
 
+    @staticmethod
+    def _action(servo: Servo, packet: pkt.Packet) -> Reply:
+        if servo.registered is None:
+            return 0, b"", None
+        (address, data), servo.registered = servo.registered, None
+        servo.set("Registered Instruction", 0)
+        return servo.write(address, data), b"", None
 
-def _u16(params: bytes, offset: int) -> int:
-    return int.from_bytes(params[offset : offset + 2], "little")
+    @staticmethod
+    def _clear(servo: Servo, packet: pkt.Packet) -> Reply:
+        if packet.params[:1] != b"\x01" or packet.params[1:5] != _CLEAR_KEY:
+            return 4, b"", None  # data range error: not the multi-turn clear
+        return servo.clear_multi_turn(), b"", None

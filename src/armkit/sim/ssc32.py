@@ -1,20 +1,20 @@
 """A simulated Lynxmotion SSC-32U: its ASCII protocol and its 32 pulse outputs.
 
 The command language (SSC-32U user guide; ``armkit.devices.ssc32`` speaks it
-from the host side) is parsed exactly: ``#<ch>P<pw>[S<spd>] ... [T<ms>]`` group
-moves, ``Q``, ``QP<ch>...``, ``STOP<ch>``, ``VER``; ESC cancels a line, CR ends
-it. Pulses move linearly in the device's time at the commanded speed and time
-(``_pulses.VirtualServo``). Each command is one row of ``COMMANDS`` (name ->
-handler): a new command of the manual is one row and one method.
+from the host side) is parsed exactly: ``#`` lines (group moves with ``P``,
+``S``, ``T``; ``P0`` pulse off; ``PO`` offsets; ``H``/``L`` and ``#<bank>:<value>``
+digital outputs: ``_ssc32_lines``, clamping 500..2500 µs and skipping only a bad
+clause), ``Q``, ``QP<ch>...``, ``STOP<ch>``, ``VER``, the digital inputs
+``A B C D`` and latched ``AL BL CL DL`` ("Digital Input": ASCII "0"/"1" each,
+a latched read is "0" if the input went low since the last one); ESC cancels a
+line, CR ends it. Pulses move linearly in the device's time at the commanded
+speed and time (``_pulses.VirtualServo``). Each command is one row of
+``commands`` (name -> handler): a new command of the manual is one row and one method.
 
-The board has no feedback: ``QP`` reports the pulse it sends. Its replies go
-through an ``Outbox`` (faults: ``inject``). It listens at one baud rate and
-ignores a host at another (``baudrate``), like the board.
-
-Known differences from the real board (issue 11, point 5: the next step):
-``P0``, out-of-range pulses (the board clamps them), ``PO`` offsets and digital
-I/O ``H``/``L``/``A``..``D``/``AL``..``DL`` are not yet answered. The analog inputs
-``VA``..``VD`` are (one byte each, 0..255 for 0..5 V, from ``analog``).
+The board has no feedback: ``QP`` reports the pulse it sends (offset included,
+0 while off). Its replies go through an ``Outbox`` (faults: ``inject``). It
+listens at one baud rate and ignores a host at another (``baudrate``), like the board.
+The analog inputs ``VA``..``VD`` answer one byte each, 0..255 for 0..5 V, from ``analog``.
 """
 
 from __future__ import annotations
@@ -25,11 +25,11 @@ from collections.abc import Callable
 
 from ._outbox import Outbox, log
 from ._pulses import MoveRecord, PulseOutputs, VirtualServo
+from ._ssc32_lines import CHANNELS, HashLine, Tokens, parse_hash_line
 
-CHANNELS = 32
 VERSION = b"SSC32-V2.50USB\r"
-_TOKEN = re.compile(r"(STOP|VER|V[A-D]|QP|Q|#|P|S|T)(\d*)")
-Tokens = list[tuple[str, str]]
+_TOKEN = re.compile(r"(STOP|VER|V[A-D]|QP|PO|AL|BL|CL|DL|Q|#|P|S|T|H|L|:|A|B|C|D)(-?\d*)")
+INPUTS = ("A", "B", "C", "D")
 
 
 class SimSSC32(PulseOutputs):
@@ -51,6 +51,10 @@ class SimSSC32(PulseOutputs):
         self.errors: deque[str] = log()
         self.history: deque[MoveRecord] = log()
         self.analog: dict[int, Callable[[], float]] = {}
+        self.offsets = [0] * CHANNELS  # PO [µs]
+        self.levels: dict[int, bool] = {}  # channels driven as digital outputs -> high
+        self.inputs = dict.fromkeys(INPUTS, True)  # A..D, pulled up
+        self._latched = dict.fromkeys(INPUTS, True)
         self._line = b""
         self.commands: dict[str, Callable[[Tokens, float], None]] = {
             "#": self._move,
@@ -59,7 +63,14 @@ class SimSSC32(PulseOutputs):
             "STOP": self._stop,
             "VER": self._version,
             **{f"V{c}": self._query_analog for c in "ABCD"},
+            **{name: self._read_inputs for name in INPUTS + tuple(i + "L" for i in INPUTS)},
         }
+
+    def set_input(self, name: str, high: bool) -> None:
+        """Drive digital input ``name`` (A..D) high or low (a low is latched)."""
+        self.inputs[name] = high
+        if not high:
+            self._latched[name] = False
 
     def receive(self, data: bytes, now: float) -> None:
         """Bytes from the host at time ``now`` [s]: executed line by line."""
@@ -73,8 +84,14 @@ class SimSSC32(PulseOutputs):
                 self._line += bytes([byte])
 
     def pulse(self, channel: int, now: float) -> float:
-        """The pulse ``channel`` sends at ``now`` [µs] (0 = never commanded)."""
-        return self.servos[channel].pulse(now)
+        """The pulse ``channel`` sends at ``now`` [µs], offset included (0 = off)."""
+        pulse = self.servos[channel].pulse(now)
+        return pulse + self.offsets[channel] if pulse > 0.0 else 0.0
+
+    def setpoint(self, channel: int, t: float) -> float | None:
+        """The pulse [µs] on ``channel`` at ``t`` [s]; None while it sends no pulse."""
+        pulse = self.pulse(channel, t)
+        return pulse if pulse > 0.0 else None
 
     def _execute(self, line: bytes, now: float) -> None:
         self.received.append(line + b"\r")
@@ -87,15 +104,23 @@ class SimSSC32(PulseOutputs):
         handler(tokens, now)
 
     def _move(self, tokens: Tokens, now: float) -> None:
-        parsed = _parse_move(tokens)
-        if isinstance(parsed, str):
-            self.errors.append(parsed)
-            return
-        clauses, time_ms = parsed
-        duration = max([time_ms / 1000.0] + [self._speed_time(c, now) for c in clauses])
+        line = parse_hash_line(tokens)
+        self.errors.extend(line.skipped)
+        for ch, offset in line.offsets.items():
+            self.offsets[ch] = offset
+        for ch, high in line.levels.items():
+            self.levels[ch] = high
+            self.go(ch, 0.0, 0.0, now)  # a digital output sends no pulse
+        if line.moves:
+            self._group(line, now)
+
+    def _group(self, line: HashLine, now: float) -> None:
+        moving = [c for c in line.moves if c[1]]
+        duration = max([line.time_ms / 1000.0] + [self._speed_time(c, now) for c in moving])
         record = MoveRecord(now, duration)
-        for ch, pw, _ in clauses:
-            servo = self.go(ch, pw, duration, now)
+        for ch, pw, _ in line.moves:
+            self.levels.pop(ch, None)
+            servo = self.go(ch, pw, duration if pw else 0.0, now)
             record.servos[ch] = (servo.start_us, servo.target_us)
         self.history.append(record)
 
@@ -112,7 +137,7 @@ class SimSSC32(PulseOutputs):
         if len(channels) != len(tokens) or any(ch >= CHANNELS for ch in channels):
             self.errors.append(f"bad pulse query: {tokens}")
             return
-        self.outbox.send(bytes(round(self.servos[ch].pulse(now) / 10) for ch in channels), now)
+        self.outbox.send(bytes(round(self.pulse(ch, now) / 10) for ch in channels), now)
 
     def _stop(self, tokens: Tokens, now: float) -> None:
         if len(tokens) != 1 or not tokens[0][1] or int(tokens[0][1]) >= CHANNELS:
@@ -132,6 +157,19 @@ class SimSSC32(PulseOutputs):
     def _version(self, tokens: Tokens, now: float) -> None:
         self.outbox.send(VERSION, now)
 
+    def _read_inputs(self, tokens: Tokens, now: float) -> None:
+        if any(kind[0] not in INPUTS or arg for kind, arg in tokens):
+            self.errors.append(f"bad input read: {tokens}")
+            return
+        reply = ""
+        for kind, _ in tokens:
+            name = kind[0]
+            level = self.inputs[name] and (len(kind) == 1 or self._latched[name])
+            if len(kind) == 2:
+                self._latched[name] = self.inputs[name]
+            reply += "1" if level else "0"
+        self.outbox.send(reply.encode("ascii"), now)
+
 
 def _tokenize(text: str) -> Tokens:
     """``"#1P1500T9"`` -> ``[("#", "1"), ("P", "1500"), ("T", "9")]``; [] if any junk."""
@@ -142,24 +180,3 @@ def _tokenize(text: str) -> Tokens:
         tokens.append((match.group(1), match.group(2)))
         pos = match.end()
     return tokens if pos == len(text) else []
-
-
-def _parse_move(tokens: Tokens) -> tuple[list[tuple[int, int, int]], int] | str:
-    """Move tokens -> ([(channel, pulse µs, speed µs/s or 0)], time ms), or what is wrong."""
-    time_ms = 0
-    if tokens[-1][0] == "T":
-        time_ms, tokens = int(tokens[-1][1] or 0), tokens[:-1]
-    clauses: list[tuple[int, int, int]] = []
-    i = 0
-    while i < len(tokens):
-        kinds = [kind for kind, _ in tokens[i : i + 3]]
-        size = 3 if kinds == ["#", "P", "S"] else 2
-        if kinds[:2] != ["#", "P"] or any(not arg for _, arg in tokens[i : i + size]):
-            return f"bad move at {tokens[i:]}"
-        ch, pw = int(tokens[i][1]), int(tokens[i + 1][1])
-        speed = int(tokens[i + 2][1]) if size == 3 else 0
-        if ch >= CHANNELS or not 500 <= pw <= 2500:
-            return f"move out of range: channel {ch}, pulse {pw}"
-        clauses.append((ch, pw, speed))
-        i += size
-    return clauses, time_ms

@@ -1,81 +1,60 @@
 """One simulated XM430-W350: its control-table memory and its motion profile.
 
 The control table is data (``armkit.devices._xm430``: address, size, sign,
-access, factory default per register), so a register the manual adds is one
-row there. The profile is evaluated from a clock, lazily: every read of the
-present-state registers computes where the trapezoid has the servo now.
-Velocity-based profile: Profile Velocity [0.229 rev/min] and Profile
-Acceleration [214.577 rev/min^2] (0 = Velocity Limit, instant ramp).
-Time-based profile (Drive Mode bit 2): Profile Velocity = total time [ms],
-Profile Acceleration = ramp time [ms], clipped to half the total.
+access, factory default and bounding register per register; the baud rates,
+the Goal Position range per operating mode), so a register the manual adds is
+one row there. Writes with side effects are one row of ``Servo.effects``. The
+profile (``_xm430_profile``) is evaluated from a clock, lazily: every read
+refreshes the present-state registers from where the trapezoid has the servo now.
+
+What it follows of the e-Manual (XM430-W350, Protocol 2.0 firmware):
+Present Position = actual position + Homing Offset (20); Goal Position within
+Min/Max Position Limit in position mode, within +-1,048,575 in extended and
+current-based position mode, else data limit error (6); Goal PWM/Current/
+Velocity beyond PWM/Current/Velocity Limit: error 6; EEPROM (< 64) writable
+only with torque off (access error 7); Realtime Tick (120) in ms modulo 32768;
+Moving (122) and Moving Status (123: in-position, profile ongoing, profile
+type); Velocity/Position Trajectory (136/140) from the profile; Indirect
+Address/Data (168..251, 578..661) read and write the byte their address names;
+FACTORY_RESET, REBOOT (RAM back to defaults) and CLEAR (multi-turn) as
+methods the bus calls.
 
 On an arm (``feedback`` set), Present Position/Velocity are what the servo's
 shaft really does (``_servo_body``: lag, speed cap); alone (``armkit emulate``)
-they follow the profile exactly. Goal Position is limited by Min/Max Position
-Limit in position mode and to +-1,048,575 in extended position mode.
-
-Known differences from the real servo (issue 11, point 5: the next step):
-Moving Status bits, Realtime Tick, the trajectory registers, Homing Offset,
-per-mode Goal Velocity/Current limits, Status Return Level, Secondary ID,
-feed-forward gains and the indirect address/data areas.
+they follow the profile exactly. Not modelled: the Following Error bit (the
+simulated motor never loses its trajectory), Shutdown conditions other than an
+injected overload.
 """
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
-from dataclasses import dataclass
 
 from ..devices import _dxl_packet as pkt
 from ..devices import _xm430 as xm
+from ._xm430_memory import covered, merged, read_through, runs
+from ._xm430_profile import (
+    TICKS_PER_S2_PER_UNIT,
+    TICKS_PER_S_PER_UNIT,
+    Profile,
+    profile_kind,
+    velocity_profile_times,
+)
 
-_TICKS_PER_S_PER_UNIT = xm.VELOCITY_UNIT_RPM * xm.TICKS_PER_TURN / 60.0
-_TICKS_PER_S2_PER_UNIT = xm.ACCELERATION_UNIT_RPM2 * xm.TICKS_PER_TURN / 3600.0
-LIMIT_ERROR, ACCESS_ERROR = 6, 7
-EXTENDED_LIMIT = 1_048_575  # Goal Position range in extended position mode [tick]
+__all__ = ["ACCESS_ERROR", "LIMIT_ERROR", "Profile", "Servo", "velocity_profile_times"]
+
+RESULT_FAIL, LIMIT_ERROR, ACCESS_ERROR = 1, 6, 7
+RESET_ALL, RESET_KEEP_ID, RESET_KEEP_ID_BAUD = 0xFF, 0x01, 0x02  # FACTORY_RESET options
 _TORQUE_ENABLE = xm.register("Torque Enable").address
-
-
-@dataclass(frozen=True, slots=True)
-class Profile:
-    """A trapezoidal move of ``distance`` ticks from ``start`` beginning at ``t0`` [s].
-
-    ``ramp`` is the acceleration time and ``total`` the whole move time [s].
-    """
-
-    start: float
-    distance: float
-    t0: float
-    ramp: float = 0.0
-    total: float = 0.0
-
-    def at(self, now: float) -> tuple[float, float]:
-        """(position [tick], velocity [tick/s]) at time ``now`` [s]."""
-        t = now - self.t0
-        if t >= self.total or self.total <= 0.0:
-            return self.start + self.distance, 0.0
-        peak = self.distance / (self.total - self.ramp)
-        if t < self.ramp:
-            return self.start + 0.5 * peak / self.ramp * t * t, peak * t / self.ramp
-        if t <= self.total - self.ramp:
-            return self.start + peak * (t - 0.5 * self.ramp), peak
-        left = self.total - t
-        return (
-            self.start + self.distance - 0.5 * peak / self.ramp * left * left,
-            peak * left / self.ramp,
-        )
-
-
-def velocity_profile_times(distance: float, velocity: float, accel: float) -> tuple[float, float]:
-    """(ramp, total) [s] for ``distance`` [tick] at ``velocity`` [tick/s], ``accel`` [tick/s^2]
-    (``accel`` = inf: instant ramp); triangular when the peak velocity is not reached."""
-    d = abs(distance)
-    if math.isinf(accel):
-        return 0.0, d / velocity
-    if d < velocity * velocity / accel:
-        ramp = math.sqrt(d / accel)
-        return ramp, 2.0 * ramp
-    return velocity / accel, d / velocity + velocity / accel
+_REGISTERS = sorted(xm.XM430_W350.values(), key=lambda r: r.address)
+_PRESENT = {  # the registers every read refreshes, looked up once
+    name: xm.register(name)
+    for name in (
+        "Present Position", "Present Velocity", "Present Current", "Position Trajectory",
+        "Velocity Trajectory", "Realtime Tick", "Moving", "Moving Status",
+    )
+}  # fmt: skip
+_RAM = [r for r in _REGISTERS if not r.eeprom and r.writable and not r.name.startswith("Indirect")]
 
 
 class Servo:
@@ -83,20 +62,35 @@ class Servo:
 
     Args:
         servo_id: its ID.  clock: its time [s].  position: where it starts [tick].
+        baudrate: the rate it listens at [bit/s] (its Baud Rate register).
     """
 
-    def __init__(self, servo_id: int, clock: Callable[[], float], position: int = 2048) -> None:
+    def __init__(
+        self,
+        servo_id: int,
+        clock: Callable[[], float],
+        position: int = 2048,
+        baudrate: int = 57_600,
+    ) -> None:
         self.memory = bytearray(xm.CONTROL_TABLE_SIZE)
-        for reg in xm.XM430_W350.values():
-            self.memory[reg.address : reg.address + reg.size] = reg.encode(reg.default)
         self._clock = clock
+        self._shift = 0  # reported minus actual position [tick]: Homing Offset - CLEARed turns
         self.profile = Profile(float(position), 0.0, clock())
         self.plans = 0  # how many moves were started (a re-sent goal must not add one)
         self.feedback: Callable[[], tuple[float, float]] | None = None  # (tick, tick/s)
+        self.registered: tuple[int, bytes] | None = None  # REG_WRITE waiting for ACTION
+        self.factory_reset(RESET_ALL)
         self.set("ID", servo_id)
+        self.set("Baud Rate", xm.baud_value(baudrate))
         self.set("Goal Position", position)
         self.set("Present Position", position)
+        self.effects: dict[str, Callable[[int], None]] = {
+            "Torque Enable": lambda on: self._torque(bool(on)),
+            "Goal Position": self._goal,
+            "Homing Offset": self._homing,
+        }
 
+    # -- registers -------------------------------------------------------------
     def get(self, name: str) -> int:
         """Register value, refreshed from the motion first."""
         reg = xm.register(name)
@@ -112,65 +106,99 @@ class Servo:
         reg = xm.register(name)
         return reg.decode(self.memory[reg.address : reg.address + reg.size])
 
+    @property
+    def baudrate(self) -> int:
+        """The rate it listens at [bit/s], from its Baud Rate register."""
+        return xm.BAUD_RATES.get(self.value("Baud Rate"), 0)
+
+    def _frame(self) -> float:
+        """Reported position minus actual position [tick]: Homing Offset and any CLEAR
+        (kept in ``_shift``: the setpoint asks it at every step)."""
+        return self._shift
+
+    # -- reading -----------------------------------------------------------------
     def read(self, address: int, size: int) -> bytes:
-        """``size`` bytes from ``address`` after updating the present-state registers."""
-        now = self._clock()
-        running = now < self.profile.t0 + self.profile.total
+        """``size`` bytes from ``address`` after updating the present-state registers;
+        Indirect Data bytes read the byte their Indirect Address names."""
+        self._refresh(self._clock())
+        return read_through(self.memory, address, size)
+
+    def _refresh(self, now: float) -> None:
+        profile = self.profile
+        running = profile.running(now)
+        wanted, wanted_speed = profile.at(now)
         if self.feedback is not None:
-            position, velocity = self.feedback()
+            actual, velocity = self.feedback()
+            position = actual + self._frame()
         else:
-            position, velocity = self.profile.at(now)
-        units = velocity / _TICKS_PER_S_PER_UNIT
-        self.set("Present Position", round(position))
-        self.set("Present Velocity", round(units))
-        self.set("Present Current", round(0.5 * units))
-        moving = running or abs(units) > self.value("Moving Threshold")
-        self.set("Moving", int(moving))
-        return bytes(self.memory[address : address + size])
+            position, velocity = wanted, wanted_speed
+        units = velocity / TICKS_PER_S_PER_UNIT
+        arrived = not running and abs(position - self.value("Goal Position")) < 1.0
+        status = (xm.IN_POSITION if arrived else 0) | (xm.PROFILE_ONGOING if running else 0)
+        values = {
+            "Present Position": round(position),
+            "Present Velocity": round(units),
+            "Present Current": round(0.5 * units),
+            "Position Trajectory": round(wanted),
+            "Velocity Trajectory": round(wanted_speed / TICKS_PER_S_PER_UNIT),
+            "Realtime Tick": int(now * 1000.0) % 32768,
+            "Moving": int(running or abs(units) > self.value("Moving Threshold")),
+            "Moving Status": status | profile.kind << xm.PROFILE_SHIFT,
+        }
+        memory = self.memory
+        for name, value in values.items():
+            reg = _PRESENT[name]
+            memory[reg.address : reg.address + reg.size] = reg.encode(value)
 
     def setpoint(self, now: float) -> float | None:
-        """Where the profile asks the motor to be at ``now`` [tick]; None with torque off."""
+        """Where the profile asks the motor to be at ``now`` [tick, actual]; None: torque off."""
         if not self.memory[_TORQUE_ENABLE]:
             return None
-        profile = self.profile
-        if now >= profile.t0 + profile.total:
-            return profile.start + profile.distance
-        return profile.at(now)[0]
+        return self.profile.at(now)[0] - self._frame()
 
     def busy(self, now: float) -> bool:
         """True while the profile is running."""
-        return now < self.profile.t0 + self.profile.total
+        return self.profile.running(now)
 
+    # -- writing -----------------------------------------------------------------
     def write(self, address: int, data: bytes) -> int:
-        """WRITE as the firmware does it; returns the status error number (0 = ok)."""
-        regs = [r for r in xm.XM430_W350.values() if address <= r.address < address + len(data)]
+        """WRITE as the firmware does it; returns the status error number (0 = ok).
+        Nothing is written unless every register written may take its value."""
+        pieces = runs(self.memory, address, data)
+        for start, chunk in pieces:
+            error = self._check(start, chunk)
+            if error:
+                return error
+        for start, chunk in pieces:
+            for reg in covered(start, len(chunk)):
+                value, effect = merged(self.memory, reg, start, chunk), self.effects.get(reg.name)
+                if effect is None:
+                    self.set(reg.name, value)
+                else:
+                    effect(value)
+        return 0
+
+    def _check(self, address: int, data: bytes) -> int:
+        regs = covered(address, len(data))
         if not regs or any(not r.writable for r in regs):
             return ACCESS_ERROR
         if self.value("Torque Enable") and any(r.eeprom for r in regs):
             return ACCESS_ERROR
-        if any(r.name == "Goal Position" for r in regs) and not self._in_limits(data, address):
+        if any(not self._allowed(r, merged(self.memory, r, address, data)) for r in regs):
             return LIMIT_ERROR
-        for reg in regs:
-            offset = reg.address - address
-            self._apply(reg, reg.decode(data[offset : offset + reg.size]))
         return 0
 
-    def _in_limits(self, data: bytes, address: int) -> bool:
-        goal = xm.register("Goal Position")
-        offset = goal.address - address
-        value = goal.decode(data[offset : offset + goal.size])
-        if self.value("Operating Mode") == xm.MODE_EXTENDED_POSITION:
-            return -EXTENDED_LIMIT <= value <= EXTENDED_LIMIT
-        return self.value("Min Position Limit") <= value <= self.value("Max Position Limit")
-
-    def _apply(self, reg: xm.Register, value: int) -> None:
-        if reg.name == "Torque Enable":
-            self._torque(bool(value))
-        elif reg.name == "Goal Position":
-            self.set(reg.name, value)
-            self._plan(value)
-        else:
-            self.set(reg.name, value)
+    def _allowed(self, reg: xm.Register, value: int) -> bool:
+        if reg.limit:
+            return abs(value) <= self.value(reg.limit)
+        if reg.name != "Goal Position":
+            return True
+        mode = self.value("Operating Mode")
+        if mode not in xm.GOAL_POSITION_RANGE:
+            return True
+        span = xm.GOAL_POSITION_RANGE[mode]
+        low, high = span or (self.value("Min Position Limit"), self.value("Max Position Limit"))
+        return low <= value <= high
 
     def _torque(self, on: bool) -> None:
         present = self.get("Present Position")
@@ -179,37 +207,82 @@ class Servo:
         self.set("Goal Position", present)
         self.set("Torque Enable", int(on))
 
-    def _plan(self, goal: int) -> None:
+    def _homing(self, offset: int) -> None:
+        """Homing Offset moves the reported frame; the shaft stays where it is."""
+        delta = offset - self.value("Homing Offset")
+        self.set("Homing Offset", offset)
+        self._shift += delta
+        p = self.profile
+        self.profile = Profile(p.start + delta, p.distance, p.t0, p.ramp, p.total, p.kind)
+        self.set("Goal Position", self.value("Goal Position") + delta)
+
+    def _goal(self, goal: int) -> None:
+        self.set("Goal Position", goal)
         if not self.value("Torque Enable"):
             return
         now = self._clock()
         start, _ = self.profile.at(now)
         if round(start) == goal:  # already there: hold, no move started
-            self.profile = Profile(float(goal), 0.0, now)
+            self.profile = Profile(float(goal), 0.0, now, kind=self.profile.kind)
             return
-        ramp, total = self._times(goal - start)
-        self.profile = Profile(start, goal - start, now, ramp, total)
+        ramp, total, kind = self._times(goal - start)
+        self.profile = Profile(start, goal - start, now, ramp, total, kind)
         self.plans += 1
 
-    def _times(self, distance: float) -> tuple[float, float]:
+    def _times(self, distance: float) -> tuple[float, float, int]:
         pv, pa = self.value("Profile Velocity"), self.value("Profile Acceleration")
+        if self.value("Drive Mode") & xm.DRIVE_MODE_TIME_BASED and pv > 0:
+            ramp, total = min(pa, pv / 2) / 1000.0, pv / 1000.0
+            return ramp, total, profile_kind(ramp, total, True)
         if self.value("Drive Mode") & xm.DRIVE_MODE_TIME_BASED:
-            if pv > 0:
-                return min(pa, pv / 2) / 1000.0, pv / 1000.0
             pa = 0
-        velocity = (pv or self.value("Velocity Limit")) * _TICKS_PER_S_PER_UNIT
-        accel = pa * _TICKS_PER_S2_PER_UNIT if pa else math.inf
-        return velocity_profile_times(distance, velocity, accel)
+        velocity = (pv or self.value("Velocity Limit")) * TICKS_PER_S_PER_UNIT
+        accel = pa * TICKS_PER_S2_PER_UNIT if pa else float("inf")
+        ramp, total = velocity_profile_times(distance, velocity, accel)
+        return ramp, total, profile_kind(ramp, total, pv > 0)
 
+    # -- instructions other than READ/WRITE -----------------------------------
     def overload(self) -> None:
         """Trip the overload error: torque off, the alert bit on until REBOOT."""
         self._torque(False)
         self.set("Hardware Error Status", 0x20)
 
     def reboot(self) -> None:
-        """REBOOT: clear the hardware error; torque comes back off."""
-        self.set("Hardware Error Status", 0)
+        """REBOOT: clear the hardware error; the RAM area back to its defaults (torque off)."""
         self._torque(False)
+        for reg in _RAM:
+            self.set(reg.name, reg.default)
+        self.set("Hardware Error Status", 0)
+        self.set("Goal Position", self.get("Present Position"))
+        self.registered = None
+
+    def factory_reset(self, option: int) -> None:
+        """FACTORY_RESET: every register to its factory value (``RESET_KEEP_ID`` keeps the ID,
+        ``RESET_KEEP_ID_BAUD`` the ID and the Baud Rate)."""
+        keep = {RESET_KEEP_ID: ("ID",), RESET_KEEP_ID_BAUD: ("ID", "Baud Rate")}.get(option, ())
+        kept = {name: self.value(name) for name in keep}
+        for reg in _REGISTERS:
+            if reg.name not in ("Present Position", "Goal Position"):
+                self.memory[reg.address : reg.address + reg.size] = reg.encode(reg.default)
+        for name, value in kept.items():
+            self.set(name, value)
+        actual = self.profile.at(self._clock())[0] - self._shift  # the shaft stays put
+        self._shift = 0
+        self.profile = Profile(actual, 0.0, self._clock())
+        self.set("Goal Position", round(actual))
+
+    def clear_multi_turn(self) -> int:
+        """CLEAR (option 1): Present Position back into one turn (0..4095), the shaft
+        unmoved; refused (result fail) while the servo moves. Returns the error number."""
+        now = self._clock()
+        if self.busy(now):
+            return RESULT_FAIL
+        present = self.get("Present Position")
+        turns = present - present % xm.TICKS_PER_TURN
+        self._shift -= turns
+        self.profile = Profile(self.profile.goal - turns, 0.0, now, kind=self.profile.kind)
+        self.set("Goal Position", self.value("Goal Position") - turns)
+        return 0
 
     @property
     def error_bits(self) -> int:

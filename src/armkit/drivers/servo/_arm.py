@@ -195,6 +195,7 @@ class ServoArmDriver:
         if wait:
             self.clock.sleep(self._busy_until - now)  # nothing to ask before it can be done
             self.bus.wait(WAIT_MARGIN_S)
+            self.bus.check_reached(pulses)
             self.clock.sleep(self.settle_s)
 
     def move_servo(
@@ -243,10 +244,16 @@ class ServoArmDriver:
         self._send({self.grip_table.channel: self.grip_table.to_pulse(width)}, 0, True)
 
     def stop(self) -> None:
-        """Hold every servo where it is now. Safe to call at any time, repeatedly."""
-        if not self._closed:
-            self.bus.stop(self._channels())
-            self._commanded = {ch: p for ch, p in self.bus.read(self._channels()).items() if p > 0}
+        """Hold every servo where it is now, by what was sent (no reply needed). Safe to
+        call at any time, repeatedly."""
+        if self._closed:
+            return
+        now = self.clock.now()
+        at = {ch: self._expected(ch, now) or p for ch, p in self._commanded.items()}
+        self.bus.stop(self._channels(), at)
+        self._commanded.update(at)
+        self._last = {ch: (p, p, now, 0.0) for ch, p in at.items()}
+        self._busy_until = now
 
     def close(self) -> None:
         """Stop, release the port (and the emulator, if one was started). Safe to call twice."""

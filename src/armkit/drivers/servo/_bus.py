@@ -5,8 +5,10 @@ Pulses are µs (floats; each controller rounds to its own resolution), times ms.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Protocol
 
+from ..._errors import DeviceError
 from ...devices.maestro import Maestro
 from ...devices.ssc32 import SSC32, TIME_MAX_MS
 
@@ -35,8 +37,13 @@ class ServoBus(Protocol):
         """Channel -> pulse being sent [µs]; 0 = never commanded."""
         ...
 
-    def stop(self, channels: list[int]) -> None:
-        """Hold each servo where it is now."""
+    def stop(self, channels: list[int], at: Mapping[int, float]) -> None:
+        """Hold each servo where it is now (``at``: the host's estimate [µs], for a
+        controller that cannot stop by itself: no reply is needed)."""
+        ...
+
+    def check_reached(self, pulses: Mapping[int, float]) -> None:
+        """After a move has ended: DeviceError if a channel is not sending its pulse [µs]."""
         ...
 
     def close(self) -> None:
@@ -63,8 +70,11 @@ class SSC32Bus:
     def read(self, channels: list[int]) -> dict[int, float]:
         return {ch: float(p) for ch, p in self.device.query_pulses(channels).items()}
 
-    def stop(self, channels: list[int]) -> None:
+    def stop(self, channels: list[int], at: Mapping[int, float]) -> None:
         self.device.stop(channels)
+
+    def check_reached(self, pulses: Mapping[int, float]) -> None:
+        """Nothing to check: the SSC-32 sends every pulse of 500..2500 µs it is given."""
 
     def close(self) -> None:
         self.device.close()
@@ -89,8 +99,21 @@ class MaestroBus:
     def read(self, channels: list[int]) -> dict[int, float]:
         return {ch: self.device.get_position(ch) for ch in channels}
 
-    def stop(self, channels: list[int]) -> None:
-        self.device.stop(channels)
+    def stop(self, channels: list[int], at: Mapping[int, float]) -> None:
+        self.device.stop(channels, at)
+
+    def check_reached(self, pulses: Mapping[int, float]) -> None:
+        """Read every channel back: a Maestro clamps a target to the channel's range
+        (factory 992..2000 µs) without a word, so a short pulse means a narrow range."""
+        for ch, want in pulses.items():
+            got = self.device.get_position(ch)
+            if got and abs(got - want) > self.read_resolution_us:
+                raise DeviceError(
+                    f"Maestro on {self.device.port}: channel {ch} sends {got:.2f} µs, not the "
+                    f"{want:.2f} µs asked: its range in the Maestro clamps it (factory "
+                    f"992..2000 µs); widen channel {ch}'s Min/Max in the Maestro Control "
+                    "Center (Channel Settings) to cover the servo's table, then Apply Settings"
+                )
 
     def close(self) -> None:
         self.device.close()
