@@ -30,7 +30,7 @@ from ._table import table
 from ._watch import add_watch_options, watch_world, watching
 
 NEXT = (
-    "armkit --scene board_001 pick red --gif pick.gif",
+    "armkit --scene board_001 rotate-cube red --gif rotate.gif",
     "armkit --scene board_001 view --screenshot board.png",
     "armkit --scene search_002 move-item object bin",
     "armkit --arm lynx6 ik 200 0 50 --pitch -45 --all",
