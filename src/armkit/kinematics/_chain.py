@@ -20,9 +20,8 @@ from numpy.typing import NDArray
 
 from .._errors import ModelError
 from ..model import ArmModel, JointFrame
-from ._closed_fast import FixedSolver, NearestPitch, fixed_solver, nearest_pitch_solver
-from ._family import PlanarFamily, detect
-from ._planar import wrist_range
+from ._closed_fast import FixedSolver, NearestPitch, fixed_solver, nearest_solver
+from ._family import PlanarFamily, detect, wrist_range
 from ._pose import pitch_scalar
 from ._scalar import State, compile_state
 from ._steps import Fixed, Step, frames_of, steps_of
@@ -156,7 +155,7 @@ def compile_chain(model: ArmModel) -> Chain:
         fixed=fixed_solver(fam, lower, upper) if fam is not None else None,
         nearest=None
         if fam is None or fam.base is None
-        else nearest_pitch_solver(
+        else nearest_solver(
             fam, wrist_range(fam, lower[j2], upper[j2]), (lower[fam.base], upper[fam.base])
         ),
     )

@@ -1,8 +1,11 @@
-"""The closed form at one pitch for one target, with the chain's constants bound once.
+"""The closed form for one target in plain floats: the scalar fast path of ``_closed``.
 
-``fixed_solver`` returns a function of the target alone whose every constant
-(link lengths, limits, signs) is a local of its closure: the same math as the
-vectorised reference (``_closed``), in plain floats, a few microseconds a call.
+``fixed_solver`` binds a family arm's constants (link lengths, limits, signs)
+as locals of a closure and returns a function of the target alone: the same
+math as the vectorised reference, a few microseconds a call. ``nearest_solver``
+does the same for the first step of the position-only form (``_pitch_range``):
+the pitch nearest a wanted one at which the wrist point is within reach.
+Tests pin both to the vectorised forms.
 """
 
 from __future__ import annotations
@@ -13,7 +16,6 @@ from dataclasses import dataclass, field
 
 from .._errors import Reason
 from ._family import PlanarFamily
-from ._planar import phi_for_pitch, pitch_for_phi, planes
 
 Q = tuple[float, ...]
 Found = list[tuple[float, Q]]  # (squared joint distance to the seed, solution)
@@ -30,121 +32,102 @@ class Misses:
 
 
 FixedSolver = Callable[[float, float, float, "float | None", Q, "Misses | None"], Found]
+NearestPitch = Callable[[float, float, float, float, float], "float | None"]
 
 
-def wrap_into(angle: float, lower: float, upper: float) -> float | None:
-    """``angle`` plus a whole number of turns inside [lower, upper] [rad], or None."""
-    if lower - _SLACK <= angle <= upper + _SLACK:
-        return min(max(angle, lower), upper)
-    wrapped = lower + (angle - lower) % _TWO_PI
-    if wrapped <= upper + _SLACK:
-        return min(wrapped, upper)
-    if wrapped - _TWO_PI >= lower - _SLACK:
-        return max(wrapped - _TWO_PI, lower)
+def fit(v: float, lo: float, hi: float, j: int, misses: Misses | None) -> float | None:
+    """v [rad] (outside [lo, hi]) moved by whole turns into [lo, hi] and clamped to it, or
+    None (recorded in ``misses``: joint j's angle at the turn nearest its range)."""
+    w = v - _TWO_PI * math.floor((v - lo + _SLACK) / _TWO_PI)
+    if w <= hi + _SLACK:
+        return lo if w < lo else (hi if w > hi else w)
+    if misses is not None:
+        near = 0.5 * (lo + hi) + math.remainder(v - 0.5 * (lo + hi), _TWO_PI)
+        misses.violations.append((max(lo - near, near - hi), j, near))
     return None
 
 
-def miss(misses: Misses | None, i: int, value: float, lo: float, hi: float) -> None:
-    """Record joint i's miss: its angle [rad] at the turn nearest its range, and the excess."""
-    if misses is not None:
-        nearest = 0.5 * (lo + hi) + math.remainder(value - 0.5 * (lo + hi), _TWO_PI)
-        misses.violations.append((max(lo - nearest, nearest - hi), i, nearest))
+def pitch_for_phi(phi: float, r: float, rho: float) -> float:
+    """Pitch [rad] of plane approach angle ``phi`` [rad] at plane radius r (signed) and
+    horizontal distance rho [m] (see ``pitch_of``)."""
+    c = math.cos(phi)
+    if abs(r) < 1e-12 or rho < 1e-12:
+        return math.atan2(math.sin(phi), abs(c))
+    return math.atan2(math.sin(phi), c * r / rho)
 
 
 def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
-    """solve(x, y, z, pitch, seed, misses): every solution at ``pitch`` [rad] (None:
-    2 planar joints, the pitch follows) for the tool point (x, y, z) [m], unsorted."""
-    base, three = fam.base, len(fam.planar) == 3
+    """solve(x, y, z, pitch, seed, misses): every solution at ``pitch`` [rad] (None: 2
+    planar joints, the pitch follows) for the tool point (x, y, z) [m], unsorted."""
+    base, three, dof = fam.base, len(fam.planar) == 3, len(lower)
     (j1, j2, j3), (s1, s2, s3) = (*fam.planar, 0)[:3], (*fam.sigma, 0.0)[:3]
     lo1, hi1, lo2, hi2, lo3, hi3 = lower[j1], upper[j1], lower[j2], upper[j2], lower[j3], upper[j3]
     lo0, hi0 = (lower[base], upper[base]) if base is not None else (0.0, 0.0)
     l1, l2, ang1, bend, phi0 = fam.l1, fam.l2, fam.ang1, fam.bend, fam.phi0
     k0, k1 = l1 * l1 + l2 * l2, 2.0 * l1 * l2
     (c1x, c1z), (v3x, v3z) = fam.c1, fam.links[2] if three else (0.0, 0.0)
-    cos, sin, acos, atan2 = math.cos, math.sin, math.acos, math.atan2
-
     lat, az, bs, c0, s0 = fam.lateral, fam.azimuth_r, fam.base_sign, math.cos(phi0), math.sin(phi0)
-    ux, uy, uz = fam.u
-    rem, tp, sqrt, pi = math.remainder, _TWO_PI, math.sqrt, math.pi
-    simple, rest = base == 0 and fam.planar == (1, 2, 3), len(lower) > 4
-    pair = base is None and fam.planar == (0, 1) and len(lower) == 2
-    # ranges within (-pi, pi] + a turn: an angle inside them has no other turn inside
-    narrow1, narrow2, narrow3 = (
-        -pi <= lo and hi <= pi for lo, hi in ((lo1, hi1), (lo2, hi2), (lo3, hi3))
+    (ux, uy, uz), pi, tp = fam.u, math.pi, _TWO_PI
+    cos, sin, acos, atan2, sqrt, rem = (
+        math.cos,
+        math.sin,
+        math.acos,
+        math.atan2,
+        math.sqrt,
+        math.remainder,
     )
+    yaw3 = base == 0 and fam.planar == (1, 2, 3)  # the common layout: joints in order
+    pair = base is None and fam.planar == (0, 1) and dof == 2
 
-    def wrap(v: float, lo: float, hi: float, j: int, misses: Misses | None) -> float | None:
-        """v moved by whole turns into [lo, hi] (given it is outside), or None (recorded)."""
-        w = lo + (v - lo) % tp
-        if w > hi + _SLACK:
-            w -= tp
-            if w < lo - _SLACK:
-                miss(misses, j, v, lo, hi)
-                return None
-        return lo if w < lo else (hi if w > hi else w)
-
-    def generic(
-        x: float, y: float, z: float, pitch: float | None, seed: Q
-    ) -> list[tuple[float, float, float, float, float, float]] | str:
-        """(r, rho, base angle, cos turn, sin turn, turn) per base branch, by ``planes``."""
-        out = planes(fam, x, y, z, seed[base] if base is not None else 0.0)
-        if isinstance(out, str):
-            return out
-        turns = []
-        for r, rho, q0 in out:
-            turn = phi_for_pitch(pitch or 0.0, r, rho) - phi0 if three else 0.0
-            turns.append((r, rho, q0, cos(turn), sin(turn), turn))
-        return turns
+    def ways(x: float, y: float, z: float, seed: Q) -> tuple[tuple[float, float], ...] | Reason:
+        """(plane radius r (signed), base angle q0 [rad]) per base branch, or why none."""
+        if base is None:
+            if abs(x * ux + y * uy + z * uz - lat) > 1e-9:
+                return "off_plane"
+            return ((ux * y - uy * x, 0.0),)
+        r2 = x * x + y * y - lat * lat
+        if r2 < -1e-18:
+            return "too_close"
+        r = sqrt(r2) if r2 > 0.0 else 0.0
+        if x * x + y * y < 1e-24:  # on the base axis the base angle is free: the seed's
+            return ((0.0, seed[base]), (-0.0, seed[base] + pi))
+        heading = atan2(y, x) - az
+        if lat:
+            facing, back = bs * (heading - atan2(-lat, r)), bs * (heading - atan2(-lat, -r))
+        else:
+            facing, back = bs * heading, bs * (heading + pi)
+        return ((r, facing), (-r, back)) if r > 1e-12 else ((r, facing),)
 
     def solve(
         x: float, y: float, z: float, pitch: float | None, seed: Q, misses: Misses | None
     ) -> Found:
         found: Found = []
-        rho2 = x * x + y * y
-        r2 = rho2 - lat * lat
-        if base is None and not three and pitch is None:  # a planar pair in a fixed plane
-            if abs(x * ux + y * uy + z * uz - lat) > 1e-9:
-                if misses is not None:
-                    misses.reasons.append("off_plane")
-                return found
-            branches: list[tuple[float, float, float, float, float, float]] | str = [
-                (-uy * x + ux * y, sqrt(rho2), 0.0, 1.0, 0.0, 0.0)
-            ]
-        elif base is not None and three and r2 > 1e-24:  # facing the target, and over the shoulder
-            rr, rho = sqrt(r2), sqrt(rho2)
-            heading = atan2(y, x) - az
-            sp, cp = sin(pitch or 0.0), cos(pitch or 0.0)
-            if lat:
-                sp = sp * rr / rho
-                norm = sqrt(sp * sp + cp * cp)
-                sp, cp = sp / norm, cp / norm
-                qa, qb = bs * (heading - atan2(-lat, rr)), bs * (heading - atan2(-lat, -rr))
-            else:
-                qa, qb = bs * heading, bs * (heading + pi)
-            ca, sa = cp * c0 + sp * s0, sp * c0 - cp * s0
-            cb, sb = -cp * c0 + sp * s0, sp * c0 + cp * s0
-            branches = [
-                (rr, rho, qa, ca, sa, atan2(sa, ca)),
-                (-rr, rho, qb, cb, sb, atan2(sb, cb)),
-            ]
-        else:
-            branches = generic(x, y, z, pitch, seed)
+        branches = ways(x, y, z, seed)
+        rho = sqrt(x * x + y * y)
+        if three and rho < 1e-12 and abs(pitch or 0.0) > pi / 2 + 1e-12:
+            branches = "pitch"  # on the base axis the pitch is within -90..90 deg
         if isinstance(branches, str):
             if misses is not None:
-                misses.reasons.append("off_plane" if branches == "off_plane" else "too_close")
+                misses.reasons.append(branches)
             return found
-        for r, rho, q0, c, s, turn in branches:
+        sp, cp = (sin(pitch), cos(pitch)) if three and pitch is not None else (0.0, 1.0)
+        for r, q0 in branches:
             if base is not None and not lo0 <= q0 <= hi0:
-                w0 = wrap(q0, lo0, hi0, base, misses)
-                if w0 is None:
+                q0 = fit(q0, lo0, hi0, base, misses)  # type: ignore[assignment]
+                if q0 is None:
                     continue
-                q0 = w0
-            wx, wz = r - c1x, z - c1z
-            if three:
-                if rho < 1e-12 and abs(pitch or 0.0) > math.pi / 2 + 1e-12:
-                    if misses is not None:
-                        misses.reasons.append("pitch")  # on the base axis: within +-90 deg
-                    continue
+            wx, wz, turn = r - c1x, z - c1z, 0.0
+            if three:  # the wrist point, from the plane turn that gives the pitch
+                if rho < 1e-12 or -1e-12 < r < 1e-12:
+                    ca, sa = cp, sp
+                elif lat:
+                    sa = sp * abs(r) / rho
+                    n = sqrt(sa * sa + cp * cp)
+                    ca, sa = (cp if r > 0.0 else -cp) / n, sa / n
+                else:
+                    ca, sa = (cp if r > 0.0 else -cp), sp
+                c, s = ca * c0 + sa * s0, sa * c0 - ca * s0
+                turn = atan2(s, c)
                 wx, wz = wx - (c * v3x - s * v3z), wz - (s * v3x + c * v3z)
             cg = (wx * wx + wz * wz - k0) / k1
             if not -1.0 - 1e-12 <= cg <= 1.0 + 1e-12:
@@ -163,37 +146,21 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
                         if misses is not None:
                             misses.reasons.append("pitch")
                         continue
-                v1 = s1 * a1
-                if narrow1:
-                    v1 = v1 - tp if v1 > pi else (v1 + tp if v1 < -pi else v1)
-                if not lo1 <= v1 <= hi1:
-                    w = wrap(v1, lo1, hi1, j1, misses)
-                    if w is None:
-                        continue
-                    v1 = w
-                v2 = s2 * a2
-                if narrow2:
-                    v2 = v2 - tp if v2 > pi else (v2 + tp if v2 < -pi else v2)
-                if not lo2 <= v2 <= hi2:
-                    w = wrap(v2, lo2, hi2, j2, misses)
-                    if w is None:
-                        continue
-                    v2 = w
+                v1, v2 = s1 * a1, s2 * a2
+                if not lo1 <= v1 <= hi1 and (v1 := fit(v1, lo1, hi1, j1, misses)) is None:  # type: ignore[assignment]
+                    continue
+                if not lo2 <= v2 <= hi2 and (v2 := fit(v2, lo2, hi2, j2, misses)) is None:  # type: ignore[assignment]
+                    continue
                 if three:
                     v3 = s3 * (turn - a1 - a2)
-                    if narrow3:
-                        v3 = v3 - tp if v3 > pi else (v3 + tp if v3 < -pi else v3)
-                    if not lo3 <= v3 <= hi3:
-                        w = wrap(v3, lo3, hi3, j3, misses)
-                        if w is None:
-                            continue
-                        v3 = w
-                    if simple:  # base yaw + 3 planar joints first: the common layout
+                    if not lo3 <= v3 <= hi3 and (v3 := fit(v3, lo3, hi3, j3, misses)) is None:  # type: ignore[assignment]
+                        continue
+                    if yaw3:
                         d0, d1, d2, d3 = q0 - seed[0], v1 - seed[1], v2 - seed[2], v3 - seed[3]
-                        sol = (q0, v1, v2, v3, *seed[4:]) if rest else (q0, v1, v2, v3)
+                        sol = (q0, v1, v2, v3, *seed[4:]) if dof > 4 else (q0, v1, v2, v3)
                         found.append((d0 * d0 + d1 * d1 + d2 * d2 + d3 * d3, sol))
                         continue
-                elif pair:  # a planar pair alone: the 2-joint arm
+                elif pair:
                     d1, d2 = v1 - seed[0], v2 - seed[1]
                     found.append((d1 * d1 + d2 * d2, (v1, v2)))
                     continue
@@ -211,10 +178,7 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
     return solve
 
 
-NearestPitch = Callable[[float, float, float, float, float], "float | None"]
-
-
-def nearest_pitch_solver(
+def nearest_solver(
     fam: PlanarFamily, reach: tuple[float, float], base_range: tuple[float, float]
 ) -> NearestPitch | None:
     """nearest(x, y, z, want, seed0): the pitch [rad] nearest ``want`` at which the wrist point
@@ -237,29 +201,16 @@ def nearest_pitch_solver(
     )
     lo2, hi2 = reach[0] ** 2, reach[1] ** 2
     lo0, hi0 = base_range
-    pi, tp, cos, acos, atan2, rem = (
-        math.pi,
-        _TWO_PI,
-        math.cos,
-        math.acos,
-        math.atan2,
-        math.remainder,
-    )
-
+    pi, tp, atan2, acos, rem = math.pi, _TWO_PI, math.atan2, math.acos, math.remainder
     full = hi0 - lo0 >= tp - 1e-9  # the base turns all the way: both branches always face
     c_k, s_k = math.cos(phi0 - ang3), math.sin(phi0 - ang3)
-
-    def faces(q0: float) -> bool:
-        return (
-            full or lo0 - 1e-9 <= rem(q0 - 0.5 * (lo0 + hi0), tp) + 0.5 * (lo0 + hi0) <= hi0 + 1e-9
-        )
 
     def nearest(x: float, y: float, z: float, want: float, seed0: float) -> float | None:
         r = math.hypot(x, y)
         if r < 1e-9:
             return want  # on the base axis: the solvers decide
         heading = atan2(y, x) - az
-        cw, sw = cos(want), math.sin(want)
+        cw, sw = math.cos(want), math.sin(want)
         # cos and sin of want's turn less the wrist link's angle, facing (+) and reaching back (-)
         ways = (
             (r, 1.0, bs * heading, cw * c_k + sw * s_k, sw * c_k - cw * s_k),
@@ -267,7 +218,8 @@ def nearest_pitch_solver(
         )
         todo = []
         for rr, sign, q0, ca, sa in ways:
-            if not faces(q0):
+            mid = 0.5 * (lo0 + hi0)
+            if not full and not lo0 - 1e-9 <= rem(q0 - mid, tp) + mid <= hi0 + 1e-9:
                 continue  # the base cannot face this way
             tx, tz = rr - c1x, z - c1z
             big2 = tx * tx + tz * tz

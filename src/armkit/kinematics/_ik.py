@@ -86,7 +86,7 @@ def ik(
             if pitch is not None or len(fam.planar) == 2:
                 found = chain.fixed(p[0], p[1], p[2], pitch, seed, None)
             else:
-                found = free(chain, fam, p[0], p[1], p[2], seed)
+                found = free(chain, p[0], p[1], p[2], seed)
             if not found:
                 raise refusal(chain, fam, p, pitch, seed)
             return IKResult.of(
@@ -192,12 +192,12 @@ def _closed_batch(chain: Chain, fam: Any, P: F64, pitch: F64 | None, seed: F64) 
     q, ok = np.full((len(P), chain.dof), np.nan), np.zeros(len(P), dtype=bool)
     reason = np.full(len(P), "", dtype="<U11")
     free = pitch is None and len(fam.planar) == 3
-    if free:  # whole batch at once: its rounds over the few hard targets cost per round
-        q, ok = free_batch(chain, fam, P, seed)
     for s in range(0, len(P), CHUNK):
         part, sd = P[s : s + CHUNK], seed[s : s + CHUNK]
         at = None if pitch is None else pitch[s : s + CHUNK]
-        if not free:
+        if free:
+            q[s : s + CHUNK], ok[s : s + CHUNK] = free_batch(chain, fam, part, sd)
+        else:
             q[s : s + CHUNK], ok[s : s + CHUNK] = best(solve(chain, fam, part, at, sd), sd)
         bad = np.flatnonzero(~ok[s : s + CHUNK])
         if bad.size:  # why not: the candidates at the asked (or the seed's) pitch

@@ -1,53 +1,50 @@
 """Position-only closed form (3 planar joints): the pitch nearest the seed's that fits.
 
-In the arm's plane the wrist point (the end of link 2) lies on a circle of
-the last link's length around the target; as the pitch turns, it moves round
-that circle. The arm fits where the wrist point is within the two links'
-annulus around the first planar joint and every joint is inside its limits.
-Each boundary of that set is where the wrist point's distance reaches one of
-a few radii (the annulus and the elbow's limits), where the shoulder sits at
-a limit (the elbow point is then fixed: the wrist lies at link 2's length
-from it), or where the wrist joint sits at a limit (links 2 and 3 then form
-one rigid link) - each the intersection of two circles, in closed form.
-The nearest pitch that fits is the seed's own, or the nearest of those
-boundaries that fits. First tried: the nearest pitch at which the wrist point
-is inside the annulus (``nearest_reachable``), which fits on most targets.
+In the arm's plane the wrist point W (the end of link 2) lies on the circle of
+the last link's length around the target; as the pitch turns, W moves round
+that circle. The arm fits where W is within the two links' annulus around the
+first planar joint and every joint is inside its limits. The nearest fitting
+pitch is the seed's own, or one where the fit changes: where W's distance from
+the shoulder reaches a radius of the annulus or of the elbow's limits, where
+the shoulder sits at a limit (W is then at link 2's length from a fixed elbow
+point), or where the wrist sits at a limit (links 2 and 3 then form one rigid
+link, at its length from the target) - each the meeting of two circles, in
+closed form. First taken, and enough for most targets: the nearest pitch at
+which W is within the annulus (``nearest_reachable``). Where a joint limit
+refuses it, every boundary point is checked at once by the signs of dot and
+cross products of the links (no angle is computed), and the nearest that fits
+is taken (``boundary_pitch``).
 """
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ._chain import Chain
-from ._closed import Branches, best, branches, solve
+from ._closed import TWO_PI, Planes, best, pitch_of_phi, planes, solve, turn_of, wrap
 from ._family import PlanarFamily
 from ._forward import sweep
 from ._pose import pitch_of
 
 F64 = NDArray[np.float64]
 Bool = NDArray[np.bool_]
-_TWO_PI = 2.0 * np.pi
+_CHECK = 0.5e-9  # [rad]: a boundary point fits within half the solver's slack
 
 
 def free_batch(chain: Chain, fam: PlanarFamily, P: F64, seed: F64) -> tuple[F64, Bool]:
     """Best solution per target [rad] (N, dof) (NaN rows where none) and ok (N,)."""
-    want = preferred(chain, seed)
-    b = branches(fam, P, seed)
-    pitch, has = nearest_reachable(chain, fam, b, P[:, 2], want)
-    q, ok = best(solve(chain, fam, P, pitch, seed), seed)
-    idx = np.flatnonzero(~ok & has)
-    trials = candidates(chain, fam, P[idx], seed[idx], want[idx]) if idx.size else None
-    still = np.ones(idx.size, dtype=bool)
-    for k in range(0 if trials is None else trials.shape[1]):
-        assert trials is not None
-        live = np.isfinite(trials[:, k]) & still
-        if not live.any():
-            break
-        sub = idx[live]
-        qs, oks = best(solve(chain, fam, P[sub], trials[live, k], seed[sub]), seed[sub])
-        q[sub[oks]], ok[sub[oks]] = qs[oks], True
-        still[np.flatnonzero(live)[oks]] = False
+    want, b = preferred(chain, seed), planes(fam, P, seed)
+    pitch, has = nearest_reachable(chain, fam, b, want)
+    q, ok = best(solve(chain, fam, P, pitch, seed, b), seed)
+    hard = np.flatnonzero(~ok & has)
+    if hard.size:
+        b = planes(fam, P[hard], seed[hard])
+        at, found = boundary_pitch(chain, fam, b, want[hard])
+        qh, okh = best(solve(chain, fam, P[hard], at, seed[hard], b), seed[hard])
+        q[hard], ok[hard] = qh, okh & found
     return q, ok
 
 
@@ -58,95 +55,152 @@ def preferred(chain: Chain, seed: F64) -> F64:
     return np.asarray(pitch_of(sweep(chain, seed).T), dtype=np.float64)
 
 
-def _to_pitch(fam: PlanarFamily, turn: F64, r: F64, rho: F64) -> F64:
-    """Pitch [rad] of plane turns (see ``_planar.pitch_for_phi``), broadcast."""
-    phi = fam.phi0 + turn
-    if fam.lateral == 0.0 and not (rho < 1e-12).any():  # pitch = phi, or pi - phi reaching back
-        return np.asarray(np.remainder(np.where(r >= 0, phi, np.pi - phi) + np.pi, _TWO_PI) - np.pi)
-    c = np.cos(phi)
-    axis = (np.abs(r) < 1e-12) | (rho < 1e-12)
-    along = np.where(axis, np.abs(c), c * r / np.where(axis, 1.0, rho))
-    return np.asarray(np.arctan2(np.sin(phi), along))
+def _gap(pitch: F64, want: F64) -> F64:
+    """|pitch - want| [rad] round the circle, for pitches and ``want`` in [-pi, pi]."""
+    d = np.abs(pitch - want)
+    return np.minimum(d, TWO_PI - d)
 
 
-def _base_ok(chain: Chain, fam: PlanarFamily, q0: F64) -> Bool:
+def nearest_reachable(chain: Chain, fam: PlanarFamily, b: Planes, want: F64) -> tuple[F64, Bool]:
+    """Per target the pitch [rad] nearest ``want`` at which the wrist point is within reach
+    of the first two links (and the base inside its limits), and whether there is one.
+
+    With u the turn from the one at which the wrist point is nearest the shoulder, its
+    distance d follows d^2 = D^2 + L3^2 - 2 D L3 cos u: within reach where cos u lies in
+    [c_lo, c_hi], so the nearest u is a clamp of cos u (the sign of sin u kept).
+    """
+    lo_d, hi_d = chain.wrist_reach
+    (v3x, v3z), (c1x, c1z) = fam.links[2], fam.c1
+    l3, ang3 = math.hypot(v3x, v3z), math.atan2(v3z, v3x)
+    ck, sk, cp, sp = math.cos(ang3), math.sin(ang3), math.cos(fam.phi0), math.sin(fam.phi0)
+    tx, tz = b.r - c1x, b.z - c1z
+    big = np.sqrt(tx * tx + tz * tz)
+    k = np.maximum(2.0 * big * l3, 1e-300)
+    c_lo, c_hi = (big * big + l3 * l3 - hi_d * hi_d) / k, (big * big + l3 * l3 - lo_d * lo_d) / k
+    empty = (c_lo > 1.0 + 1e-12) | (c_hi < -1.0 - 1e-12) | ~_base_fits(chain, fam, b.q0)
+    cs, ss = (tx * ck + tz * sk) / big, (tz * ck - tx * sk) / big  # where W is nearest
+    wants = np.tile(want, len(b.r) // len(want))
+    c, s, _ = turn_of(fam, want, b)
+    cu, su = c * cs + s * ss, s * cs - c * ss  # u at want
+    clamped = np.clip(cu, c_lo, c_hi)
+    su = np.where(clamped == cu, su, np.copysign(np.sqrt(1.0 - clamped * clamped), su))
+    ct, st = clamped * cs - su * ss, su * cs + clamped * ss  # the turn at u
+    pitch = np.where(
+        clamped == cu, wants, pitch_of_phi(ct * cp - st * sp, st * cp + ct * sp, b.r, b.rho)
+    )
+    return _nearest(b, pitch, np.where(empty, np.inf, _gap(pitch, wants)), want)
+
+
+def boundary_pitch(chain: Chain, fam: PlanarFamily, b: Planes, want: F64) -> tuple[F64, Bool]:
+    """Per target the pitch [rad] nearest ``want`` among the boundary points that fit, and
+    whether one does."""
+    (v3x, v3z), l3 = fam.links[2], math.hypot(*fam.links[2])
+    k = fam.phi0 - math.atan2(v3z, v3x)  # link 3's direction + k = the approach's
+    tx, tz = b.r - fam.c1[0], b.z - fam.c1[1]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        Wx, Wz, Ex, Ez = _boundaries(chain, fam, tx, tz)
+        l3x, l3z = tx - Wx, tz - Wz
+        fits = _fits(chain, fam, l3x, l3z, Wx - Ex, Wz - Ez, Ex, Ez)
+    c = (l3x * math.cos(k) - l3z * math.sin(k)) / l3
+    s = (l3x * math.sin(k) + l3z * math.cos(k)) / l3
+    pitch = pitch_of_phi(c, s, b.r, b.rho)
+    wants = np.tile(want, len(b.r) // len(want))
+    fits &= _base_fits(chain, fam, b.q0) & ~np.tile(b.bad, len(b.r) // len(want))
+    gap = np.where(fits, _gap(pitch, wants), np.inf)
+    n = len(want)  # (K, B * N) -> (K * B, N)
+    return _nearest(b, pitch.reshape(-1, n), gap.reshape(-1, n), want)
+
+
+def _nearest(b: Planes, pitch: F64, gap: F64, want: F64) -> tuple[F64, Bool]:
+    """Per target the pitch of the smallest gap over the first axis of (M, N) or stacked
+    (B * N,) pitches and gaps, else ``want``; and whether there was one."""
+    pitch, gap = pitch.reshape(-1, len(want)), gap.reshape(-1, len(want))
+    i, cols = np.argmin(gap, axis=0), np.arange(len(want))
+    found = np.isfinite(gap[i, cols])
+    return np.where(found, pitch[i, cols], want), found
+
+
+def _base_fits(chain: Chain, fam: PlanarFamily, q0: F64) -> Bool:
+    """Where the base angles q0 [rad] are inside the base's limits by whole turns."""
     if fam.base is None:
         return np.ones(len(q0), dtype=bool)
-    lo, hi = chain.lower[fam.base], chain.upper[fam.base]
-    w = lo + np.remainder(q0 - lo, _TWO_PI)
-    return np.asarray((w <= hi + 1e-9) | ((q0 >= lo - 1e-9) & (q0 <= hi + 1e-9)))
+    return wrap(q0, chain.lower[fam.base], chain.upper[fam.base])[1]
 
 
-def nearest_reachable(
-    chain: Chain, fam: PlanarFamily, b: Branches, z: F64, want: F64
-) -> tuple[F64, Bool]:
-    """Per target the pitch nearest ``want`` at which the wrist point is within reach of
-    the first two links (and the base inside its limits), and whether there is one."""
-    out, dist = want.copy(), np.full(len(z), np.inf)
-    lo_d, hi_d = chain.wrist_reach
-    (v3x, v3z), c1 = fam.links[2], fam.c1
-    l3, ang3 = np.hypot(v3x, v3z), np.arctan2(v3z, v3x)
-    for r, q0 in zip(b.r, b.q0, strict=True):
-        tx, tz = r - c1[0], z - c1[1]
-        big = np.hypot(tx, tz)
-        k = np.maximum(2.0 * big * l3, 1e-300)
-        c_lo = (big * big + l3 * l3 - hi_d * hi_d) / k
-        c_hi = (big * big + l3 * l3 - lo_d * lo_d) / k
-        empty = (c_lo > 1.0 + 1e-12) | (c_hi < -1.0 - 1e-12) | ~_base_ok(chain, fam, q0) | b.bad
-        u_in, u_out = np.arccos(np.clip(c_hi, -1, 1)), np.arccos(np.clip(c_lo, -1, 1))
-        shift = np.arctan2(tz, tx) - ang3
-        for start, end in ((shift + u_in, shift + u_out), (shift - u_out, shift - u_in)):
-            a, e = _to_pitch(fam, start, r, b.rho), _to_pitch(fam, end, r, b.rho)
-            lo, hi = np.where(r >= 0, a, e), np.where(r >= 0, e, a)
-            span = np.remainder(hi - lo, _TWO_PI)
-            d = np.remainder(want - lo, _TWO_PI)
-            to_hi, to_lo = d - span, _TWO_PI - d
-            pick = np.where(d <= span, want, np.where(to_hi < to_lo, lo + span, lo))
-            gap = np.where(d <= span, 0.0, np.minimum(to_hi, to_lo))
-            better = ~empty & (gap < dist)
-            out, dist = np.where(better, pick, out), np.where(better, gap, dist)
-    return out, np.isfinite(dist)
-
-
-def candidates(chain: Chain, fam: PlanarFamily, P: F64, seed: F64, want: F64) -> F64:
-    """Pitches [rad] where the arm's fit can change, shape (N, K), nearest ``want`` first
-    (NaN where none), for targets P (N, 3) [m] and seeds (N, dof) [rad]."""
-    b = branches(fam, P, seed)
+def _boundaries(chain: Chain, fam: PlanarFamily, tx: F64, tz: F64) -> tuple[F64, F64, F64, F64]:
+    """Where the fit can change along the wrist circle about T = (tx, tz) (N,) [m]: per
+    boundary point the wrist point W and the elbow point E, x and z each (K, N) [m]
+    (NaN where none)."""
     (v1x, v1z), (v2x, v2z), (v3x, v3z) = fam.links
-    l1, l2, l3, ang3 = fam.l1, fam.l2, np.hypot(v3x, v3z), np.arctan2(v3z, v3x)
-    s1, s2, s3 = fam.sigma
-    j1, j2, j3 = fam.planar
-    elbow = [
-        np.hypot(l1 + l2 * np.cos(s2 * a + fam.bend), l2 * np.sin(s2 * a + fam.bend))
-        for a in (chain.lower[j2], chain.upper[j2])
-    ]
-    lo_d, hi_d = chain.wrist_reach  # the annulus; inside it the elbow's limits
-    radii = sorted({lo_d, hi_d, *(d for d in elbow if lo_d < d < hi_d)})
-    out = []
-    for r, q0 in zip(b.r, b.q0, strict=True):
-        tx, tz = r - fam.c1[0], P[:, 2] - fam.c1[1]
-        turns = [_circles(tx, tz, l3, ang3, d) for d in radii]
-        for a in (chain.lower[j1], chain.upper[j1]):  # shoulder at a limit: elbow point fixed
-            ex = np.cos(s1 * a) * v1x - np.sin(s1 * a) * v1z
-            ez = np.sin(s1 * a) * v1x + np.cos(s1 * a) * v1z
-            turns.append(_circles(tx - ex, tz - ez, l3, ang3, l2))
-        for a in (chain.lower[j3], chain.upper[j3]):  # wrist at a limit: links 2 + 3 rigid
-            ux = v2x + np.cos(s3 * a) * v3x - np.sin(s3 * a) * v3z
-            uz = v2z + np.sin(s3 * a) * v3x + np.cos(s3 * a) * v3z
-            turns.append(_circles(tx, tz, np.hypot(ux, uz), np.arctan2(uz, ux), l1) + s3 * a)
-        pitch = _to_pitch(fam, np.concatenate(turns, axis=1), r[:, None], b.rho[:, None])
-        out.append(np.where(_base_ok(chain, fam, q0)[:, None], pitch, np.nan))
-    pitches = np.concatenate(out, axis=1)
-    gap = np.abs(np.remainder(pitches - want[:, None] + np.pi, _TWO_PI) - np.pi)
-    order = np.argsort(np.where(np.isfinite(gap), gap, np.inf), axis=1, kind="stable")
-    return np.take_along_axis(pitches, order, axis=1)
+    l1, l2, l3 = fam.l1, fam.l2, math.hypot(v3x, v3z)
+    (j1, _, j3), (s1, _, s3) = fam.planar, fam.sigma
+    d, c, s = _elbow_ends(chain, fam)  # W at distance d; E turned from W by a constant
+    W = _meet(0.0, 0.0, d, tx, tz, l3)
+    E = [((c * wx + s * wz) * (l1 / d), (c * wz - s * wx) * (l1 / d)) for wx, wz in W]
+    a = np.array([chain.lower[j1], chain.upper[j1]])[:, None] * s1  # shoulder at a limit: E fixed
+    ex, ez = np.cos(a) * v1x - np.sin(a) * v1z, np.sin(a) * v1x + np.cos(a) * v1z
+    for wx, wz in _meet(ex, ez, l2, tx, tz, l3):
+        W.append((wx, wz))
+        E.append((ex + 0.0 * wx, ez + 0.0 * wz))
+    a = np.array([chain.lower[j3], chain.upper[j3]])[:, None] * s3  # wrist at a limit: links 2
+    ux, uz = v2x + np.cos(a) * v3x - np.sin(a) * v3z, v2z + np.sin(a) * v3x + np.cos(a) * v3z
+    u2 = ux * ux + uz * uz  # and 3 make one rigid link U: R U = T - E, and R turns link 2
+    for ex, ez in _meet(0.0, 0.0, l1, tx, tz, np.sqrt(u2)):
+        rc, rs = (ux * (tx - ex) + uz * (tz - ez)) / u2, (ux * (tz - ez) - uz * (tx - ex)) / u2
+        W.append((ex + rc * v2x - rs * v2z, ez + rs * v2x + rc * v2z))
+        E.append((ex, ez))
+    return (
+        np.concatenate([w[0] for w in W]), np.concatenate([w[1] for w in W]),
+        np.concatenate([e[0] for e in E]), np.concatenate([e[1] for e in E]),
+    )  # fmt: skip
 
 
-def _circles(tx: F64, tz: F64, length: float | F64, angle: float | F64, radius: float) -> F64:
-    """Turns t (N, 2) with |T - R(t) v| = radius, T = (tx, tz), v of ``length`` at ``angle``
-    (NaN where the circles do not meet)."""
-    big = np.hypot(tx, tz)
-    c = (big * big + length * length - radius * radius) / np.maximum(2.0 * big * length, 1e-300)
-    u = np.arccos(np.where(np.abs(c) <= 1.0 + 1e-12, np.clip(c, -1.0, 1.0), np.nan))
-    base = np.arctan2(tz, tx) - angle
-    return np.stack([base + u, base - u], axis=1)
+def _elbow_ends(chain: Chain, fam: PlanarFamily) -> tuple[F64, F64, F64]:
+    """The elbow turns (link 2 from link 1) where the fit can change: at its limits, and
+    straight or folded where its range holds them. Per turn, each (M, 1): the distance d [m]
+    from the shoulder to the wrist point, and cos, sin of the angle from it to link 1."""
+    j2, s2, l1, l2 = fam.planar[1], fam.sigma[1], fam.l1, fam.l2
+    lo, hi = sorted((s2 * chain.lower[j2] + fam.bend, s2 * chain.upper[j2] + fam.bend))
+    turns = {lo, hi} | {b for b in (0.0, math.pi) if (b - lo) % TWO_PI <= hi - lo}
+    ends = [(l1 + l2 * math.cos(b), l2 * math.sin(b)) for b in sorted(turns)]
+    d = np.array([[math.hypot(x, y)] for x, y in ends if math.hypot(x, y) > 1e-12])
+    x, y = (np.array([[v[k]] for v in ends if math.hypot(*v) > 1e-12]) for k in (0, 1))
+    return d, x / d, y / d
+
+
+def _meet(
+    ax: float | F64, az: float | F64, ra: float | F64, bx: F64, bz: F64, rb: float | F64
+) -> list[tuple[F64, F64]]:
+    """Both points where circles about (ax, az) of radius ra (each a number or (M, 1)) meet
+    circles about (bx, bz) (N,) of radius rb [m], each (M, N) (NaN where they do not)."""
+    dx, dz = bx - ax, bz - az
+    d2 = dx * dx + dz * dz
+    along = (d2 + ra * ra - rb * rb) / (2.0 * d2)  # along the centre line, per its length
+    h2 = ra * ra / d2 - along * along
+    h = np.sqrt(np.where(h2 >= -1e-12, np.maximum(h2, 0.0), np.nan))
+    mx, mz = ax + along * dx, az + along * dz
+    return [(mx - h * dz, mz + h * dx), (mx + h * dz, mz - h * dx)]
+
+
+def _fits(
+    chain: Chain, fam: PlanarFamily, l3x: F64, l3z: F64, l2x: F64, l2z: F64, ex: F64, ez: F64
+) -> Bool:
+    """Where the planar joints are inside their limits, given each link as a vector [m]:
+    link 1 = E, link 2, link 3. Joint j's plane angle lies in its range when the turn
+    from the previous link (or from the plane's r axis) is within half the range of
+    the range's middle: a dot product of the link with the middle's direction."""
+    links = [(ex, ez), (l2x, l2z), (l3x, l3z)]
+    angles = [math.atan2(vz, vx) for vx, vz in fam.links]
+    ok: Bool | None = None
+    for k, (j, s) in enumerate(zip(fam.planar, fam.sigma, strict=True)):
+        lo, hi = sorted((s * chain.lower[j], s * chain.upper[j]))
+        half = 0.5 * (hi - lo) + _CHECK
+        if half >= math.pi:
+            continue
+        mid = 0.5 * (lo + hi) + angles[k] - (angles[k - 1] if k else 0.0)
+        (bx, bz), (px, pz) = links[k], (links[k - 1] if k else (1.0, 0.0))
+        along, across = px * bx + pz * bz, px * bz - pz * bx  # the turn from the previous link
+        lengths = math.hypot(*fam.links[k]) * (math.hypot(*fam.links[k - 1]) if k else 1.0)
+        inside = along * math.cos(mid) + across * math.sin(mid) >= lengths * math.cos(half)
+        ok = inside if ok is None else ok & inside
+    return np.isfinite(l3x) if ok is None else ok & np.isfinite(l3x)
