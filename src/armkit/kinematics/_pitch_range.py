@@ -41,7 +41,7 @@ def free_batch(chain: Chain, fam: PlanarFamily, P: F64, seed: F64) -> tuple[F64,
     q, ok = best(solve(chain, fam, P, pitch, seed, b), seed)
     hard = np.flatnonzero(~ok & has)
     if hard.size:
-        b = planes(fam, P[hard], seed[hard])
+        b = b.take(hard)
         at, found = boundary_pitch(chain, fam, b, want[hard])
         qh, okh = best(solve(chain, fam, P[hard], at, seed[hard], b), seed[hard])
         q[hard], ok[hard] = qh, okh & found
@@ -94,21 +94,32 @@ def nearest_reachable(chain: Chain, fam: PlanarFamily, b: Planes, want: F64) -> 
 def boundary_pitch(chain: Chain, fam: PlanarFamily, b: Planes, want: F64) -> tuple[F64, Bool]:
     """Per target the pitch [rad] nearest ``want`` among the boundary points that fit, and
     whether one does."""
-    (v3x, v3z), l3 = fam.links[2], math.hypot(*fam.links[2])
-    k = fam.phi0 - math.atan2(v3z, v3x)  # link 3's direction + k = the approach's
+    (v3x, v3z), n = fam.links[2], len(want)
     tx, tz = b.r - fam.c1[0], b.z - fam.c1[1]
     with np.errstate(divide="ignore", invalid="ignore"):
         Wx, Wz, Ex, Ez = _boundaries(chain, fam, tx, tz)
-        l3x, l3z = tx - Wx, tz - Wz
+        l3x, l3z = tx - Wx, tz - Wz  # (K, B * N)
         fits = _fits(chain, fam, l3x, l3z, Wx - Ex, Wz - Ez, Ex, Ez)
+    fits &= _base_fits(chain, fam, b.q0) & ~np.tile(b.bad, len(b.r) // n)
+    if fam.lateral or (b.rho < 1e-12).any():  # the distance of the pitch itself
+        key = _gap(_pitch(fam, l3x, l3z, b.r, b.rho), np.tile(want, len(b.r) // n))
+    else:  # pitch = +-(approach angle) + a constant: the nearest has link 3 nearest want's
+        c, s, _ = turn_of(fam, want, b)
+        key = -(l3x * (c * v3x - s * v3z) + l3z * (s * v3x + c * v3z))
+    key = np.where(fits, key, np.inf).reshape(-1, n)  # (K * B, N)
+    i, cols = np.argmin(key, axis=0), np.arange(n)
+    found = np.isfinite(key[i, cols])
+    lane = i % (len(b.r) // n) * n + cols  # the chosen one's base branch and target
+    l3x, l3z = l3x.reshape(-1, n)[i, cols], l3z.reshape(-1, n)[i, cols]
+    return np.where(found, _pitch(fam, l3x, l3z, b.r[lane], b.rho[lane]), want), found
+
+
+def _pitch(fam: PlanarFamily, l3x: F64, l3z: F64, r: F64, rho: F64) -> F64:
+    """The pitch [rad] at which link 3 is the vector (l3x, l3z) [m] in the plane."""
+    (v3x, v3z), l3 = fam.links[2], math.hypot(*fam.links[2])
+    k = fam.phi0 - math.atan2(v3z, v3x)  # link 3's direction + k = the approach's
     c = (l3x * math.cos(k) - l3z * math.sin(k)) / l3
-    s = (l3x * math.sin(k) + l3z * math.cos(k)) / l3
-    pitch = pitch_of_phi(c, s, b.r, b.rho)
-    wants = np.tile(want, len(b.r) // len(want))
-    fits &= _base_fits(chain, fam, b.q0) & ~np.tile(b.bad, len(b.r) // len(want))
-    gap = np.where(fits, _gap(pitch, wants), np.inf)
-    n = len(want)  # (K, B * N) -> (K * B, N)
-    return _nearest(b, pitch.reshape(-1, n), gap.reshape(-1, n), want)
+    return pitch_of_phi(c, (l3x * math.sin(k) + l3z * math.cos(k)) / l3, r, rho)
 
 
 def _nearest(b: Planes, pitch: F64, gap: F64, want: F64) -> tuple[F64, Bool]:
@@ -122,7 +133,7 @@ def _nearest(b: Planes, pitch: F64, gap: F64, want: F64) -> tuple[F64, Bool]:
 
 def _base_fits(chain: Chain, fam: PlanarFamily, q0: F64) -> Bool:
     """Where the base angles q0 [rad] are inside the base's limits by whole turns."""
-    if fam.base is None:
+    if fam.base is None or chain.upper[fam.base] - chain.lower[fam.base] >= TWO_PI:
         return np.ones(len(q0), dtype=bool)
     return wrap(q0, chain.lower[fam.base], chain.upper[fam.base])[1]
 
@@ -186,21 +197,21 @@ def _fits(
     chain: Chain, fam: PlanarFamily, l3x: F64, l3z: F64, l2x: F64, l2z: F64, ex: F64, ez: F64
 ) -> Bool:
     """Where the planar joints are inside their limits, given each link as a vector [m]:
-    link 1 = E, link 2, link 3. Joint j's plane angle lies in its range when the turn
-    from the previous link (or from the plane's r axis) is within half the range of
-    the range's middle: a dot product of the link with the middle's direction."""
+    link 1 = E, link 2, link 3. Joint j's plane angle lies in its range when the link is
+    within half the range of the direction the range's middle gives it (the previous
+    link, or the plane's r axis, turned by the middle): a dot product against a cosine."""
     links = [(ex, ez), (l2x, l2z), (l3x, l3z)]
     angles = [math.atan2(vz, vx) for vx, vz in fam.links]
-    ok: Bool | None = None
+    ok = np.isfinite(l3x)
     for k, (j, s) in enumerate(zip(fam.planar, fam.sigma, strict=True)):
         lo, hi = sorted((s * chain.lower[j], s * chain.upper[j]))
         half = 0.5 * (hi - lo) + _CHECK
-        if half >= math.pi:
-            continue
-        mid = 0.5 * (lo + hi) + angles[k] - (angles[k - 1] if k else 0.0)
-        (bx, bz), (px, pz) = links[k], (links[k - 1] if k else (1.0, 0.0))
-        along, across = px * bx + pz * bz, px * bz - pz * bx  # the turn from the previous link
-        lengths = math.hypot(*fam.links[k]) * (math.hypot(*fam.links[k - 1]) if k else 1.0)
-        inside = along * math.cos(mid) + across * math.sin(mid) >= lengths * math.cos(half)
-        ok = inside if ok is None else ok & inside
-    return np.isfinite(l3x) if ok is None else ok & np.isfinite(l3x)
+        if half < math.pi:
+            mid = 0.5 * (lo + hi) + angles[k] - (angles[k - 1] if k else 0.0)
+            cm, sm, (bx, bz) = math.cos(mid), math.sin(mid), links[k]
+            if k:  # the previous link turned by the middle
+                px, pz = links[k - 1]
+                cm, sm = px * cm - pz * sm, px * sm + pz * cm
+            lengths = math.hypot(*fam.links[k]) * (math.hypot(*fam.links[k - 1]) if k else 1.0)
+            ok &= cm * bx + sm * bz >= lengths * math.cos(half)
+    return ok
