@@ -208,10 +208,9 @@ def _fits(
         half = 0.5 * (hi - lo) + _CHECK
         if half < math.pi:
             mid = 0.5 * (lo + hi) + angles[k] - (angles[k - 1] if k else 0.0)
-            cm, sm, (bx, bz) = math.cos(mid), math.sin(mid), links[k]
-            if k:  # the previous link turned by the middle
-                px, pz = links[k - 1]
-                cm, sm = px * cm - pz * sm, px * sm + pz * cm
+            (cm, sm), (bx, bz) = (math.cos(mid), math.sin(mid)), links[k]
+            px, pz = links[k - 1] if k else (1.0, 0.0)  # the previous link, turned by the middle
+            mx, mz = (px * cm - pz * sm, px * sm + pz * cm) if k else (cm, sm)
             lengths = math.hypot(*fam.links[k]) * (math.hypot(*fam.links[k - 1]) if k else 1.0)
-            ok &= cm * bx + sm * bz >= lengths * math.cos(half)
+            ok &= mx * bx + mz * bz >= lengths * math.cos(half)
     return ok
