@@ -32,6 +32,7 @@ class Misses:
 
 
 FixedSolver = Callable[[float, float, float, "float | None", Q, "Misses | None"], Found]
+Ways = Callable[[float, float, float, Q], "tuple[tuple[float, float], ...] | Reason"]
 NearestPitch = Callable[[float, float, float, float, float], "float | None"]
 
 
@@ -56,9 +57,10 @@ def pitch_for_phi(phi: float, r: float, rho: float) -> float:
     return math.atan2(math.sin(phi), c * r / rho)
 
 
-def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
+def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Ways]:
     """solve(x, y, z, pitch, seed, misses): every solution at ``pitch`` [rad] (None: 2
-    planar joints, the pitch follows) for the tool point (x, y, z) [m], unsorted."""
+    planar joints, the pitch follows) for the tool point (x, y, z) [m], unsorted; and
+    ways(x, y, z, seed): the base branches (plane radius r [m], base angle [rad]), or why none."""
     base, three, dof = fam.base, len(fam.planar) == 3, len(lower)
     (j1, j2, j3), (s1, s2, s3) = (*fam.planar, 0)[:3], (*fam.sigma, 0.0)[:3]
     lo1, hi1, lo2, hi2, lo3, hi3 = lower[j1], upper[j1], lower[j2], upper[j2], lower[j3], upper[j3]
@@ -175,7 +177,7 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
                 )
         return found
 
-    return solve
+    return solve, ways
 
 
 def nearest_solver(

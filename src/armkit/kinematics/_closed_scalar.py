@@ -11,14 +11,11 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from .._errors import Reason, UnreachableError
 from ._chain import Chain
-from ._closed import planes
-from ._closed_fast import Found, Misses, Q
+from ._closed_fast import Found, Misses, Q, fit
 from ._family import PlanarFamily
-from ._pitch_range import boundary_pitch
+from ._pitch_range import Floats, boundary_pitch
 from ._pose import pitch_scalar
 
 
@@ -26,19 +23,22 @@ def free(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
     """Position only (3 planar joints): every solution at the pitch nearest the seed's at
     which the arm fits, unsorted; [] if none."""
     want = chain.home_pitch if seed == chain.home else preferred(chain, seed)
-    assert chain.fixed is not None and chain.family is not None
+    assert chain.fixed is not None and chain.ways is not None and chain.family is not None
     at: float | None = want
     if chain.nearest is not None:  # the nearest pitch with the wrist point within reach
         at = chain.nearest(x, y, z, want, seed[0])
         if at is None:  # out of reach at every pitch
             return []
     found = chain.fixed(x, y, z, at, seed, None)
-    if found:
+    ways = chain.ways(x, y, z, seed)
+    if found or isinstance(ways, str):
         return found
-    fam = chain.family
-    b = planes(fam, np.array([[x, y, z]]), np.array([seed]))
-    pitch, fits = boundary_pitch(chain, fam, b, np.array([want]))
-    return chain.fixed(x, y, z, float(pitch[0]), seed, None) if fits[0] else []
+    gap, base = math.inf, chain.family.base
+    for r, q0 in ways:  # a joint limit is in the way: the nearest boundary point that fits
+        if base is None or fit(q0, chain.lower[base], chain.upper[base], base, None) is not None:
+            d, pitch = boundary_pitch(chain, chain.family, r, z, math.hypot(x, y), want, Floats)
+            gap, at = (d, pitch) if d < gap else (gap, at)
+    return chain.fixed(x, y, z, at, seed, None) if gap < math.inf else []
 
 
 def preferred(chain: Chain, seed: Q) -> float:

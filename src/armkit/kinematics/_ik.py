@@ -189,20 +189,23 @@ def ik_batch(
 
 def _closed_batch(chain: Chain, fam: Any, P: F64, pitch: F64 | None, seed: F64) -> IKBatchResult:
     """The vectorised closed form over cache-sized chunks of targets, with reasons."""
-    q, ok = np.full((len(P), chain.dof), np.nan), np.zeros(len(P), dtype=bool)
-    reason = np.full(len(P), "", dtype="<U11")
     free = pitch is None and len(fam.planar) == 3
-    for s in range(0, len(P), CHUNK):
-        part, sd = P[s : s + CHUNK], seed[s : s + CHUNK]
-        at = None if pitch is None else pitch[s : s + CHUNK]
-        if free:
-            q[s : s + CHUNK], ok[s : s + CHUNK] = free_batch(chain, fam, part, sd)
-        else:
+    if free:
+        q, ok = free_batch(chain, fam, P, seed)
+    else:
+        q, ok = np.full((len(P), chain.dof), np.nan), np.zeros(len(P), dtype=bool)
+        for s in range(0, len(P), CHUNK):
+            part, sd, at = (
+                P[s : s + CHUNK],
+                seed[s : s + CHUNK],
+                None if pitch is None else pitch[s : s + CHUNK],
+            )
             q[s : s + CHUNK], ok[s : s + CHUNK] = best(solve(chain, fam, part, at, sd), sd)
-        bad = np.flatnonzero(~ok[s : s + CHUNK])
-        if bad.size:  # why not: the candidates at the asked (or the seed's) pitch
-            at = preferred(chain, sd[bad]) if free else (None if at is None else at[bad])
-            reason[s + bad] = reasons(fam, solve(chain, fam, part[bad], at, sd[bad]))
+    reason = np.full(len(P), "", dtype="<U11")
+    bad = np.flatnonzero(~ok)
+    if bad.size:  # why not: the candidates at the asked (or the seed's) pitch
+        at = preferred(chain, seed[bad]) if free else (None if pitch is None else pitch[bad])
+        reason[bad] = reasons(fam, solve(chain, fam, P[bad], at, seed[bad]))
     return IKBatchResult(q=q, ok=ok, reason=reason, method="analytic")
 
 
