@@ -35,6 +35,7 @@ bench: $(DEVSTAMP)
 	$(BIN)/python benchmarks/paths.py
 	$(BIN)/python benchmarks/bus.py
 	$(BIN)/python benchmarks/owi_drift.py
+	$(BIN)/python benchmarks/sim.py
 	$(BIN)/python benchmarks/view.py
 	$(BIN)/python benchmarks/shell.py
 	$(BIN)/python benchmarks/drawing.py

@@ -41,8 +41,8 @@ import numpy as np
 from armkit.devices import _dxl_packet as pkt
 from armkit.devices.dynamixel import DynamixelBus
 from armkit.drivers.dynamixel import DynamixelDriver
-from armkit.model import load_model
-from armkit.sim.dynamixel_emulator import DynamixelEmulator
+from armkit.model import check_joints, load_model
+from armkit.sim.emulators import DynamixelEmulator
 
 IDS = [11, 12, 13, 14]
 GOALS = {11: 2048, 12: 1500, 13: 2300, 14: 2600}
@@ -140,7 +140,7 @@ def driver_conversion(driver: DynamixelDriver) -> Callable[[], object]:
     q = np.radians([10.0, -20.0, 30.0, 40.0])
 
     def cycle() -> object:
-        ticks = driver.to_ticks(driver.check_limits(q))
+        ticks = driver.to_ticks(check_joints(driver.model, q))
         return driver.to_angles(ticks)
 
     return cycle
@@ -201,7 +201,7 @@ SSC32_BAUD = 115_200  # the SSC-32's fastest rate
 def ssc32_rows(cycles: int, repeats: int) -> tuple[list[tuple[str, float]], float] | None:
     """SSC-32 group-move rows (6-servo group move + QP read-back) and their wire time [us]."""
     from armkit.devices.ssc32 import SSC32, group_move_bytes, parse_pulses, query_pulse_bytes
-    from armkit.sim.ssc32_emulator import SSC32Emulator
+    from armkit.sim.emulators import SSC32Emulator
 
     channels = list(SSC32_PULSES)
     move = group_move_bytes(SSC32_PULSES, 1000)

@@ -22,7 +22,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from armkit import Arm
-from armkit.drivers import open_driver
+from armkit.connect import open_driver
 from armkit.model import load_model
 from armkit.script._session import Session
 

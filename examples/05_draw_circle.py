@@ -1,9 +1,10 @@
 """Draw a 40 mm circle with the simulated OpenManipulator-X and measure how well it went.
 
-The simulated servos lag behind their setpoints like real ones, and the
-simulator records the true joint angles every millisecond of simulated time.
-Forward kinematics turns that record into the pen's true path, which we compare
-with the ideal circle for the three ways of sending waypoints (seed 001).
+``driver="sim"`` runs the arm's real Dynamixel driver on simulated XM430 servos
+that lag behind their profiles like real ones; the simulation world records the
+true joint angles every millisecond of simulated time (``arm.world``). Forward
+kinematics turns that record into the pen's true path, which we compare with
+the ideal circle for the three ways of sending waypoints (seed 001).
 
 Run: .venv/bin/python examples/05_draw_circle.py
 """
@@ -22,7 +23,6 @@ from armkit.motion import (
     circle,
     distance_to_polyline,
 )
-from armkit.sim.servo_arm import open_servo_sim
 
 CENTER_MM = (170.0, 0.0, 50.0)
 RADIUS_MM = 40.0
@@ -34,14 +34,15 @@ for name, streamer in [
     ("timed streaming (100 Hz, 60 mm/s)", TimedStreaming(rate=100.0, speed=0.06)),
 ]:
     model = load_model("openmanipulator_x")
-    sim = open_servo_sim(model)  # what driver="sim" opens; kept to read its record
-    with Arm(model, driver=sim) as arm:
+    with Arm(model, driver="sim") as arm:
+        world = arm.world  # where the simulated arm's truth lives
+        assert world is not None
         points = circle(np.array(CENTER_MM) / 1000, RADIUS_MM / 1000, spacing=0.002) * 1000
         arm.move_to(*points[0], PEN_DOWN_DEG)
         start = arm.clock.now()
         arm.follow(points, PEN_DOWN_DEG, streamer=streamer)
         took = arm.clock.now() - start
-        record = sim.recording().between(start, arm.clock.now())
+        record = world.recording().between(start, arm.clock.now())
         pen = fk(arm.model, record.q)[:, :3, 3] * 1000
         error = distance_to_polyline(pen, points)
         print(

@@ -17,11 +17,13 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._errors import DeviceError, InputError, JointLimitError, UnreachableError
+from ._errors import DeviceError, InputError, UnreachableError
+from .connect import World, open_driver, world_of
 from .drivers._driver import Driver
-from .drivers._registry import open_driver
 from .kinematics import fk, ik, pitch_of
 from .model import ArmModel, load_model
+from .model._limits import MAX_MOVE_S as MAX_MOVE_S
+from .model._limits import check_grip, check_joints, move_time
 from .motion import (
     JointPath,
     NaiveStepping,
@@ -32,13 +34,11 @@ from .motion import (
     follow,
     plan_path,
     retreat,
-    trapezoid,
 )
 from .scene import Scene, check_clear, joint_sweep
 
 F64 = NDArray[np.float64]
 REACHED = math.radians(0.2)  # a move with a timeout is done when every joint is this close
-MAX_MOVE_S = 30.0  # longest single move [s] (a Dynamixel time-based profile allows 32.7 s)
 
 
 class Position(NamedTuple):
@@ -64,7 +64,8 @@ class Arm:
     Args:
         model: a shipped arm name, a model file path, or an ``ArmModel``.
         driver: a driver name (``"sim"``, ``"ssc32"``, ...) or an open ``Driver``.
-        port: the driver's port (see ``armkit.drivers.open_driver``).
+        port: the driver's port (see ``armkit.connect.open_driver``).
+        world: the simulation world to put a simulated arm in (None: a new one).
         scene: what is on the table (``armkit.scene.load_scene``); every move is
             checked against it, and against the table plane even without one.
     """
@@ -75,13 +76,23 @@ class Arm:
         driver: str | Driver = "sim",
         port: str | None = None,
         *,
+        world: World | None = None,
         scene: Scene | None = None,
     ) -> None:
         self.scene = scene
         self.model = model if isinstance(model, ArmModel) else load_model(model)
-        self.driver = open_driver(self.model, driver, port) if isinstance(driver, str) else driver
+        if isinstance(driver, str):
+            self.driver = open_driver(self.model, driver, port, world=world)
+        else:
+            self.driver = driver
         self.clock = clock_of(self.driver)
         self._kin = self.model
+
+    @property
+    def world(self) -> World | None:
+        """The simulation world this arm moves in (its true state, recording, observers);
+        None on real hardware."""
+        return world_of(self.driver)
 
     def move_to(
         self,
@@ -136,16 +147,18 @@ class Arm:
         """Open the gripper to ``width_mm`` [mm] (the grip point moves with it on
         scissor grippers). A gripper that is only open or closed (the OWI's) takes
         its closed or its open width and nothing in between (InputError)."""
-        width_mm = _number(width_mm, "grip width [mm]")
+        width = check_grip(self.model, _number(width_mm, "grip width [mm]") / 1000.0)
         g = self.model.gripper
-        lo, hi = g.width_min * 1000.0, g.width_max * 1000.0
-        if g.kind == "timed" and not (abs(width_mm - lo) < 1e-9 or abs(width_mm - hi) < 1e-9):
+        if g.kind == "timed" and not (
+            abs(width - g.width_min) < 1e-12 or abs(width - g.width_max) < 1e-12
+        ):
+            lo, hi = g.width_min * 1000.0, g.width_max * 1000.0
             raise InputError(
                 f"{self.model.name}'s gripper is only open or closed: grip {lo:g} closes it, "
-                f"grip {hi:g} opens it; got {width_mm:g} mm"
+                f"grip {hi:g} opens it; got {width * 1000.0:g} mm"
             )
-        kin = self.model.with_grip_width(width_mm / 1000.0)
-        self.driver.grip(width_mm / 1000.0)
+        kin = self.model.with_grip_width(width)
+        self.driver.grip(width)
         self._kin = kin
 
     def home(self, *, speed: float | None = None) -> None:
@@ -223,21 +236,26 @@ class Arm:
         return np.radians(q)
 
     def _move(self, q: F64, timing: _Timing) -> None:
-        """Check limits and timing, then send; with a timeout, poll until there."""
-        _check_limits(self.model, q)
-        _check_timing(timing)
-        self._check_clear(q[None, :])
-        speed = 1.0 if timing.speed is None else timing.speed
-        profile = trapezoid(self.model, self.driver.read(), q, speed, timing.duration)
-        if profile.duration > MAX_MOVE_S:  # a tiny speed: refuse rather than crawl
-            raise InputError(
-                f"this move would take {profile.duration:.0f} s at speed {speed:g}; a move may "
-                f"take at most {MAX_MOVE_S:g} s: raise the speed"
-            )
+        """Check limits, timing (the drivers' own rule, and at most ``MAX_MOVE_S``) and
+        clearance, then send; with a timeout, poll until there."""
+        goal = check_joints(self.model, q)
+        if timing.timeout is not None and not (
+            math.isfinite(timing.timeout) and timing.timeout > 0
+        ):
+            raise InputError(f"timeout must be a number of seconds > 0, got {timing.timeout:g}")
+        move_time(
+            self.model,
+            self.driver.read(),
+            goal,
+            speed=timing.speed,
+            duration=timing.duration,
+            longest=MAX_MOVE_S,
+        )
+        self._check_clear(goal[None, :])
         wait = timing.wait and timing.timeout is None
-        self.driver.move(q, duration=timing.duration, speed=timing.speed, wait=wait)
+        self.driver.move(goal, duration=timing.duration, speed=timing.speed, wait=wait)
         if timing.wait and timing.timeout is not None:
-            self._wait_until(q, timing.timeout)
+            self._wait_until(goal, timing.timeout)
 
     def _step_through(self, points_m: F64, pitch: float | None) -> None:
         """Plan ``points_m`` [m] (1 mm tolerance between waypoints), then step through them."""
@@ -298,28 +316,3 @@ def _number(value: object, what: str, *, finite: bool = True) -> float:
     if a.shape != ():
         raise InputError(f"{what} must be one number, got {value!r}")
     return float(a)
-
-
-def _check_timing(timing: _Timing) -> None:
-    """InputError unless speed is in (0, 1] and duration in 0..MAX_MOVE_S [s] (or None)."""
-    if timing.speed is not None and not (math.isfinite(timing.speed) and 0 < timing.speed <= 1):
-        raise InputError(f"speed must be a fraction of the maximum in (0, 1], got {timing.speed:g}")
-    if timing.duration is not None and not (
-        math.isfinite(timing.duration) and 0 <= timing.duration <= MAX_MOVE_S
-    ):
-        raise InputError(
-            f"duration must be 0..{MAX_MOVE_S:g} s, got {timing.duration:g} s; "
-            "split a longer motion into several moves"
-        )
-    if timing.timeout is not None and not (math.isfinite(timing.timeout) and timing.timeout > 0):
-        raise InputError(f"timeout must be a number of seconds > 0, got {timing.timeout:g}")
-
-
-def _check_limits(model: ArmModel, q: F64) -> None:
-    """JointLimitError naming the first joint of ``q`` [rad] outside its limits."""
-    for joint, angle in zip(model.joints, q, strict=True):
-        if not joint.lower - 1e-9 <= angle <= joint.upper + 1e-9:
-            raise JointLimitError(
-                f"{joint.name} {math.degrees(angle):.2f} deg is outside its limits "
-                f"{math.degrees(joint.lower):.2f}..{math.degrees(joint.upper):.2f} deg"
-            )

@@ -79,7 +79,7 @@ def test_arm_refusals_are_input_errors(call: Callable[[Arm], object], words: str
 
 
 def test_library_functions_refuse_with_input_errors() -> None:
-    from armkit.drivers import open_driver
+    from armkit.connect import open_driver
     from armkit.motion import approach, line
 
     with pytest.raises(InputError, match="spacing must be > 0"):

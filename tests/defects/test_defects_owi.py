@@ -16,9 +16,9 @@ import pytest
 
 import armkit.drivers.timed._journal as journal_module
 from armkit import DeviceError
+from armkit.devices._owi_commands import decode
 from armkit.devices.owi535 import open_device
 from armkit.drivers.timed import ShortMoveError, TimedDriver, load_state, state_path
-from armkit.drivers.timed._commands import decode
 from armkit.model import ArmModel, load_model
 from armkit.sim.owi_sim import OwiSim, build_sim
 

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 import pytest
 
 from armkit.devices.dynamixel import DynamixelBus
-from armkit.sim.dynamixel_emulator import DynamixelEmulator
+from armkit.sim.emulators import DynamixelEmulator
 
 
 @pytest.fixture

@@ -11,11 +11,13 @@ import numpy as np
 import pytest
 
 from armkit._errors import DeviceError, JointLimitError, ModelError
+from armkit.connect import open_driver as open_any
 from armkit.devices.dynamixel import DynamixelBus
 from armkit.drivers._driver import Driver
-from armkit.drivers.dynamixel import DynamixelDriver, open_driver, profile_times
+from armkit.drivers.dynamixel import DynamixelDriver, open_driver
 from armkit.model import ArmModel, load_model
-from armkit.sim.dynamixel_emulator import DynamixelEmulator
+from armkit.model._limits import shortest_time
+from armkit.sim.emulators import DynamixelEmulator
 
 OMX = [11, 12, 13, 14]
 
@@ -58,11 +60,13 @@ def test_angles_to_ticks_and_back(drv: DynamixelDriver) -> None:
 
 def test_limit_is_refused_before_a_byte(emu: DynamixelEmulator, drv: DynamixelDriver) -> None:
     before = emu.received
-    with pytest.raises(JointLimitError, match=r"elbow: 90.00 deg .* -85.94..80.21 deg"):
+    with pytest.raises(
+        JointLimitError, match=r"elbow 90.00 deg is outside its limits -85.94..80.21 deg"
+    ):
         drv.move(np.radians([0.0, 0.0, 90.0, 0.0]))
     with pytest.raises(ValueError, match="speed"):
         drv.move(np.zeros(4), speed=1.5)
-    with pytest.raises(ValueError, match="4 joint angles"):
+    with pytest.raises(ValueError, match="4 finite joint angles"):
         drv.move(np.zeros(3))
     with pytest.raises(ValueError, match=r"grip width 90\.0 mm"):
         drv.grip(0.090)
@@ -89,8 +93,9 @@ def test_slower_speed_means_a_longer_profile(emu: DynamixelEmulator, drv: Dynami
     drv.move(np.radians([0.0, 0.0, 0.0, 0.0]), speed=0.5)
     slow = emu.servos[11].get("Profile Velocity")
     assert slow > fast
-    total, ramp = profile_times(np.radians([10.0]), np.radians([120.0]), np.radians([600.0]))
-    assert fast == math.ceil(total * 1000) and 0 < ramp <= total / 2
+    total = shortest_time(drv.model, np.zeros(4), np.radians([10.0, 0.0, 0.0, 0.0]))
+    assert fast == math.ceil(total * 1000)  # the shared rule's time, rounded up to 1 ms
+    assert 0 < emu.servos[11].get("Profile Acceleration") <= fast / 2
 
 
 def test_grip_maps_width_to_ticks(emu: DynamixelEmulator, drv: DynamixelDriver) -> None:
@@ -164,12 +169,14 @@ def test_relax_turns_torque_off(emu: DynamixelEmulator, drv: DynamixelDriver) ->
     assert [emu.servos[s].get("Torque Enable") for s in (*OMX, 15)] == [0] * 5
 
 
-def test_open_driver_on_emu_owns_the_emulator(model: ArmModel) -> None:
-    driver = open_driver(model, "emu")
-    emulator = driver._emulator
+def test_port_emu_is_this_driver_on_simulated_servos(model: ArmModel) -> None:
+    driver = open_any(model, "dynamixel", "emu")
+    assert type(driver) is DynamixelDriver
+    world = driver.clock.world  # type: ignore[attr-defined]
     driver.move(np.radians([0.0, 5.0, 0.0, 0.0]))
+    assert world.arm().q()[1] == pytest.approx(math.radians(5.0), abs=math.radians(0.1))
     driver.close()
-    assert driver._emulator is None and emulator is not None and emulator._wake_w == -1
+    assert not driver.bus.is_open
 
 
 def test_open_driver_needs_a_port_and_a_dynamixel_model(model: ArmModel) -> None:
@@ -179,9 +186,9 @@ def test_open_driver_needs_a_port_and_a_dynamixel_model(model: ArmModel) -> None
         open_driver(load_model("lynx6"), "emu")
 
 
-def test_a_move_longer_than_a_profile_is_refused(
+def test_a_move_longer_than_a_profile_must_wait(
     emu: DynamixelEmulator, drv: DynamixelDriver
 ) -> None:
-    with pytest.raises(ValueError, match=r"at most 32\.737 s"):
-        drv.move(np.radians([170.0, 0.0, 0.0, 0.0]), speed=0.01)
+    with pytest.raises(ValueError, match=r"at most 32\.737 s, so it goes in pieces and must wait"):
+        drv.move(np.radians([170.0, 0.0, 0.0, 0.0]), speed=0.01, wait=False)
     assert [emu.servos[s].plans for s in OMX] == [0, 0, 0, 0]

@@ -9,8 +9,8 @@ from typing import Any
 import pytest
 
 from armkit.devices import _dxl_packet as pkt
-from armkit.sim._dxl_servo import Profile, Servo, velocity_profile_times
-from armkit.sim.dynamixel_emulator import DynamixelEmulator
+from armkit.sim.emulators import DynamixelEmulator
+from armkit.sim.xm430 import Profile, Servo, velocity_profile_times
 
 sdk = pytest.importorskip("dynamixel_sdk")
 

@@ -9,7 +9,7 @@ import pytest
 
 from armkit._errors import DeviceError
 from armkit.devices.dynamixel import DynamixelBus
-from armkit.sim.dynamixel_emulator import DynamixelEmulator
+from armkit.sim.emulators import DynamixelEmulator
 
 OMX = [11, 12, 13, 14]
 

@@ -15,8 +15,8 @@ from armkit.kinematics import fk, pitch_of
 from armkit.model import load_model
 from armkit.motion import EarlyStreaming, PathError, circle
 from armkit.scene import check_clear
-from armkit.sim.servo_arm import ServoArmSim
-from armkit.sim.servo_dynamics import ServoParams
+from armkit.sim import World
+from armkit.sim._servo_body import ServoParams
 
 OMX = load_model("openmanipulator_x")
 
@@ -25,9 +25,9 @@ SETTLE_DEG = math.degrees(ServoParams().settle) + 1e-6
 NEAR_MM = 0.5  # the tool point for joints within SETTLE_DEG
 
 
-def _sim(arm: Arm) -> ServoArmSim:
-    assert isinstance(arm.driver, ServoArmSim)
-    return arm.driver
+def _world(arm: Arm) -> World:
+    assert arm.world is not None
+    return arm.world
 
 
 @settings(max_examples=30, derandomize=True, deadline=None)
@@ -62,7 +62,7 @@ def test_move_joints_turn_and_angles() -> None:
 
 def test_refused_moves_send_nothing() -> None:
     with Arm(OMX, "sim") as arm:
-        sim = _sim(arm)
+        world = _world(arm)
         with pytest.raises(UnreachableError):
             arm.move_to(600, 0, 50)
         with pytest.raises(JointLimitError, match="wrist"):
@@ -77,19 +77,19 @@ def test_refused_moves_send_nothing() -> None:
             arm.move_joints({"waist": 90}, duration=0.1)
         with pytest.raises(ValueError, match="grip width"):
             arm.grip(200)
-        assert sim.commands == 0
-        assert sim.clock.now() == 0.0
+        assert world.now() == 0.0  # nothing waited: nothing was sent
+        assert len(world.recording().t) == 1
 
 
 def test_refused_path_moves_nothing() -> None:
     with Arm(OMX, "sim") as arm:
-        sim = _sim(arm)
+        world = _world(arm)
         start = arm.angles()
         far = circle([0.25, 0.0, 0.05], 0.06, 0.002) * 1000  # crosses out of reach
         with pytest.raises(PathError, match="is unreachable"):
             arm.follow(far, -90)
-        assert sim.commands == 0
-        assert len(sim.recording().t) == 1
+        assert world.now() == 0.0
+        assert len(world.recording().t) == 1
         assert arm.angles() == start
 
 
@@ -125,16 +125,16 @@ def test_grip_changes_the_grip_point_of_a_scissor_gripper() -> None:
 def test_approach_from_above_and_retreat() -> None:
     with Arm(OMX, "sim") as arm:
         arm.approach(180, 20, 30, -90)
-        sim = _sim(arm)
-        t = sim.recording().t
-        tool = fk(OMX, sim.recording().q)[:, :3, 3] * 1000
+        world = _world(arm)
+        t = world.recording().t
+        tool = fk(OMX, world.recording().q)[:, :3, 3] * 1000
         assert math.dist(arm.position()[:3], (180, 20, 30)) < NEAR_MM
         # the last 30 mm are straight down onto the point
         low = tool[:, 2] < 59.0
         assert np.all(np.hypot(tool[low, 0] - 180, tool[low, 1] - 20) < 0.5)
         arm.retreat()
         assert math.dist(arm.position()[:3], (180, 20, 60)) < NEAR_MM
-        assert sim.clock.now() > t[-1]
+        assert world.now() > t[-1]
         with pytest.raises(PathError):
             arm.approach(600, 0, 30, -90)
 

@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 from armkit.cli import main
-from armkit.kinematics import fk
+from armkit.kinematics import fk, ik
 from armkit.model import load_model
-from armkit.sim.servo_dynamics import ServoParams
+from armkit.sim._servo_body import ServoParams
 
 # a blocking move ends when every servo is within its settle band
 SETTLE_DEG = math.degrees(ServoParams().settle) + 1e-6
@@ -42,7 +42,13 @@ def test_move_then_where_in_a_new_invocation(
     moved = capsys.readouterr().out
     assert math.dist(_xyz(moved), (200, 0, 100)) < NEAR_MM and "pitch -45.0 deg" in moved
     assert (_config_dir / "sim_openmanipulator_x.json").exists()
-    assert math.dist(_xyz(_where(capsys)), (200, 0, 100)) < 0.05  # settled after the last run
+    # a new process reads the ticks the servos hold: the target to the nearest tick (the
+    # XM430's resolution), printed to 0.1 mm
+    omx = load_model("openmanipulator_x")
+    target = ik(omx, np.array([0.2, 0.0, 0.1]), math.radians(-45)).q
+    tick = 2 * math.pi / 4096
+    held = fk(omx, np.round(target / tick) * tick)[:3, 3] * 1000
+    assert math.dist(_xyz(_where(capsys)), held) < 0.09
     assert main(["home"]) == 0
     assert _angles(_where(capsys)) == pytest.approx([0.0, -60.16, 20.05, 40.11], abs=SETTLE_DEG)
 
@@ -115,6 +121,8 @@ def test_record_needs_the_simulator(capsys: pytest.CaptureFixture[str]) -> None:
     argv = [
         "--arm",
         "owi535",
+        "--driver",
+        "owi535",
         "draw",
         "line",
         "150",
@@ -127,4 +135,4 @@ def test_record_needs_the_simulator(capsys: pytest.CaptureFixture[str]) -> None:
         "x.csv",
     ]
     assert main(argv) == 2
-    assert "--record needs a simulated servo arm" in capsys.readouterr().err
+    assert "--record needs a simulated arm" in capsys.readouterr().err  # before any device

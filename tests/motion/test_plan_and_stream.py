@@ -9,6 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from armkit.connect import open_driver
 from armkit.kinematics import fk
 from armkit.model import ArmModel, load_model
 from armkit.motion import (
@@ -24,7 +25,6 @@ from armkit.motion import (
     rectangle,
     time_path,
 )
-from armkit.sim.servo_arm import open_servo_sim
 
 DOWN = -math.pi / 2
 
@@ -86,6 +86,11 @@ STREAMERS: dict[str, tuple[Streamer, float]] = {
     "early": (EarlyStreaming(fraction=0.5), 0.3e-3),
     "timed": (TimedStreaming(rate=100.0, speed=0.06), 0.3e-3),
 }
+# An SSC-32 reports the pulses it sends, not where its servos are: early streaming on it
+# follows the pulses at full speed while the servos lag them by their time constant
+# (25 ms), so the true path is off by that lag (about 1 mm at these speeds). Devices
+# that report their servos' positions (the XM430s) keep 0.3 mm in every mode.
+NO_FEEDBACK_EARLY = 1.5e-3
 
 
 @pytest.mark.parametrize("mode", sorted(STREAMERS))
@@ -93,14 +98,18 @@ STREAMERS: dict[str, tuple[Streamer, float]] = {
 def test_streamed_drawing_stays_near_the_path(mode: str, arm_name: str) -> None:
     model = load_model(arm_name)
     streamer, tolerance = STREAMERS[mode]
+    if arm_name == "lynx6" and mode == "early":
+        tolerance = NO_FEEDBACK_EARLY
     pitch = DOWN if arm_name == "openmanipulator_x" else -math.pi / 3
     pts = circle([0.17, 0.0, 0.04], 0.02, 0.002)
-    arm = open_servo_sim(model)
+    arm = open_driver(model, "sim")  # the arm's own driver on its simulated device
+    world = arm.clock.world  # type: ignore[attr-defined]
     path = plan_path(model, pts, pitch, arm.read())
     arm.move(path.q[0])
-    t0 = arm.clock.now()
-    streamer.run(arm, model, path, arm.clock)
-    true = fk(model, arm.recording().between(t0, arm.clock.now()).q)[:, :3, 3]
+    t0 = world.now()
+    streamer.run(arm, model, path, world.clock)
+    true = fk(model, world.recording().between(t0, world.now()).q)[:, :3, 3]
     assert np.max(distance_to_polyline(true, pts)) < tolerance
     np.testing.assert_allclose(true[-1], pts[-1], atol=0.5e-3)  # servos settle to 0.05 deg
-    assert arm.clock.now() - t0 > 0.5  # it really took (simulated) time to draw 126 mm
+    assert world.now() - t0 > 0.5  # it really took (simulated) time to draw 126 mm
+    arm.close()

@@ -1,6 +1,7 @@
-"""Play a Performance on the emulated XM430s' own motion model (the simulator's
-time-based profile, fed the ticks and times ``drivers.dynamixel`` would send) and
-find where the stick tip really crosses each bar top."""
+"""Play a Performance on the simulated XM430s' own motion model (``armkit.sim.xm430``'s
+time-based profile, fed the ticks, totals and ramps ``drivers.dynamixel`` sends: the
+shared timing rule of ``armkit.model._limits``, from where the driver starts a move)
+and find where the stick tip really crosses each bar top."""
 
 from __future__ import annotations
 
@@ -10,10 +11,11 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from armkit.drivers.dynamixel import profile_times, ramp_for
+from armkit.drivers._sent import SentProfile
 from armkit.kinematics import fk
+from armkit.model._limits import limits, move_time, ramp_time
 from armkit.music import Performance
-from armkit.sim._dxl_servo import Profile
+from armkit.sim.xm430 import Profile
 
 F64 = NDArray[np.float64]
 TICKS_PER_RAD = 4096 / (2 * math.pi)
@@ -27,23 +29,36 @@ class Played:
     below: float
 
 
+def _start(now: list[float], sent: SentProfile | None, t: float) -> F64:
+    """Where ``DynamixelDriver`` starts the profile of a move [rad]: where its last
+    profile has the servos unless they read more than its 30-tick tolerance away,
+    then where they read."""
+    read = (np.rint(now) - 2048) / TICKS_PER_RAD
+    if sent is None:
+        return read
+    commanded = sent.where(t)
+    near = np.max(np.abs(read - commanded)) * TICKS_PER_RAD <= 30
+    return commanded if near else read
+
+
 def joint_track(perf: Performance, times: F64, q0: F64) -> F64:
     """Joint angles [rad], shape (N, dof), of servos that run every move of ``perf``."""
     model = perf.model
-    v_max = np.array([j.max_velocity for j in model.joints])
-    a_max = np.array([j.max_acceleration for j in model.joints])
+    _, a_max = limits(model)
     servos = [Profile(2048 + q * TICKS_PER_RAD, 0.0, -1.0) for q in q0]
     segments: list[tuple[float, list[Profile]]] = [(-1.0, servos)]
+    sent: SentProfile | None = None
     for move in perf.moves:
         now = [s.at(move.t)[0] for s in segments[-1][1]]
-        read = (np.rint(now) - 2048) / TICKS_PER_RAD
+        start = _start(now, sent, move.t)
         goal = np.rint(2048 + move.q * TICKS_PER_RAD)
-        fastest, _ = profile_times((goal - 2048) / TICKS_PER_RAD - read, v_max * move.speed, a_max)
-        total_ms = max(1, math.ceil(1000.0 * fastest))
-        ramp_ms = round(
-            1000 * ramp_for(total_ms / 1000, (goal - 2048) / TICKS_PER_RAD - read, a_max)
-        )
-        ramp, total = min(ramp_ms, total_ms / 2) / 1000, total_ms / 1000
+        end = (goal - 2048) / TICKS_PER_RAD  # the profile runs to the goal's tick
+        seconds = move_time(model, start, end, speed=move.speed)
+        total_ms = max(1, math.ceil(1000.0 * seconds - 1e-9))
+        ramp_ms = min(round(1000.0 * ramp_time(seconds, end - start, a_max)), total_ms // 2)
+        ramp, total = ramp_ms / 1000, total_ms / 1000
+        q = np.asarray(move.q, dtype=np.float64)
+        sent = SentProfile(start, q, end, goal.astype(np.int64), move.t, total)
         segments.append(
             (
                 move.t,

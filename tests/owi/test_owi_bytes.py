@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 from owi_wire import sent
 
+from armkit.devices.owi535 import decode, encode
 from armkit.drivers.timed import TimedDriver
-from armkit.drivers.timed._commands import decode, encode
 from armkit.sim.owi_sim import OwiSim
 from armkit.sim.owi_usb import Transfer
 

@@ -87,9 +87,9 @@ def test_rehome_makes_an_uncertain_state_certain_again(owi: ArmModel) -> None:
 
 
 def test_auto_operator_only_on_the_simulator(owi: ArmModel, driver: TimedDriver) -> None:
-    from armkit.drivers.timed import open_sim_driver
+    from armkit.connect import open_driver
 
-    sim_driver = open_sim_driver(owi, None)
+    sim_driver = open_driver(owi, "sim")
     assert isinstance(auto_operator(sim_driver), SimOperator)
     assert auto_operator(driver) is None
     sim_driver.close()

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from armkit.model import ArmModel
-from armkit.sim.owi_clock import SimClock
+from armkit.sim import World, WorldClock
 from armkit.sim.owi_physics import OwiPhysics, OwiUnit, random_unit
 
 DEG = math.radians
@@ -22,7 +22,9 @@ def quiet(owi: ArmModel, **changes: object) -> OwiUnit:
     return replace(unit, **{**base, **changes})  # type: ignore[arg-type]
 
 
-def run(physics: OwiPhysics, clock: SimClock, joint: int, direction: int, seconds: float) -> float:
+def run(
+    physics: OwiPhysics, clock: WorldClock, joint: int, direction: int, seconds: float
+) -> float:
     start = physics.true_q()[joint]
     dirs = np.zeros(4)
     dirs[joint] = direction
@@ -33,7 +35,7 @@ def run(physics: OwiPhysics, clock: SimClock, joint: int, direction: int, second
 
 
 def test_loaded_joint_is_faster_lowering_than_lifting(owi: ArmModel) -> None:
-    clock = SimClock()
+    clock = World().clock
     q0 = np.radians([0.0, 40.0, 30.0, 0.0])
     p = OwiPhysics(owi, quiet(owi), clock, 1, q0)
     down = run(p, clock, 1, 1, 1.0)
@@ -43,7 +45,7 @@ def test_loaded_joint_is_faster_lowering_than_lifting(owi: ArmModel) -> None:
 
 
 def test_base_has_no_gravity_and_slip_and_coast_add_travel(owi: ArmModel) -> None:
-    clock = SimClock()
+    clock = World().clock
     plain = OwiPhysics(owi, quiet(owi), clock, 1)
     slippy = OwiPhysics(
         owi, quiet(owi, slip=np.full(4, DEG(2)), coast=np.full(4, DEG(1))), clock, 1
@@ -54,7 +56,7 @@ def test_base_has_no_gravity_and_slip_and_coast_add_travel(owi: ArmModel) -> Non
 
 
 def test_battery_drains_with_motor_time(owi: ArmModel) -> None:
-    clock = SimClock()
+    clock = World().clock
     p = OwiPhysics(owi, quiet(owi, drain=2e-3), clock, 1, np.radians([-135.0, 0, 0, 0]))
     first = run(p, clock, 0, 1, 1.0)
     run(p, clock, 1, 1, 50.0)  # use the batteries
@@ -63,7 +65,7 @@ def test_battery_drains_with_motor_time(owi: ArmModel) -> None:
 
 
 def test_joints_slip_at_their_limits(owi: ArmModel) -> None:
-    clock = SimClock()
+    clock = World().clock
     p = OwiPhysics(owi, quiet(owi), clock, 1)
     run(p, clock, 3, 1, 60.0)
     assert p.true_q()[3] == pytest.approx(DEG(60))
@@ -77,7 +79,7 @@ def test_units_differ_by_seed_and_repeat_with_it(owi: ArmModel) -> None:
 
 
 def test_simulated_clock_never_waits() -> None:
-    clock = SimClock()
+    clock = World().clock
     clock.sleep(3600.0)
     clock.sleep(-5.0)
     assert clock.now() == 3600.0

@@ -8,8 +8,7 @@ from pathlib import Path
 import pytest
 
 from armkit.model import ArmModel, load_model
-from armkit.sim.maestro_emulator import MaestroEmulator
-from armkit.sim.ssc32_emulator import SSC32Emulator
+from armkit.sim.emulators import MaestroEmulator, SSC32Emulator
 
 
 @pytest.fixture(autouse=True)

@@ -12,17 +12,40 @@ import numpy as np
 import pytest
 
 from armkit._errors import DeviceError
-from armkit.drivers.servo import open_ssc32, run_calibration
+from armkit.drivers.servo import ServoArmDriver, open_ssc32, run_calibration
 from armkit.model import ArmModel
-from armkit.sim.ssc32_emulator import SSC32Emulator
+from armkit.sim import World
+from armkit.sim._pulses import MoveRecord, VirtualServo
+from armkit.sim._wire import Wire, serial_port
+from armkit.sim.ssc32 import SimSSC32
+
+
+class Board:
+    """A simulated SSC-32 in a virtual-time world: the calibration (every table point at
+    half speed: 40 s on a real arm) runs in simulated time, the driver's clock the world's."""
+
+    def __init__(self) -> None:
+        self.world, self.device = World(), SimSSC32(9600)
+
+    def open(self, model: ArmModel) -> ServoArmDriver:
+        line = serial_port(Wire(self.device, self.world, baudrate=9600, timeout=0.1))
+        return open_ssc32(model, line, clock=self.world.clock)
+
+    @property
+    def history(self) -> list[MoveRecord]:
+        return list(self.device.history)
+
+    @property
+    def servos(self) -> list[VirtualServo]:
+        return self.device.servos
+
+    def pulse(self, channel: int) -> float:
+        return self.device.pulse(channel, self.world.now())
 
 
 @pytest.fixture
-def ssc32_emu() -> Iterator[SSC32Emulator]:
-    """An emulator whose servos move 100 times faster than real ones (the calibration
-    steps through every table point at half speed: 40 s on a real arm)."""
-    with SSC32Emulator(9600, time_scale=100.0) as emu:
-        yield emu
+def ssc32_emu() -> Iterator[Board]:
+    yield Board()
 
 
 def ideal_deg(pulse: float) -> float:
@@ -33,7 +56,7 @@ class Person:
     """Reads the servo that moved last off a 'real' arm whose servos are 2 % off and
     shifted by -1° (gripper: 2 % and -0.5 mm)."""
 
-    def __init__(self, emu: SSC32Emulator, answers: list[str] | None = None) -> None:
+    def __init__(self, emu: Board, answers: list[str] | None = None) -> None:
         self.emu, self.answers = emu, answers
         self.prompts: list[str] = []
 
@@ -51,17 +74,17 @@ class Person:
 
 
 def test_measured_tables_make_the_real_arm_reach_the_asked_angles(
-    lynx6: ArmModel, ssc32_emu: SSC32Emulator, config_dir: Path
+    lynx6: ArmModel, ssc32_emu: Board, config_dir: Path
 ) -> None:
     person, said = Person(ssc32_emu), list[str]()
-    driver = open_ssc32(lynx6, ssc32_emu.port)
+    driver = ssc32_emu.open(lynx6)
     path = run_calibration(lynx6, driver, person, said.append)
     driver.close()
     assert path == config_dir / "lynx6-ssc32.toml"
     assert path.stat().st_mode & 0o777 == 0o644
     assert len(person.prompts) == 7 + 7 + 7 + 7 + 7 + 5
     assert tomllib.loads(path.read_text())["servos"]["base"]["angles_deg"][:2] == [15.0, 30.0]
-    again = open_ssc32(lynx6, ssc32_emu.port)  # loads the unit's file
+    again = ssc32_emu.open(lynx6)  # loads the unit's file
     q = np.radians([40.0, 120.0, 10.0, 170.0, 77.0])
     again.grip(0.030)
     again.move(q, wait=False)
@@ -73,10 +96,10 @@ def test_measured_tables_make_the_real_arm_reach_the_asked_angles(
 
 
 def test_enter_keeps_the_point_and_bad_input_is_asked_again(
-    lynx6: ArmModel, ssc32_emu: SSC32Emulator
+    lynx6: ArmModel, ssc32_emu: Board
 ) -> None:
     person = Person(ssc32_emu, answers=["fifteen", "15"])
-    driver = open_ssc32(lynx6, ssc32_emu.port)
+    driver = ssc32_emu.open(lynx6)
     path = run_calibration(lynx6, driver, person, lambda _: None)
     driver.close()
     assert "not a number" in person.prompts[1]
@@ -85,26 +108,24 @@ def test_enter_keeps_the_point_and_bad_input_is_asked_again(
 
 
 def test_no_number_after_three_tries_writes_nothing(
-    lynx6: ArmModel, ssc32_emu: SSC32Emulator, config_dir: Path
+    lynx6: ArmModel, ssc32_emu: Board, config_dir: Path
 ) -> None:
-    driver = open_ssc32(lynx6, ssc32_emu.port)
+    driver = ssc32_emu.open(lynx6)
     with pytest.raises(ValueError, match="no number for base after 3 tries"):
         run_calibration(lynx6, driver, Person(ssc32_emu, ["x", "y", "z"]), lambda _: None)
     driver.close()
     assert not config_dir.exists()
 
 
-def test_measurements_that_go_backwards_are_refused(
-    lynx6: ArmModel, ssc32_emu: SSC32Emulator
-) -> None:
-    driver = open_ssc32(lynx6, ssc32_emu.port)
+def test_measurements_that_go_backwards_are_refused(lynx6: ArmModel, ssc32_emu: Board) -> None:
+    driver = ssc32_emu.open(lynx6)
     with pytest.raises(ValueError, match="must increase"):
         run_calibration(lynx6, driver, Person(ssc32_emu, ["15", "10"]), lambda _: None)
     driver.close()
 
 
 def test_the_file_is_replaced_atomically(
-    lynx6: ArmModel, ssc32_emu: SSC32Emulator, config_dir: Path, monkeypatch: pytest.MonkeyPatch
+    lynx6: ArmModel, ssc32_emu: Board, config_dir: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     config_dir.mkdir()
     old = config_dir / "lynx6-ssc32.toml"
@@ -122,7 +143,7 @@ def test_the_file_is_replaced_atomically(
 
     monkeypatch.setattr(os, "fsync", fsync)
     monkeypatch.setattr(os, "replace", failing_replace)
-    driver = open_ssc32(lynx6, ssc32_emu.port)
+    driver = ssc32_emu.open(lynx6)
     with pytest.raises(OSError, match="disk full"):
         run_calibration(lynx6, driver, Person(ssc32_emu), lambda _: None)
     driver.close()
@@ -137,15 +158,15 @@ def test_only_a_servo_driver_can_be_calibrated(lynx6: ArmModel) -> None:
 
 
 def test_a_broken_unit_file_names_the_field(
-    lynx6: ArmModel, ssc32_emu: SSC32Emulator, config_dir: Path
+    lynx6: ArmModel, ssc32_emu: Board, config_dir: Path
 ) -> None:
     from armkit._errors import ModelError
 
     config_dir.mkdir()
     (config_dir / "lynx6-ssc32.toml").write_text("[servos.knee]\nangles_deg = [0, 1]\n")
     with pytest.raises(ModelError, match=r"\[servos.knee\] is not a servo of this arm"):
-        open_ssc32(lynx6, ssc32_emu.port)
+        ssc32_emu.open(lynx6)
     (config_dir / "lynx6-ssc32.toml").write_text("[servos.base]\nangles_deg = [0, 1]\n")
     with pytest.raises(ModelError, match=r"\[servos.base\] needs angles_deg and pulses_us"):
-        open_ssc32(lynx6, ssc32_emu.port)
+        ssc32_emu.open(lynx6)
     assert math.isfinite(1.0)

@@ -13,8 +13,7 @@ from armkit._errors import DeviceError, JointLimitError, ModelError
 from armkit.drivers import Driver
 from armkit.drivers.servo import ServoArmDriver, open_maestro, open_ssc32
 from armkit.model import ArmModel
-from armkit.sim.maestro_emulator import MaestroEmulator
-from armkit.sim.ssc32_emulator import SSC32Emulator
+from armkit.sim.emulators import MaestroEmulator, SSC32Emulator
 
 deg = np.radians
 
@@ -58,10 +57,10 @@ def test_read_converts_pulses_it_did_not_send(
 def test_a_refused_angle_sends_no_byte(arm: ServoArmDriver, ssc32_emu: SSC32Emulator) -> None:
     before = list(ssc32_emu.received)
     with pytest.raises(
-        JointLimitError, match=r"elbow 170\.0° is outside its range 0\.0\.\.160\.0°"
+        JointLimitError, match=r"elbow 170\.00 deg is outside its limits 0\.00\.\.160\.00 deg"
     ):
         arm.move(deg([90.0, 90.0, 170.0, 90.0, 90.0]))
-    with pytest.raises(ValueError, match="5 joint angles"):
+    with pytest.raises(ValueError, match="5 finite joint angles"):
         arm.move(deg([90.0, 90.0]))
     with pytest.raises(ValueError, match="speed"):
         arm.move(deg([90.0] * 5), speed=1.5)
@@ -135,8 +134,11 @@ def test_a_dead_controller_is_a_device_error_after_bounded_retries(
         arm.read()
 
 
-def test_emu_port_starts_and_stops_an_emulator(lynx6: ArmModel) -> None:
-    driver = open_ssc32(lynx6, "emu")
+def test_emu_port_is_this_driver_on_a_simulated_board(lynx6: ArmModel) -> None:
+    from armkit.connect import open_driver
+
+    driver = open_driver(lynx6, "ssc32", "emu")
+    assert type(driver) is ServoArmDriver
     driver.move(deg([95.0, 90.0, 90.0, 90.0, 90.0]))
     assert math.degrees(driver.read()[0]) == pytest.approx(95.0)
     driver.close()
@@ -185,8 +187,8 @@ def test_a_maestro_move_that_cannot_start_moves_nothing(
     driver.close()
 
 
-def test_the_registry_opens_both_drivers_on_emulators(lynx6: ArmModel) -> None:
-    from armkit.drivers import open_driver
+def test_the_factory_opens_both_drivers_on_simulated_controllers(lynx6: ArmModel) -> None:
+    from armkit.connect import open_driver
 
     for name in ("ssc32", "maestro"):
         driver = open_driver(lynx6, name, "emu")
@@ -201,7 +203,7 @@ def test_importing_armkit_and_the_servo_modules_does_not_import_pyserial() -> No
 
     code = (
         "import sys, armkit, armkit.drivers.servo, armkit.devices.ssc32, armkit.devices.maestro, "
-        "armkit.sim.ssc32_emulator, armkit.sim.maestro_emulator; "
+        "armkit.sim.emulators; "
         "assert 'serial' not in sys.modules, 'serial imported'"
     )
     subprocess.run([sys.executable, "-c", code], check=True)

@@ -17,7 +17,7 @@ from armkit.devices.maestro import (
     speed_units,
     target_bytes,
 )
-from armkit.sim.maestro_emulator import PROTOCOL_ERROR, MaestroEmulator
+from armkit.sim.emulators import PROTOCOL_ERROR, MaestroEmulator
 
 
 @pytest.fixture

@@ -8,7 +8,7 @@ import pytest
 
 from armkit._errors import DeviceError
 from armkit.devices.ssc32 import SSC32
-from armkit.sim.ssc32_emulator import SSC32Emulator
+from armkit.sim.emulators import SSC32Emulator
 
 
 @pytest.fixture

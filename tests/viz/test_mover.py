@@ -52,9 +52,28 @@ def test_grip_goal_opens_the_jaws_and_the_source_reads_it(arm: armkit.Arm) -> No
         assert mover.wait_idle(10.0)
         state = source.state()
         assert state.grip == pytest.approx(0.03)
-        np.testing.assert_array_equal(state.q, arm.driver.read())
+        assert arm.world is not None  # on the simulator the source shows the world's truth
+        truth = arm.world.arm()
+        np.testing.assert_array_equal(state.q, truth.q())
+        assert state.grip == truth.grip()
+        np.testing.assert_allclose(state.q, arm.driver.read(), atol=math.radians(0.1))
     finally:
         mover.close()
+
+
+class _Hardware:
+    """A driver with no simulation world behind it (real hardware, as a view sees it)."""
+
+    def read(self) -> np.ndarray:
+        return np.radians([1.0, 2.0, 3.0, 4.0])
+
+
+def test_on_hardware_the_source_reads_the_driver_back(arm: armkit.Arm) -> None:
+    source = DriverSource(arm.model, _Hardware())  # type: ignore[arg-type]
+    source.set_grip(0.025)
+    state = source.state()
+    np.testing.assert_array_equal(state.q, np.radians([1.0, 2.0, 3.0, 4.0]))
+    assert state.grip == 0.025
 
 
 def test_a_driver_has_no_history(arm: armkit.Arm) -> None:

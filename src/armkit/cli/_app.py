@@ -22,6 +22,7 @@ COMMAND_MODULES = (
     "armkit.cli._calibrate",
     "armkit.cli._compare",
     "armkit.cli._dynamixel",
+    "armkit.cli._emulate",
     "armkit.cli._view",
     "armkit.cli._script",
     "armkit.cli._scene",
@@ -117,7 +118,7 @@ def _one_line(exc: BaseException) -> str:
 
 def _check_globals(args: argparse.Namespace) -> None:
     """--arm names a model that loads, --driver a known driver, --port is not empty."""
-    from ..drivers._registry import driver_names
+    from ..connect import driver_names
     from ..model import load_model
 
     load_model(args.arm)

@@ -8,7 +8,7 @@ from typing import Any
 
 from .._errors import ArmkitError, InputError
 from .._files import config_dir
-from ..drivers import open_driver
+from ..connect import auto_operator, open_driver
 from ..model import load_model
 from ._args import check_folder
 
@@ -55,11 +55,9 @@ def run_calibrate(args: argparse.Namespace) -> int:
     model = load_model(args.arm)
     check_folder(config_dir(), "the config directory")  # where the calibration goes
     module = importlib.import_module(_module_for(model.name, args.driver))
-    driver = open_driver(model, args.driver, args.port)
+    driver = open_driver(model, args.driver, args.port, keep=True)
     ask = _ask
     if args.driver == "sim":  # the simulated OWI is timed by an automatic operator
-        from ..sim.owi_operator import auto_operator
-
         operator = auto_operator(driver)
         ask = operator.ask if operator is not None else _ask
     try:

@@ -85,23 +85,23 @@ def _draw_circle(m: Any) -> None:
     """Draw a 40 mm circle with the simulated arm and measure the pen's true path."""
     from ..arm import Arm
     from ..motion import TimedStreaming, circle, distance_to_polyline
-    from ..sim.servo_arm import open_servo_sim
 
     print(
         "\nNow the simulated arm draws a 40 mm circle, pen pointing down (timed streaming, 100 Hz):"
     )
-    sim = open_servo_sim(m)  # in memory: the demo leaves no state behind
-    with Arm(m, driver=sim) as arm:
+    with Arm(m, driver="sim") as arm:  # in memory: the demo leaves no state behind
+        world = arm.world
+        assert world is not None  # driver="sim" is simulated
         points = circle(np.array([0.17, 0.0, 0.05]), 0.04, spacing=0.002) * 1000
         x, y, z = points[0]
         arm.move_to(x, y, z, -90.0)
         start = arm.clock.now()
         arm.follow(points, -90.0, streamer=TimedStreaming(rate=100.0, speed=0.06))
         took = arm.clock.now() - start
-        record = sim.recording().between(start, arm.clock.now())
+        record = world.recording().between(start, arm.clock.now())
         error = distance_to_polyline(fk(m, record.q)[:, :3, 3] * 1000, points)
     print(
-        f"  {len(points)} waypoints in {took:.2f} s (simulated servos with lag); the pen's true path is "
+        f"  {len(points)} waypoints in {took:.2f} s (the real Dynamixel driver on simulated XM430s with lag); the pen's true path is "
         f"{np.sqrt(np.mean(error**2)):.3f} mm RMS, {error.max():.3f} mm at worst from the circle"
     )
 

@@ -51,12 +51,12 @@ def run_scan(args: argparse.Namespace) -> int:
     if not args.port:
         raise InputError("dxl-scan needs --port: a serial device (/dev/ttyUSB0) or 'emu'")
     with contextlib.ExitStack() as stack:
-        port = args.port
-        if port == "emu":
-            from ..sim.dynamixel_emulator import DynamixelEmulator
+        if args.port == "emu":
+            from ..connect import simulated_bus
 
-            port = stack.enter_context(DynamixelEmulator()).port
-        bus = stack.enter_context(DynamixelBus(port, args.baud, retries=0))
+            bus = stack.enter_context(simulated_bus(args.baud, retries=0))
+        else:
+            bus = stack.enter_context(DynamixelBus(args.port, args.baud, retries=0))
         rows = [_row(bus, sid, model) for sid, model in bus.scan(ids).items()]
     if not rows:
         raise DeviceError(

@@ -1,8 +1,9 @@
 """Motion commands: move, joints, grip, home, where, draw (millimetres, degrees).
 
-With ``--driver sim`` on a servo arm, the simulated arm's joint angles and grip
-are kept between invocations in a state file, so ``move`` then ``where`` agree:
-``$ARMKIT_CONFIG_DIR/sim_<arm>.json``, else ``$XDG_CONFIG_HOME/armkit/`` or
+With ``--driver sim`` the simulated arm's true joint angles and grip are kept
+between invocations in a state file, so ``move`` then ``where`` agree:
+``$ARMKIT_CONFIG_DIR/sim_<arm>.json`` (a model file of your own:
+``sim_<arm>-<hash of its path>.json``), else ``$XDG_CONFIG_HOME/armkit/`` or
 ``~/.config/armkit/``. ``--port FILE`` uses another file; delete it to start at home.
 """
 
@@ -19,6 +20,7 @@ from numpy.typing import NDArray
 from .._errors import InputError
 from .._files import config_dir
 from ..arm import MAX_MOVE_S, Arm
+from ..connect import open_driver
 from ..drivers.timed import TimedDriver
 from ..model import load_model
 from ..motion import (
@@ -31,7 +33,6 @@ from ..motion import (
     line,
     rectangle,
 )
-from ..sim.servo_arm import ServoArmSim, default_state_file
 from ._args import (
     MAX_DRAW_S,
     MAX_POINTS,
@@ -48,7 +49,8 @@ F64 = NDArray[np.float64]
 MODES = ("naive", "early", "timed")
 SIM_NOTE = (
     "With --driver sim, the simulated arm's joint angles are kept between runs in "
-    "$ARMKIT_CONFIG_DIR/sim_<arm>.json (default ~/.config/armkit/); delete it to start at home."
+    "$ARMKIT_CONFIG_DIR/sim_<arm>.json (default ~/.config/armkit/); delete it to start at home; "
+    "a second process on the same simulated arm is refused until the first ends."
 )
 
 
@@ -160,7 +162,7 @@ def _draw_options(p: argparse.ArgumentParser) -> None:
     p.add_argument(
         "--record",
         metavar="FILE.csv",
-        help="sim only: write t_s,<joint>_deg,... one row per 1 ms of simulated time",
+        help="simulated arms only: write t_s,<joint>_deg,... one row per 1 ms of simulated time",
     )
     p.set_defaults(func=_draw)
 
@@ -169,14 +171,10 @@ def _open(args: argparse.Namespace) -> Arm:
     """The arm of --arm on --driver/--port, once every file it will write is known
     to be writable (the config directory, a state file given as --port)."""
     model = load_model(args.arm)
-    port = args.port
     check_folder(config_dir(), "the config directory")
-    if args.driver == "sim" and "owi535" not in model.drivers:
-        if port is None:
-            port = default_state_file(model)
-        else:
-            check_output(port, "--port (the simulated arm's state file)")
-    arm = Arm(model, args.driver, port)
+    if args.driver == "sim" and args.port not in (None, "emu"):
+        check_output(args.port, "--port (the simulated arm's state file)")
+    arm = Arm(model, open_driver(model, args.driver, args.port, keep=True))
     if isinstance(arm.driver, TimedDriver):  # before moving from an uncertain estimate
         rehome = f"armkit --arm {args.arm} --driver {args.driver} rehome"
         arm.driver.warn = lambda text: print(f"armkit: warning: {text}: {rehome}", file=sys.stderr)
@@ -235,16 +233,16 @@ def _draw(args: argparse.Namespace) -> int:
     points = _shape_points(args)
     streamer = _streamer(args, points)
     if args.record:
-        if args.driver != "sim" or "owi535" in load_model(args.arm).drivers:
-            raise InputError("--record needs a simulated servo arm (--driver sim, not the OWI)")
+        if args.driver != "sim" and args.port != "emu":
+            raise InputError("--record needs a simulated arm (--driver sim, or --port emu)")
         check_output(args.record, "--record")
     with _open(args) as arm:
         t0 = arm.clock.now()
         arm.follow(points, args.pitch, streamer=streamer)
         took = arm.clock.now() - t0
         print(f"drew {args.shape}: {len(points)} points in {took:.2f} s ({args.mode} mode)")
-        if args.record and isinstance(arm.driver, ServoArmSim):
-            rows = arm.driver.recording().write_csv(args.record)
+        if args.record and arm.world is not None:
+            rows = arm.world.recording().between(t0, arm.clock.now()).write_csv(args.record)
             print(f"recorded {rows} samples (1 ms apart) to {args.record}")
     return 0
 

@@ -51,7 +51,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 def _open(args: argparse.Namespace) -> TimedDriver:
     """The OWI driver named by --arm/--driver/--port."""
-    from ..drivers import open_driver
+    from ..connect import open_driver
     from ..drivers.timed import TimedDriver
     from ..model import load_model
 
@@ -61,7 +61,7 @@ def _open(args: argparse.Namespace) -> TimedDriver:
         raise ArmkitError(
             f"'{args.command}' is for the OWI-535; add --arm owi535 (got {model.name})"
         )
-    driver = open_driver(model, args.driver, args.port)
+    driver = open_driver(model, args.driver, args.port, keep=True)
     if not isinstance(driver, TimedDriver):
         driver.close()
         raise ArmkitError(f"'{args.command}' needs --driver owi535 or sim, not {args.driver!r}")

@@ -90,29 +90,21 @@ def _wait_s(time_ms: int | None) -> float:
 
 
 def _open_device(driver: str, args: argparse.Namespace, stack: ExitStack) -> Any:
-    """The device at ``args.port`` (an emulator kept open by ``stack`` for ``emu``).
+    """The device at ``args.port`` (a simulated controller for ``emu``).
     Channel and pulse are checked here, before the port is opened."""
+    from ..connect import simulated_line
     from ..devices import maestro, ssc32
 
     if driver == "ssc32":
         ssc32.check_channel(args.channel)
         ssc32.check_pulse(args.channel, round(args.pulse))
-        port = _emulated(stack, "ssc32") if args.port == "emu" else args.port
-        return ssc32.SSC32(port)
-    ssc32.check_channel(args.channel, maestro.CHANNELS)
-    maestro.target_bytes(args.channel, args.pulse)
-    port = _emulated(stack, "maestro") if args.port == "emu" else args.port
-    return maestro.Maestro(port)
-
-
-def _emulated(stack: ExitStack, driver: str) -> str:
+    else:
+        ssc32.check_channel(args.channel, maestro.CHANNELS)
+        maestro.target_bytes(args.channel, args.pulse)
+    port, clock = simulated_line(driver) if args.port == "emu" else (args.port, None)
     if driver == "ssc32":
-        from ..sim.ssc32_emulator import SSC32Emulator
-
-        return stack.enter_context(SSC32Emulator()).port
-    from ..sim.maestro_emulator import MaestroEmulator
-
-    return stack.enter_context(MaestroEmulator()).port
+        return ssc32.SSC32(port, clock=clock)
+    return maestro.Maestro(port, clock=clock)
 
 
 def run_table(args: argparse.Namespace) -> int:

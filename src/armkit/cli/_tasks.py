@@ -130,12 +130,8 @@ def _open_arm(args: argparse.Namespace, scene: Any) -> Any:
     """The Arm of --arm/--driver/--port with the scene; the simulated servo arm keeps
     its joints between runs in its state file, as for 'move'."""
     from ..arm import Arm
+    from ..connect import open_driver
     from ..model import load_model
 
     model = load_model(args.arm)
-    port = args.port
-    if args.driver == "sim" and port is None and "owi535" not in model.drivers:
-        from ..sim.servo_arm import default_state_file
-
-        port = default_state_file(model)
-    return Arm(model, args.driver, port, scene=scene)
+    return Arm(model, open_driver(model, args.driver, args.port, keep=True), scene=scene)

@@ -143,13 +143,12 @@ def _web() -> Any:
 
 
 def _open_arm(args: argparse.Namespace, model: Any) -> Any:
+    """The Arm of --arm/--driver/--port; a simulated arm keeps its pose between runs in
+    its state file, as for 'move' (``armkit.connect.open_driver(..., keep=True)``)."""
     from ..arm import Arm
-    from ..sim.servo_arm import default_state_file
+    from ..connect import open_driver
 
-    port = args.port
-    if args.driver == "sim" and port is None and "owi535" not in model.drivers:
-        port = default_state_file(model)
-    return Arm(model, args.driver, port)
+    return Arm(model, open_driver(model, args.driver, args.port, keep=True))
 
 
 def _poses(given: list[list[float]] | None, model: Any) -> list[Any]:

@@ -1,4 +1,5 @@
-"""The ROBOTIS dynamixel-sdk seen from armkit: lazy import, result codes, sync-read replies.
+"""The ROBOTIS dynamixel-sdk seen from armkit: lazy import, result codes, sync-read replies,
+and the choice between the SDK and armkit's own stand-in (``_dxl_protocol``).
 
 The SDK is imported only when a bus is opened (``dynamixel`` extra), never
 when armkit is.
@@ -6,7 +7,9 @@ when armkit is.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import importlib.util
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from typing import Any
 
 from .._errors import DeviceError
@@ -30,6 +33,37 @@ def import_sdk() -> Any:
             "the Dynamixel bus needs dynamixel-sdk: pip install 'armkit[dynamixel]'"
         ) from None
     return dynamixel_sdk
+
+
+@dataclass(frozen=True)
+class Protocol:
+    """Where a bus gets its Protocol 2.0 client: the SDK's classes or armkit's stand-ins."""
+
+    name: str
+    packet_handler: Callable[[], Any]
+    group_sync_write: Callable[..., Any]
+    group_sync_read: Callable[..., Any]
+
+
+def sdk_protocol() -> Protocol:
+    """The ROBOTIS dynamixel-sdk (DeviceError if it is not installed)."""
+    sdk = import_sdk()
+    return Protocol(
+        "dynamixel-sdk", lambda: sdk.PacketHandler(2.0), sdk.GroupSyncWrite, sdk.GroupSyncRead
+    )
+
+
+def own_protocol() -> Protocol:
+    """armkit's own client with the SDK's interface (``_dxl_protocol``)."""
+    from . import _dxl_protocol as own
+
+    return Protocol("armkit", own.PacketHandler, own.GroupSyncWrite, own.GroupSyncRead)
+
+
+def installed_protocol() -> Protocol:
+    """The SDK where it is installed, else armkit's own client."""
+    has_sdk = importlib.util.find_spec("dynamixel_sdk") is not None
+    return sdk_protocol() if has_sdk else own_protocol()
 
 
 def comm_fault(result: int) -> str:

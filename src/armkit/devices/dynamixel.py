@@ -19,16 +19,25 @@ Retry policy (bounded by ``retries``):
 
 from __future__ import annotations
 
-import time
 from collections.abc import Iterable, Iterator, Mapping, Sequence
-from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import Any
 
+from .._clock import Clock, WallClock
 from .._errors import DeviceError
 from . import _xm430 as xm
 from ._dxl_packet import ALERT_BIT, describe_error
-from ._dxl_sdk import COMM_SUCCESS, comm_fault, import_sdk, sized, sync_read_replies
+from ._dxl_sdk import (
+    COMM_SUCCESS,
+    Protocol,
+    comm_fault,
+    import_sdk,
+    installed_protocol,
+    sdk_protocol,
+    sized,
+    sync_read_replies,
+)
+from ._dxl_settings import ServoSettings
 
 
 @dataclass(frozen=True, slots=True)
@@ -40,7 +49,7 @@ class ServoState:
     current: int
 
 
-class DynamixelBus:
+class DynamixelBus(ServoSettings):
     """A serial port with XM430 servos on it (Protocol 2.0).
 
     Args:
@@ -48,26 +57,51 @@ class DynamixelBus:
         baudrate: bits/s, one the SDK accepts (the OpenManipulator-X runs at 1,000,000).
         retries: extra attempts after a communication error (0 = try once); between
             attempts the bus waits ``settle_s`` [s] and drops whatever arrived late.
+        clock: time for waiting (real time by default).
 
     Raises:
         DeviceError: the SDK is missing, the port cannot be opened, or the baud
             rate is not supported.
     """
 
-    def __init__(self, port: str, baudrate: int = 1_000_000, *, retries: int = 3) -> None:
+    def __init__(
+        self,
+        port: str,
+        baudrate: int = 1_000_000,
+        *,
+        retries: int = 3,
+        clock: Clock | None = None,
+    ) -> None:
         sdk = import_sdk()
-        self._attach(sdk, sdk.PortHandler(port), sdk.PacketHandler(2.0), retries)
+        self._attach(sdk_protocol(), sdk.PortHandler(port), retries, clock)
         self._open(port, baudrate)
+
+    @classmethod
+    def on_port(
+        cls,
+        port_handler: Any,
+        *,
+        retries: int = 3,
+        clock: Clock | None = None,
+        protocol: Protocol | None = None,
+    ) -> DynamixelBus:
+        """A bus over an already-open port handler (a simulated line, a custom port):
+        the SDK's client where it is installed, else armkit's own (``protocol`` chooses)."""
+        bus = cls.__new__(cls)
+        bus._attach(protocol or installed_protocol(), port_handler, retries, clock)
+        return bus
 
     @classmethod
     def on_handlers(cls, port_handler: Any, packet_handler: Any, retries: int = 3) -> DynamixelBus:
         """A bus over already-open SDK handlers (benchmarks, custom ports)."""
         bus = cls.__new__(cls)
-        bus._attach(import_sdk(), port_handler, packet_handler, retries)
+        bus._attach(sdk_protocol(), port_handler, retries, None)
+        bus._ph = packet_handler
         return bus
 
-    def _attach(self, sdk: Any, port: Any, packet: Any, retries: int) -> None:
-        self._sdk, self._port, self._ph = sdk, port, packet
+    def _attach(self, proto: Protocol, port: Any, retries: int, clock: Clock | None) -> None:
+        self.protocol, self._port, self._ph = proto, port, proto.packet_handler()
+        self.clock = clock or WallClock()
         self.retries = retries
         self.settle_s = 0.1  # after a failed exchange: wait for late replies, then drop them
         self._groups: dict[tuple[Any, ...], Any] = {}
@@ -122,7 +156,7 @@ class DynamixelBus:
             yield attempt
 
     def _settle(self) -> None:
-        time.sleep(self.settle_s)
+        self.clock.sleep(self.settle_s)
         self._port.clearPort()
 
     def _check(self, servo_id: int, what: str, error: int) -> None:
@@ -205,51 +239,13 @@ class DynamixelBus:
                 f" ({xm.describe_hardware_error(bits)}; reboot status: {comm_fault(result)})"
             )
 
-    def set_torque(self, ids: Iterable[int], on: bool) -> None:
-        """Torque Enable on every servo in ``ids``."""
-        for sid in ids:
-            self.write(sid, "Torque Enable", int(on))
-
-    @contextmanager
-    def torque(self, ids: Sequence[int], on: bool) -> Iterator[None]:
-        """Set torque for the block, then put every servo back as it was."""
-        before = {sid: self.read(sid, "Torque Enable") for sid in ids}
-        self.set_torque(ids, on)
-        try:
-            yield
-        finally:
-            for sid, state in before.items():
-                self.write(sid, "Torque Enable", state)
-
-    def set_operating_mode(self, servo_id: int, mode: int) -> None:
-        """Operating Mode (3 position, 4 extended, 5 current-based position, ...)."""
-        self.set_eeprom(servo_id, "Operating Mode", mode)
-
-    def set_eeprom(self, servo_id: int, name: str, value: int) -> None:
-        """Write an EEPROM register if it differs, torque off around it, then restored."""
-        if self.read(servo_id, name) != value:
-            with self.torque([servo_id], False):
-                self.write(servo_id, name, value)
-
-    def set_time_based(self, ids: Iterable[int], on: bool) -> None:
-        """Drive Mode bit 2: profiles in ms (True) or in velocity/acceleration units."""
-        for sid in ids:
-            drive = self.read(sid, "Drive Mode") & ~xm.DRIVE_MODE_TIME_BASED
-            self.set_eeprom(sid, "Drive Mode", drive | (xm.DRIVE_MODE_TIME_BASED if on else 0))
-
-    def set_profiles(self, profiles: Mapping[int, tuple[int, int]]) -> None:
-        """{ID: (acceleration, velocity)} in one SYNC_WRITE of Profile Acceleration..Velocity."""
-        accel, velocity = xm.register("Profile Acceleration"), xm.register("Profile Velocity")
-        data = {sid: accel.encode(a) + velocity.encode(v) for sid, (a, v) in profiles.items()}
-        self._sync_write(accel.address, accel.size + velocity.size, data)
-
     def sync_write(self, name: str, values: Mapping[int, int]) -> None:
         """{ID: value} of one register in one SYNC_WRITE, sent exactly once."""
         reg = xm.register(name)
         self._sync_write(reg.address, reg.size, {s: reg.encode(v) for s, v in values.items()})
 
     def _sync_write(self, address: int, size: int, data: Mapping[int, bytes]) -> None:
-        group = self._group(self._sdk.GroupSyncWrite, address, size)
+        group = self._group(self.protocol.group_sync_write, address, size)
         group.clearParam()
         for sid, raw in data.items():
             group.addParam(sid, list(raw))
@@ -277,7 +273,7 @@ class DynamixelBus:
         """SYNC_READ, retried as a whole; raises naming the servo that failed."""
         failed, result = ids[0], COMM_SUCCESS
         for _ in self._attempts():
-            group = self._group(self._sdk.GroupSyncRead, address, size, tuple(ids))
+            group = self._group(self.protocol.group_sync_read, address, size, tuple(ids))
             failed, result, replies = sync_read_replies(group, self._ph, self._port, ids)
             if result == COMM_SUCCESS:
                 for sid, (_, error) in replies.items():

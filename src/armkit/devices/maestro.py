@@ -16,11 +16,12 @@ the speed and acceleration limits. pyserial is imported only when a port opens.
 from __future__ import annotations
 
 import math
-import time
 from collections.abc import Iterable, Mapping
 
+from .._clock import Clock, WallClock
 from .._errors import DeviceError, InputError, ReplyError
-from .ssc32 import PULSE_MAX_US, PULSE_MIN_US, SerialLink, check_channel
+from ._serial import SerialLink, SerialPort
+from .ssc32 import PULSE_MAX_US, PULSE_MIN_US, check_channel
 
 SET_TARGET = 0x84
 SET_SPEED = 0x87
@@ -100,15 +101,23 @@ class Maestro:
     """A Pololu Maestro on a serial port (its USB command port, or TTL at ``baudrate``).
 
     Args:
-        port: serial device path, or an emulator's ``.port``.
+        port: serial device path, an emulator's ``.port``, or an open ``SerialPort``.
         baudrate: for the TTL port (the Maestro detects it); ignored over USB.
         timeout_s: how long to wait for a reply [s].  retries: extra tries per query.
+        clock: time for waiting (real time by default; a simulation's clock).
     """
 
     def __init__(
-        self, port: str, baudrate: int = 9600, *, timeout_s: float = 0.1, retries: int = 2
+        self,
+        port: str | SerialPort,
+        baudrate: int = 9600,
+        *,
+        timeout_s: float = 0.1,
+        retries: int = 2,
+        clock: Clock | None = None,
     ) -> None:
-        self._link = SerialLink("Maestro", port, baudrate, timeout_s, retries)
+        self.clock = clock or WallClock()
+        self._link = SerialLink("Maestro", port, baudrate, timeout_s, retries, self.clock)
 
     @property
     def port(self) -> str:
@@ -163,14 +172,14 @@ class Maestro:
 
     def wait(self, timeout_s: float, poll_s: float = 0.005) -> None:
         """Poll the moving state until done; DeviceError after ``timeout_s`` [s]."""
-        deadline = time.monotonic() + timeout_s
+        deadline = self.clock.now() + timeout_s
         while self.is_moving():
-            if time.monotonic() > deadline:
+            if self.clock.now() > deadline:
                 raise DeviceError(
                     f"Maestro on {self.port} still moving after {timeout_s:.2f} s; "
                     "check its speed limits and servo power, or wait longer"
                 )
-            time.sleep(poll_s)
+            self.clock.sleep(poll_s)
 
     def stop(self, channels: Iterable[int]) -> None:
         """Hold each servo in ``channels`` where it is now (target := position)."""

@@ -1,8 +1,11 @@
 """The OWI-535 USB interface: find it with pyusb and send its 3-byte commands.
 
 One vendor control transfer per command (seed 000, section 2): bmRequestType
-0x40, bRequest 6, wValue 0x0100, wIndex 0, 3 data bytes. pyusb is imported
-only when a device is opened, so ``import armkit`` never needs it.
+0x40, bRequest 6, wValue 0x0100, wIndex 0, 3 data bytes (``encode``/``decode``:
+the wire codec). pyusb is imported only when a device is opened, so
+``import armkit`` never needs it. ``OwiDevice`` needs of its USB device only
+``ctrl_transfer`` (pyusb's signature): ``attach`` puts it on any object that has
+it (a simulated board where pyusb is not installed).
 """
 
 from __future__ import annotations
@@ -10,9 +13,12 @@ from __future__ import annotations
 import errno
 import sys
 import threading
-from typing import Any
+from collections.abc import Callable
+from typing import Any, Protocol
 
 from .._errors import DeviceError, InputError
+from ._owi_commands import decode as decode
+from ._owi_commands import encode as encode
 
 VENDOR_ID = 0x1267
 PRODUCT_IDS = (0x0000, 0x0001)
@@ -24,12 +30,34 @@ TIMEOUT_MS = 1000
 UDEV_RULE = 'SUBSYSTEM=="usb", ATTR{idVendor}=="1267", MODE="0660", GROUP="plugdev", TAG+="uaccess"'
 
 
+class UsbControl(Protocol):
+    """What armkit uses of a USB device: one control transfer (pyusb's signature)."""
+
+    def ctrl_transfer(
+        self,
+        bmRequestType: int,
+        bRequest: int,
+        wValue: int = 0,
+        wIndex: int = 0,
+        data_or_wLength: Any = None,
+        timeout: int | None = None,
+    ) -> Any:
+        """Send a control transfer; raises on a stall or a vanished device."""
+        ...
+
+
 class OwiDevice:
     """An opened OWI-535 USB interface. Thread-safe: a watchdog may send a stop
-    while the main thread is between commands."""
+    while the main thread is between commands.
 
-    def __init__(self, dev: Any) -> None:
+    Args:
+        dev: the USB device (a pyusb ``Device``, or any ``UsbControl``).
+        release: called once by ``close`` to let go of ``dev``.
+    """
+
+    def __init__(self, dev: UsbControl, release: Callable[[], None] | None = None) -> None:
         self._dev = dev
+        self._release = release
         self._lock = threading.Lock()
         self._closed = False
 
@@ -58,9 +86,13 @@ class OwiDevice:
             if self._closed:
                 return
             self._closed = True
-        import usb.util
+        if self._release is not None:
+            self._release()
 
-        usb.util.dispose_resources(self._dev)
+
+def attach(dev: UsbControl, release: Callable[[], None] | None = None) -> OwiDevice:
+    """An ``OwiDevice`` on an already-open USB device (no pyusb needed)."""
+    return OwiDevice(dev, release)
 
 
 def open_device(backend: Any = None) -> OwiDevice:
@@ -87,7 +119,9 @@ def open_device(backend: Any = None) -> OwiDevice:
             "switch the arm on, or use --driver sim"
         )
     _configure(dev, usb_core)
-    return OwiDevice(dev)
+    import usb.util
+
+    return OwiDevice(dev, lambda: usb.util.dispose_resources(dev))
 
 
 def _is_owi(dev: Any) -> bool:

@@ -19,11 +19,13 @@ pyserial is imported only when a port is opened (``serial`` extra).
 
 from __future__ import annotations
 
-import time
-from collections.abc import Callable, Iterable, Mapping
-from typing import Any, TypeVar
+from collections.abc import Iterable, Mapping
 
+from .._clock import Clock, WallClock
 from .._errors import DeviceError, InputError, ReplyError
+from ._serial import CR as CR
+from ._serial import SerialLink as SerialLink
+from ._serial import SerialPort
 
 PULSE_MIN_US = 500
 PULSE_MAX_US = 2500
@@ -31,12 +33,9 @@ CHANNELS = range(32)
 BAUDRATES = (9600, 38400, 115200)
 TIME_MAX_MS = 65535
 SPEED_MAX_US_PER_S = 65535
-CR = b"\r"
 STATUS_QUERY = b"Q\r"
 VERSION_QUERY = b"VER\r"
 STATUS_REPLY = {b".": False, b"+": True}  # Q reply byte -> still moving
-
-T = TypeVar("T")
 
 
 def check_channel(channel: int, channels: range = CHANNELS) -> None:
@@ -142,93 +141,30 @@ def parse_pulses(reply: bytes, channels: list[int]) -> dict[int, int]:
     return pulses
 
 
-def _complete(reply: bytes, size: int | None) -> bytes:
-    if not reply:
-        raise ReplyError("no reply")
-    if size is not None and len(reply) != size:
-        raise ReplyError(f"reply {reply!r} has {len(reply)} bytes, expected {size}")
-    return reply
-
-
-def _import_serial() -> Any:
-    try:
-        import serial
-    except ModuleNotFoundError:
-        raise DeviceError(
-            "pyserial is not installed; install armkit's serial extra: pip install 'armkit[serial]'"
-        ) from None
-    return serial
-
-
-class SerialLink:
-    """A serial port with bounded request/reply exchanges (used by SSC-32 and Maestro).
-
-    A reply that is missing, late or malformed is drained away and the request is
-    sent again, at most ``retries`` more times; only queries are ever repeated.
-    """
-
-    def __init__(self, name: str, port: str, baudrate: int, timeout_s: float, retries: int):
-        serial = _import_serial()
-        self.name, self.port, self.baudrate = name, port, baudrate
-        self.timeout_s, self.retries = timeout_s, retries
-        try:
-            self._serial = serial.Serial(port, baudrate, timeout=timeout_s, write_timeout=1.0)
-        except (serial.SerialException, OSError) as exc:
-            raise DeviceError(f"cannot open {name} on {port}: {exc}; check the port name") from None
-
-    def write(self, data: bytes) -> None:
-        """Send ``data`` as it is."""
-        try:
-            self._serial.write(data)
-        except Exception as exc:
-            raise DeviceError(f"{self.name} on {self.port}: write failed: {exc}") from None
-
-    def exchange(
-        self, request: bytes, size: int | None, parse: Callable[[bytes], T], what: str
-    ) -> T:
-        """Send ``request``, read ``size`` bytes (None: up to CR), return ``parse(reply)``;
-        DeviceError naming ``what`` was asked and the last fault after 1 + retries tries."""
-        problem = ""
-        for _ in range(1 + self.retries):
-            self._serial.reset_input_buffer()
-            self.write(request)
-            try:
-                return parse(_complete(self._read(size), size))
-            except ValueError as exc:
-                problem = str(exc)
-                self._drain()
-        raise DeviceError(
-            f"{self.name} on {self.port}: {what}: {problem} after {1 + self.retries} "
-            f"tries; check power, cable and baud rate ({self.baudrate})"
-        )
-
-    def _read(self, size: int | None) -> bytes:
-        return bytes(self._serial.read_until(CR) if size is None else self._serial.read(size))
-
-    def _drain(self) -> None:
-        time.sleep(self.timeout_s)
-        self._serial.reset_input_buffer()
-
-    def close(self) -> None:
-        """Release the port. Safe to call twice."""
-        self._serial.close()
-
-
 class SSC32:
     """An SSC-32 / SSC-32U on a serial port.
 
     Args:
-        port: serial device path (``/dev/ttyUSB0``, or an emulator's ``.port``).
+        port: serial device path (``/dev/ttyUSB0``, an emulator's ``.port``), or an open
+            ``SerialPort`` (a simulated line).
         baudrate: 9600 (factory default), 38400 or 115200, as set on the board.
         timeout_s: how long to wait for a reply [s].  retries: extra tries per query.
+        clock: time for waiting (real time by default; a simulation's clock).
     """
 
     def __init__(
-        self, port: str, baudrate: int = 9600, *, timeout_s: float = 0.1, retries: int = 2
+        self,
+        port: str | SerialPort,
+        baudrate: int = 9600,
+        *,
+        timeout_s: float = 0.1,
+        retries: int = 2,
+        clock: Clock | None = None,
     ) -> None:
         check_baudrate(baudrate)
-        self.port = port
-        self._link = SerialLink("SSC-32", port, baudrate, timeout_s, retries)
+        self.clock = clock or WallClock()
+        self._link = SerialLink("SSC-32", port, baudrate, timeout_s, retries, self.clock)
+        self.port = self._link.port
 
     def move(
         self, channel: int, pulse_us: int, *, speed: int | None = None, time_ms: int | None = None
@@ -251,14 +187,14 @@ class SSC32:
 
     def wait(self, timeout_s: float, poll_s: float = 0.005) -> None:
         """Poll ``Q`` until the move is done; DeviceError if it is not within ``timeout_s`` [s]."""
-        deadline = time.monotonic() + timeout_s
+        deadline = self.clock.now() + timeout_s
         while self.is_moving():
-            if time.monotonic() > deadline:
+            if self.clock.now() > deadline:
                 raise DeviceError(
                     f"SSC-32 on {self.port} still moving after {timeout_s:.2f} s; "
                     "check for a stalled servo, or wait longer"
                 )
-            time.sleep(poll_s)
+            self.clock.sleep(poll_s)
 
     def query_pulses(self, channels: Iterable[int]) -> dict[int, int]:
         """Channel -> pulse being sent [µs] (0 = never commanded), by one ``QP`` query."""

@@ -1,7 +1,9 @@
-"""Driver names -> the module that opens them, imported only when asked for.
+"""Driver names -> the module that opens them on real hardware, imported only when asked for.
 
 Each entry points at a function ``open_driver(model, port) -> Driver`` in a
 module of armkit; device SDKs are imported inside those modules, never here.
+Simulated devices are the factory's business (``armkit.connect``): drivers
+never know about them.
 """
 
 from __future__ import annotations
@@ -20,7 +22,6 @@ class _Opener(Protocol):
 
 # name -> (module, function, one-line help)
 DRIVERS: dict[str, tuple[str, str, str]] = {
-    "sim": ("armkit.sim", "open_sim_driver", "simulated arm (no hardware), any model"),
     "owi535": ("armkit.drivers.timed", "open_driver", "OWI-535 over USB (pyusb; usb extra)"),
     "ssc32": (
         "armkit.drivers.servo",
@@ -41,19 +42,20 @@ DRIVERS: dict[str, tuple[str, str, str]] = {
 
 
 def driver_names() -> list[str]:
-    """Known driver names."""
+    """Names of the drivers of real hardware."""
     return list(DRIVERS)
 
 
 def open_driver(model: ArmModel, name: str, port: str | None = None) -> Driver:
-    """Open the driver called ``name`` for ``model`` (``port``: device path, or ``"emu"``).
+    """Open the driver called ``name`` for ``model`` on the real device at ``port`` (the
+    factory, ``armkit.connect.open_driver``, calls this for real hardware).
 
     Raises:
         ValueError: unknown driver name (the message lists the known ones).
         DeviceError: the driver exists but is not available or the device is not there.
     """
     if name not in DRIVERS:
-        raise InputError(f"unknown driver {name!r}; drivers are {', '.join(DRIVERS)}")
+        raise InputError(f"unknown driver {name!r}; drivers are sim, {', '.join(DRIVERS)}")
     module_name, func_name, _ = DRIVERS[name]
     try:
         module = importlib.import_module(module_name)

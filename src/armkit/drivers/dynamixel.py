@@ -4,7 +4,9 @@ Calibration, from the model's ``[drivers.dynamixel]`` table: joint servo
 ``ids``, ``gripper_id``, ``baudrate``, ``ticks_per_turn`` and ``center_tick``:
 ``tick = center_tick + q * ticks_per_turn / 2pi`` (ticks increase with the
 model's positive angle), clipped to the position-mode range 0..4095 (at most
-one tick at exactly +-180 deg).
+one tick at exactly +-180 deg). ``operating_mode = "extended"`` puts the joints
+in extended position mode instead (multi-turn, no clipping: joints with more
+than one turn of range).
 
 Gripper (current-based position mode, so it squeezes with at most
 ``gripper_current`` x 2.69 mA instead of stalling at full torque): the opening
@@ -13,33 +15,40 @@ maps linearly from ``width_mm[0]`` at ``gripper_ticks[0]`` to ``width_mm[1]`` at
 point; measure your unit and set ``gripper_ticks`` in its calibration file.
 
 Moves use time-based profiles (Drive Mode bit 2): every joint gets the same
-total and ramp time, so all arrive together. ``close()`` leaves torque ON and
-the arm holding its pose, because an OpenManipulator-X with torque off folds
-under gravity; call ``relax()`` first to release it on purpose.
+total and ramp time (the shared timing rule of ``armkit.model._limits``), so
+all arrive together; a move longer than one profile (32.7 s) goes in pieces.
+``close()`` leaves torque ON and the arm holding its pose, because an
+OpenManipulator-X with torque off folds under gravity; call ``relax()`` first
+to release it on purpose.
 """
 
 from __future__ import annotations
 
 import contextlib
 import math
-import time
-from typing import Any
+from collections.abc import Callable
 
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import DeviceError, InputError, JointLimitError
+from .._clock import Clock, WallClock
+from .._errors import DeviceError, InputError
 from ..devices import _xm430 as xm
 from ..devices.dynamixel import DynamixelBus
-from ..model import ArmModel, dynamixel_section
+from ..model import ArmModel, DynamixelSection, dynamixel_section
+from ..model._limits import check_grip, check_joints, check_speed, limits, move_time, ramp_time
+from ._driver import pieces
+from ._dxl_points import calibration_points as calibration_points
+from ._sent import SentProfile
 
-_MAX_PROFILE_MS = 32737  # time-based Profile Velocity limit
-_POLL_S = 0.01
+MAX_PROFILE_MS = 32737  # time-based Profile Velocity limit
+_POLL_S = 0.005  # between reads of Moving and Present Position while waiting [s]
+_SETTLE_S = 0.3  # longest wait for a stopped servo's encoder to reach its goal tick [s]
 _HOLD_PROFILE_MS = (50, 100)  # (ramp, total) of a stop: settle on the held tick in 0.1 s
 
 
 def open_driver(model: ArmModel, port: str | None) -> DynamixelDriver:
-    """Open the arm's servos on ``port`` (a device path, or ``"emu"`` for an emulator).
+    """Open the arm's servos on ``port`` (a device path).
 
     Raises:
         ModelError: no or a wrong ``[drivers.dynamixel]`` table.
@@ -48,62 +57,38 @@ def open_driver(model: ArmModel, port: str | None) -> DynamixelDriver:
     cfg = dynamixel_section(model)
     if not port:
         raise DeviceError("the dynamixel driver needs a port: /dev/ttyUSB0 (say) or 'emu'")
-    emulator = None
-    if port == "emu":
-        from ..sim.dynamixel_emulator import DynamixelEmulator
-
-        emulator = DynamixelEmulator([*cfg.ids, cfg.gripper_id])
-        port = emulator.port
-    try:
-        bus = DynamixelBus(port, cfg.baudrate)
-    except DeviceError:
-        if emulator is not None:
-            emulator.close()
-        raise
-    return DynamixelDriver(model, bus, emulator=emulator)
-
-
-def profile_times(
-    distance: NDArray[np.float64], v_max: NDArray[np.float64], a_max: NDArray[np.float64]
-) -> tuple[float, float]:
-    """(total, ramp) [s] of the shortest common trapezoid for every joint.
-
-    ``distance`` [rad], ``v_max`` [rad/s], ``a_max`` [rad/s^2], shape (dof,).
-    """
-    d = np.abs(distance)
-    triangular = d < v_max**2 / a_max
-    each = np.where(triangular, 2.0 * np.sqrt(d / a_max), d / v_max + v_max / a_max)
-    total = float(each.max(initial=0.0))
-    return total, ramp_for(total, d, a_max)
-
-
-def ramp_for(total: float, distance: NDArray[np.float64], a_max: NDArray[np.float64]) -> float:
-    """Shortest ramp [s] of a ``total``-second trapezoid that keeps every joint under
-    ``a_max``: d = a * ramp * (total - ramp), solved for the most demanding joint."""
-    need = 4.0 * float(np.max(np.abs(distance) / a_max, initial=0.0))
-    return min(total / 2.0, (total - math.sqrt(max(total * total - need, 0.0))) / 2.0)
-
-
-def check_timing(duration: float | None, speed: float | None) -> None:
-    """ValueError unless ``duration`` is 0..32.7 s and ``speed`` in (0, 1] (or None)."""
-    if speed is not None and not 0.0 < speed <= 1.0:
-        raise InputError(f"speed must be in (0, 1] (a fraction of max speed), got {speed}")
-    if duration is not None and not 0.0 <= duration <= _MAX_PROFILE_MS / 1000:
-        raise InputError(f"duration must be 0..{_MAX_PROFILE_MS / 1000} s, got {duration}")
+    bus = DynamixelBus(port, cfg.baudrate)
+    return DynamixelDriver(model, bus)
 
 
 class DynamixelDriver:
-    """Driver (see ``drivers._driver``) for a Dynamixel arm described by ``model``."""
+    """Driver (see ``drivers._driver``) for a Dynamixel arm described by ``model``.
 
-    def __init__(self, model: ArmModel, bus: DynamixelBus, *, emulator: Any = None) -> None:
-        cfg = dynamixel_section(model)
-        self.model, self.bus, self._emulator = model, bus, emulator
+    Args:
+        config: the setup (default: the model's ``[drivers.dynamixel]``, ``dynamixel_section``).
+        clock: time for waiting (real time by default).  on_close: run once by ``close()``.
+    """
+
+    def __init__(
+        self,
+        model: ArmModel,
+        bus: DynamixelBus,
+        *,
+        config: DynamixelSection | None = None,
+        clock: Clock | None = None,
+        on_close: Callable[[], None] | None = None,
+    ) -> None:
+        cfg = dynamixel_section(model) if config is None else config
+        self.model, self.bus, self._on_close = model, bus, on_close
+        self.clock = clock or WallClock()
+        self._extended = cfg.operating_mode == "extended"
         self.ids = list(cfg.ids)
         self.gripper_id = cfg.gripper_id
         self._ticks_per_rad = cfg.ticks_per_turn / (2.0 * math.pi)
         self._center = cfg.center_tick
         self._grip_ticks = cfg.gripper_ticks
         self._tolerance = cfg.position_tolerance_ticks
+        self._sent: SentProfile | None = None  # the last profile sent, while it holds
         try:
             self._setup(cfg.gripper_current)
         except DeviceError:
@@ -117,8 +102,9 @@ class DynamixelDriver:
 
     def _setup(self, gripper_current: int) -> None:
         self.bus.check_models([*self.ids, self.gripper_id])
+        mode = xm.MODE_EXTENDED_POSITION if self._extended else xm.MODE_POSITION
         for sid in self.ids:
-            self.bus.set_operating_mode(sid, xm.MODE_POSITION)
+            self.bus.set_operating_mode(sid, mode)
         self.bus.set_time_based(self.ids, True)
         self.bus.set_operating_mode(self.gripper_id, xm.MODE_CURRENT_POSITION)
         self.bus.write(self.gripper_id, "Goal Current", gripper_current)
@@ -127,45 +113,12 @@ class DynamixelDriver:
     def to_ticks(self, q: NDArray[np.float64]) -> NDArray[np.int64]:
         """Joint angles [rad], shape (dof,) -> goal ticks, shape (dof,)."""
         ticks = np.rint(self._center + np.asarray(q) * self._ticks_per_rad)
-        return np.clip(ticks, 0, 4095).astype(np.int64)
+        low, high = (-1_048_575, 1_048_575) if self._extended else (0, 4095)
+        return np.clip(ticks, low, high).astype(np.int64)
 
     def to_angles(self, ticks: NDArray[np.int64]) -> NDArray[np.float64]:
         """Ticks, shape (dof,) -> joint angles [rad], shape (dof,)."""
         return (np.asarray(ticks, dtype=np.float64) - self._center) / self._ticks_per_rad
-
-    def check_limits(self, q: NDArray[np.float64]) -> NDArray[np.float64]:
-        """``q`` [rad] as a (dof,) array; JointLimitError names the first joint outside."""
-        q = np.asarray(q, dtype=np.float64)
-        if q.shape != (self.model.dof,):
-            raise InputError(f"expected {self.model.dof} joint angles, got shape {q.shape}")
-        for joint, value in zip(self.model.joints, q, strict=True):
-            if not joint.lower - 1e-9 <= value <= joint.upper + 1e-9:
-                raise JointLimitError(
-                    f"{joint.name}: {math.degrees(value):.2f} deg is outside its range"
-                    f" {math.degrees(joint.lower):.2f}..{math.degrees(joint.upper):.2f} deg;"
-                    " choose a target inside it"
-                )
-        return q
-
-    def timing(
-        self,
-        start: NDArray[np.float64],
-        goal: NDArray[np.float64],
-        duration: float | None = None,
-        speed: float | None = None,
-    ) -> int:
-        """Profile total time [ms] for a move, from ``duration`` [s] and/or ``speed`` (0, 1]."""
-        check_timing(duration, speed)
-        v_max = np.array([j.max_velocity for j in self.model.joints]) * (speed or 1.0)
-        a_max = np.array([j.max_acceleration for j in self.model.joints])
-        fastest, _ = profile_times(goal - start, v_max, a_max)
-        total_ms = max(1, math.ceil(1000.0 * max(fastest, duration or 0.0)))
-        if total_ms > _MAX_PROFILE_MS:
-            raise InputError(
-                f"this move would take {total_ms / 1000:.1f} s at speed {speed}; a servo profile"
-                f" lasts at most {_MAX_PROFILE_MS / 1000} s: raise the speed or split the move"
-            )
-        return total_ms
 
     def move(
         self,
@@ -175,25 +128,32 @@ class DynamixelDriver:
         speed: float | None = None,
         wait: bool = True,
     ) -> None:
-        """Move every joint to ``q`` [rad], shape (dof,), all arriving together.
-
-        A duration shorter than the joints' speed and acceleration limits allow is
-        stretched to the shortest one that respects them. Every argument is checked
+        """Move every joint to ``q`` [rad], shape (dof,), all arriving together, in the time
+        of the shared rule (see ``armkit.drivers.Driver``). Every argument is checked
         before a byte is sent. If the move fails part-way every servo that answers is
         commanded to hold its present position, then DeviceError is raised.
         """
-        goal = self.check_limits(q)
-        check_timing(duration, speed)
-        ticks = self.to_ticks(goal)
-        start = self.read()
-        total_ms = self.timing(start, goal, duration=duration, speed=speed)
-        a_max = np.array([j.max_acceleration for j in self.model.joints])
-        ramp_ms = round(1000.0 * ramp_for(total_ms / 1000.0, goal - start, a_max))
+        goal = check_joints(self.model, q)
+        frac = check_speed(speed)
+        self._alive()
+        asked, start = self._start()
+        seconds = move_time(self.model, asked, goal, speed=frac, duration=duration)
+        end = self.to_angles(self.to_ticks(goal))
+        if duration is None:  # the profile is timed for what the servos do: to the goal's tick
+            seconds = move_time(self.model, start, end, speed=frac)
+        parts = pieces(start, goal, seconds, MAX_PROFILE_MS / 1000.0)
+        if len(parts) > 1 and not wait:
+            raise InputError(
+                f"this move takes {seconds:.1f} s; a servo profile lasts at most "
+                f"{MAX_PROFILE_MS / 1000} s, so it goes in pieces and must wait"
+            )
+        _, amax = limits(self.model)
+        ramp = ramp_time(seconds, end - start, amax) if len(parts) == 1 else 0.0
         try:
-            self.bus.set_profiles({sid: (ramp_ms, total_ms) for sid in self.ids})
-            self.bus.sync_write("Goal Position", dict(zip(self.ids, ticks.tolist(), strict=True)))
-            if wait:
-                self._wait(total_ms / 1000.0 * 1.5 + 1.0, ticks)
+            origin = start
+            for k, (target, piece_s) in enumerate(parts):
+                last = k == len(parts) - 1
+                origin = self._profile_move(origin, target, piece_s, ramp, wait or not last)
         except DeviceError as exc:
             lost: list[int] = []
             with contextlib.suppress(DeviceError):
@@ -203,19 +163,51 @@ class DynamixelDriver:
                 f"{exc}; the move was abandoned and every servo that answers holds{silent}"
             ) from exc
 
+    def _profile_move(
+        self,
+        origin: NDArray[np.float64],
+        target: NDArray[np.float64],
+        seconds: float,
+        ramp: float,
+        wait: bool,
+    ) -> NDArray[np.float64]:
+        """One time-based profile from ``origin`` to ``target``'s ticks [rad] lasting
+        ``seconds`` with ``ramp`` [s] of acceleration at each end (pieces of a long move:
+        none). Returns where it ends [rad] (``target`` to the tick)."""
+        total_ms = max(1, math.ceil(1000.0 * seconds - 1e-9))
+        ramp_ms = min(round(1000.0 * ramp), total_ms // 2)
+        ticks = self.to_ticks(target)
+        end = self.to_angles(ticks)
+        self.bus.set_profiles({sid: (ramp_ms, total_ms) for sid in self.ids})
+        self.bus.sync_write("Goal Position", dict(zip(self.ids, ticks.tolist(), strict=True)))
+        now, total = self.clock.now(), total_ms / 1000.0
+        self._sent = SentProfile(origin, target.copy(), end, ticks, now, total)
+        if wait:
+            self.clock.sleep(total_ms / 1000.0)  # nothing to ask before it can be done
+            self._wait(total_ms / 1000.0 * 0.5 + 1.0, ticks)
+        return end
+
     def _wait(self, timeout: float, goal: NDArray[np.int64]) -> None:
-        """Wait for the joints to stop, then check they arrived at ``goal`` [tick]."""
+        """Wait for the joints to stop and settle on ``goal`` [tick] (their encoders on it, for
+        at most ``_SETTLE_S``), then check they arrived (within the tolerance)."""
         if not self._stopped(self.ids, timeout):
             raise DeviceError(f"servos {self.ids}: still moving {timeout:.1f} s after the command")
+        deadline = self.clock.now() + _SETTLE_S
+        while not self._on_goal(goal) and self.clock.now() < deadline:
+            self.clock.sleep(_POLL_S)
         self._check_arrival(self.ids, goal)
+
+    def _on_goal(self, goal: NDArray[np.int64]) -> bool:
+        present = self.bus.sync_read("Present Position", self.ids)
+        return all(present[sid] == g for sid, g in zip(self.ids, goal.tolist(), strict=True))
 
     def _stopped(self, ids: list[int], timeout: float) -> bool:
         """Poll Moving until every servo in ``ids`` stops (True) or ``timeout`` [s] (False)."""
-        deadline = time.monotonic() + timeout
+        deadline = self.clock.now() + timeout
         while any(self.bus.sync_read("Moving", ids).values()):
-            if time.monotonic() > deadline:
+            if self.clock.now() > deadline:
                 return False
-            time.sleep(_POLL_S)
+            self.clock.sleep(_POLL_S)
         return True
 
     def _check_arrival(self, ids: list[int], goal: NDArray[np.int64]) -> None:
@@ -227,19 +219,44 @@ class DynamixelDriver:
                     f" (tolerance {self._tolerance}); is it blocked or did it miss the command?"
                 )
 
-    def read(self) -> NDArray[np.float64]:
-        """Present joint angles [rad], shape (dof,), from one SYNC_READ."""
+    def _alive(self) -> None:
+        if not self.bus.is_open:
+            raise DeviceError(
+                f"the {self.model.name}'s Dynamixel bus is closed; open the driver again"
+            )
+
+    def _start(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """Where a new move starts [rad]: (as the timing rule sees it, as the servos go).
+        The servos follow the last profile, their encoders a little behind, so a move
+        starts where the profile has them now (once it has ended: the angles it was
+        sent for, as ``read`` says, and their ticks), unless they are further from it
+        than the arrival tolerance (blocked, pushed): then where they are."""
+        ticks = self._ticks()
+        present = self.to_angles(ticks)
+        if self._sent is None:
+            return present, present
+        now = self.clock.now()
+        commanded = self._sent.where(now)
+        if np.max(np.abs(present - commanded)) * self._ticks_per_rad > self._tolerance:
+            return self._sent.reading(ticks, present), present
+        return (self._sent.goal if self._sent.done(now) else commanded), commanded
+
+    def _ticks(self) -> NDArray[np.int64]:
         states = self.bus.read_states(self.ids)
-        return self.to_angles(np.array([states[sid].position for sid in self.ids]))
+        return np.array([states[sid].position for sid in self.ids], dtype=np.int64)
+
+    def read(self) -> NDArray[np.float64]:
+        """Present joint angles [rad], shape (dof,), from one SYNC_READ; a servo on the
+        tick of the last goal reads as that goal's angle (the tick holds it to within
+        half a tick either way)."""
+        ticks = self._ticks()
+        angles = self.to_angles(ticks)
+        return angles if self._sent is None else self._sent.reading(ticks, angles)
 
     def grip_ticks(self, width: float) -> int:
         """Gripper goal tick for an opening ``width`` [m] (ValueError outside the model's range)."""
         g = self.model.gripper
-        if not g.width_min - 1e-12 <= width <= g.width_max + 1e-12:
-            raise InputError(
-                f"grip width {width * 1000:.1f} mm is outside {self.model.name}'s range"
-                f" {g.width_min * 1000:.1f}..{g.width_max * 1000:.1f} mm"
-            )
+        check_grip(self.model, width)
         closed, opened = self._grip_ticks
         return round(
             closed + (width - g.width_min) / (g.width_max - g.width_min) * (opened - closed)
@@ -248,6 +265,7 @@ class DynamixelDriver:
     def grip(self, width: float) -> None:
         """Open the gripper to ``width`` [m] and wait; a stall on an object is a grasp."""
         tick = self.grip_ticks(width)
+        self._alive()
         self.bus.write(self.gripper_id, "Goal Position", tick)
         self._stopped([self.gripper_id], 3.0)
 
@@ -255,6 +273,7 @@ class DynamixelDriver:
         """Command every servo that answers to its present position; the IDs that did not.
         One try per servo, so that a missing one delays the others as little as possible."""
         held, lost = {}, []
+        self._sent = None  # the goal sent last no longer holds
         retries, self.bus.retries = self.bus.retries, 0
         try:
             for sid in [*self.ids, self.gripper_id]:
@@ -289,6 +308,6 @@ class DynamixelDriver:
                     self._hold()
         finally:
             self.bus.close()
-            if self._emulator is not None:
-                self._emulator.close()
-                self._emulator = None
+            on_close, self._on_close = self._on_close, None
+            if on_close is not None:
+                on_close()

@@ -32,7 +32,9 @@ _OWI = {
 _DXL = {
     "ids": list, "gripper_id": int, "baudrate": int, "ticks_per_turn": int, "center_tick": NUM,
     "gripper_ticks": list, "gripper_current": int, "position_tolerance_ticks": int,
+    "operating_mode": str,
 }  # fmt: skip
+DXL_MODES = ("position", "extended")
 _SERVO = {
     "channels": list, "baudrate": int, "center_deg": list, "direction": list,
     "grip_pulse_us": list,
@@ -85,6 +87,8 @@ class DynamixelSection:
         ticks_per_turn: ticks in one turn.  center_tick: tick at joint angle 0.
         gripper_ticks: (closed, open) ticks.  gripper_current: current limit [2.69 mA units].
         position_tolerance_ticks: how close a servo must come to count as arrived [ticks].
+        operating_mode: the joints' mode, ``"position"`` (one turn, 0..4095) or
+            ``"extended"`` (multi-turn: joints with more than one turn of range).
     """
 
     ids: tuple[int, ...]
@@ -95,6 +99,7 @@ class DynamixelSection:
     gripper_ticks: tuple[int, int] = (1500, 2600)
     gripper_current: int = 300
     position_tolerance_ticks: int = 30
+    operating_mode: str = "position"
 
 
 def check_driver_sections(check: Checker, data: Any, model: ArmModel) -> None:
@@ -243,6 +248,9 @@ def _dynamixel(check: Checker, data: Any, model: ArmModel) -> DynamixelSection:
         gripper_current=check.integer(get("gripper_current", 300), f"{w}.gripper_current", 1, 2047),
         position_tolerance_ticks=check.integer(
             get("position_tolerance_ticks", 30), f"{w}.position_tolerance_ticks", 1, 1000
+        ),
+        operating_mode=check.choice(
+            get("operating_mode", "position"), f"{w}.operating_mode", DXL_MODES
         ),
     )
 

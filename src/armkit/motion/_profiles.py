@@ -17,6 +17,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError
 from ..model import ArmModel
+from ..model._limits import check_speed, limits, trapezoid_time
 
 F64 = NDArray[np.float64]
 
@@ -91,7 +92,7 @@ def trapezoid(
     """
     start, end, vmax, amax = _limits(model, q0, q1, speed)
     dist = np.abs(end - start)
-    fastest = float(np.max(_trapezoid_time(dist, vmax, amax), initial=0.0))
+    fastest = float(np.max(trapezoid_time(dist, vmax, amax), initial=0.0))
     total = _checked_duration(fastest, duration)
     v = _cruise_speed(dist, amax, total)
     return Trapezoid(start, end, total, v, np.where(dist > 0, amax, 0.0))
@@ -110,7 +111,7 @@ def trapezoid_in_line(
     moving = dist > 0
     v_unit = float(np.min(vmax[moving] / dist[moving]))
     a_unit = float(np.min(amax[moving] / dist[moving]))
-    fastest = float(_trapezoid_time(np.array([1.0]), np.array([v_unit]), np.array([a_unit]))[0])
+    fastest = float(trapezoid_time(np.array([1.0]), np.array([v_unit]), np.array([a_unit]))[0])
     total = _checked_duration(fastest, duration)
     v = float(_cruise_speed(np.array([1.0]), np.array([a_unit]), total)[0])
     return Trapezoid(start, end, total, v * dist, a_unit * dist)
@@ -133,12 +134,9 @@ def _limits(
     model: ArmModel, q0: ArrayLike, q1: ArrayLike, speed: float
 ) -> tuple[F64, F64, F64, F64]:
     """Validated start, end [rad] and the velocity and acceleration limits, shape (dof,) each."""
-    if not 0.0 < speed <= 1.0:
-        raise InputError(f"speed must be a fraction of the maximum in (0, 1], got {speed}")
     start = np.asarray(q0, dtype=np.float64).reshape(model.dof)
     end = np.asarray(q1, dtype=np.float64).reshape(model.dof)
-    vmax = speed * np.array([j.max_velocity for j in model.joints])
-    amax = np.array([j.max_acceleration for j in model.joints])
+    vmax, amax = limits(model, check_speed(speed))
     return start, end, vmax, amax
 
 
@@ -152,12 +150,6 @@ def _checked_duration(fastest: float, duration: float | None) -> float:
             f"duration {duration:.3f} s is too short: the joint limits need {fastest:.3f} s or more"
         )
     return duration
-
-
-def _trapezoid_time(dist: F64, vmax: F64, amax: F64) -> F64:
-    """Shortest rest-to-rest time [s] for distances ``dist`` [rad] per joint."""
-    triangle = dist < vmax**2 / amax
-    return np.where(triangle, 2.0 * np.sqrt(dist / amax), dist / vmax + vmax / amax)
 
 
 def _cruise_speed(dist: F64, amax: F64, total: float) -> F64:

@@ -19,6 +19,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..model import ArmModel
+from ..model._limits import limits, ramp_time, shortest_time
 from ..motion import Trapezoid, trapezoid
 
 F64 = NDArray[np.float64]
@@ -63,23 +64,24 @@ class LinearMove:
 def time_based_predictor(
     model: ArmModel, tick: float = 0.001, ticks_per_turn: int | None = None
 ) -> Predictor:
-    """Dynamixel time-based profiles as ``drivers.dynamixel`` commands them: the total
-    time of the slowest joint's trapezoid rounded up to ``tick`` [s] (1 ms on the
-    XM430), a ramp rounded to ``tick`` that keeps every joint under its acceleration
-    limit, every joint on the same normalised trapezoid (a straight joint-space line).
-    Goals are rounded to the servo's position resolution, ``ticks_per_turn`` (default
-    the model's ``[drivers.dynamixel]`` value, else 4096)."""
-    a_max = np.array([j.max_acceleration for j in model.joints])
+    """Dynamixel time-based profiles as ``drivers.dynamixel`` commands them (the shared
+    timing rule of ``armkit.model._limits``): from ``q0`` to the goal rounded to the
+    servo's position resolution, ``ticks_per_turn`` (default the model's
+    ``[drivers.dynamixel]`` value, else 4096), the shortest rest-to-rest trapezoid along
+    the joint-space line, its total rounded up to ``tick`` [s] (1 ms on the XM430), the
+    ramp that keeps every joint under its acceleration limit rounded to ``tick``, every
+    joint on the same normalised trapezoid."""
+    _, a_max = limits(model)
     turn = ticks_per_turn or int(model.drivers.get("dynamixel", {}).get("ticks_per_turn", 4096))
     per_rad = turn / (2.0 * math.pi)
 
     def predict(q0: F64, q1: F64, speed: float) -> JointProfile:
         start = np.asarray(q0, dtype=np.float64)
         goal = np.rint(np.asarray(q1, dtype=np.float64) * per_rad) / per_rad
-        fastest = trapezoid(model, start, goal, speed=speed).duration
-        total = max(1, math.ceil(fastest / tick - 1e-9)) * tick
-        ramp = round(_shortest_ramp(total, np.abs(goal - start), a_max) / tick) * tick
-        return ramped_line(start, goal, total, ramp)
+        fastest = shortest_time(model, start, goal, speed)
+        steps = max(1, math.ceil(fastest / tick - 1e-9))
+        ramp = min(round(ramp_time(fastest, goal - start, a_max) / tick), steps // 2) * tick
+        return ramped_line(start, goal, steps * tick, ramp)
 
     return predict
 
@@ -115,10 +117,3 @@ def ramped_line(q0: F64, q1: F64, total: float, ramp: float) -> Trapezoid:
     peak = dist / (total - ramp) if total > 0 else 0.0 * dist
     accel = peak / ramp if ramp > 0 else 0.0 * dist
     return Trapezoid(q0, q1, total, peak, accel)
-
-
-def _shortest_ramp(total: float, dist: F64, a_max: F64) -> float:
-    """Shortest ramp [s] of a ``total``-second trapezoid keeping every joint under
-    ``a_max``: dist = a * ramp * (total - ramp) solved for the most demanding joint."""
-    need = 4.0 * float(np.max(dist / a_max, initial=0.0))
-    return min(total / 2.0, (total - math.sqrt(max(total * total - need, 0.0))) / 2.0)

@@ -14,7 +14,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import ArmkitError
-from ..drivers import driver_names
+from ..connect import driver_names
 from ..model import ArmModel, load_model, shipped_models
 from ._ast import Define, Header, Job, Loc, Num, Program, Repeat, Source, Statement
 from ._diagnostics import Diagnostic, ScriptCheckError, sorted_unique, suggest

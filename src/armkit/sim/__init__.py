@@ -1,18 +1,38 @@
-"""Simulated devices and arms; protocol emulators used by tests and ``--port emu``."""
+"""The simulator: simulated devices under the real drivers, and the world they move in.
+
+``World`` is the one place where a simulated arm's true state lives and the
+documented hook for everything that needs it (a scene, grasping, a distance
+sensor, music's contact detection, the pen trace, the 3D viewer): attach an
+``Observer`` (called after every simulation step) or read ``SimArm.q()``,
+``SimArm.grip()`` and ``World.recording()``. ``world_of(driver)`` finds the
+world behind a driver opened with ``--driver sim`` (or ``port="emu"``); on real
+hardware it is None. ``Arm.world`` is the same.
+
+The devices (``ssc32``, ``maestro``, ``dynamixel`` + ``xm430``, ``owi535``) are
+simulated at the wire: the real driver and the real device class send their
+real bytes (through pyserial, the dynamixel-sdk or pyusb where installed) and
+the simulated device answers as the hardware does. ``emulators`` serves them on
+pseudo-terminals for other programs (``armkit emulate``). sim never imports
+drivers or motion.
+"""
 
 from __future__ import annotations
 
-from ..drivers._driver import Driver
-from ..model import ArmModel
+from typing import Any
+
+from .._clock import Clock
+from ._arm import SimArm as SimArm
+from ._arm import Truth as Truth
+from ._recording import Recording as Recording
+from ._world import Observer as Observer
+from ._world import World as World
+from ._world import WorldClock as WorldClock
 
 
-def open_sim_driver(model: ArmModel, port: str | None = None) -> Driver:
-    """The simulated driver for ``model``: the OWI's real driver on a simulated USB
-    device for timed-motor arms, a simulated servo arm for every other model."""
-    if "owi535" in model.drivers:
-        from ..drivers.timed import open_sim_driver as open_owi_sim
+def world_of(driver: Any) -> World | None:
+    """The world behind ``driver`` (a driver whose clock is a world's), or None on hardware."""
+    clock: Clock | None = getattr(driver, "clock", None)
+    return clock.world if isinstance(clock, WorldClock) else None
 
-        return open_owi_sim(model, port)
-    from .servo_arm import open_servo_sim
 
-    return open_servo_sim(model, port)
+__all__ = ["Observer", "Recording", "SimArm", "Truth", "World", "WorldClock", "world_of"]

@@ -100,6 +100,11 @@ class OwiPhysics:
                 self._jump(j, int(new[j]), self.unit.slip[j])
         self.dirs, self.gripper_dir, self.light = new, gripper_dir, light
 
+    @property
+    def t(self) -> float:
+        """The time the motion is integrated up to [s]."""
+        return self._t
+
     def true_q(self) -> F64:
         """True joint angles now [rad], shape (4,)."""
         self.advance()
@@ -114,9 +119,9 @@ class OwiPhysics:
             or (d < 0 and self.q[j] <= self.model.lower[j])
         )
 
-    def advance(self) -> None:
-        """Integrate the motion up to ``clock.now()``."""
-        t = self.clock.now()
+    def advance(self, until: float | None = None) -> None:
+        """Integrate the motion up to ``until`` [s] (None: ``clock.now()``)."""
+        t = self.clock.now() if until is None else until
         while self._t < t - 1e-12:
             h = min(STEP_S, t - self._t)
             self._step(h)

@@ -1,44 +1,29 @@
 """A pyusb backend that IS an OWI-535: ``usb.core.find(backend=OwiUsbBackend(...))``
-returns a device whose control transfers drive the simulated motors, so the
-real device and driver code run unchanged on top of it.
-
-It answers only what the arm answers: one vendor request (0x40, 6, 0x0100, 0,
-3 bytes); anything else stalls, like the real board. Every transfer is kept
-(and optionally appended to a log file) for byte-exact tests. Fault injection:
-``present=False`` (unplugged), ``deny_access=True`` (no udev rule),
-``fail_after=n`` (unplugged after n transfers).
+returns a device whose control transfers go to a simulated interface board
+(``owi535.SimOwiUsb``), so pyusb, the real device class and the real driver run
+unchanged on top of it. Imported only where pyusb is installed.
 """
 
 from __future__ import annotations
 
 import errno
-from dataclasses import dataclass
 from pathlib import Path
 from types import SimpleNamespace
 from typing import Any
 
-import numpy as np
 import usb.backend
 import usb.core
 
-from ..devices.owi535 import INDEX, REQUEST, REQUEST_TYPE, VALUE, VENDOR_ID
-from ..drivers.timed._commands import decode
-from .owi_physics import JOINTS, OwiPhysics
+from ..devices.owi535 import VENDOR_ID
+from .owi535 import SimOwiUsb, Transfer, UsbFault
+from .owi_physics import OwiPhysics
 
-
-@dataclass(frozen=True)
-class Transfer:
-    """One control transfer the host sent: setup fields and the data bytes."""
-
-    request_type: int
-    request: int
-    value: int
-    index: int
-    data: bytes
+__all__ = ["OwiUsbBackend", "Transfer"]
 
 
 class OwiUsbBackend(usb.backend.IBackend):  # type: ignore[misc]
-    """The simulated arm behind a pyusb backend (one device on bus 1)."""
+    """A simulated board (``board``, or one made from the other arguments, see
+    ``SimOwiUsb``) behind a pyusb backend: one device on bus 1."""
 
     def __init__(
         self,
@@ -49,24 +34,42 @@ class OwiUsbBackend(usb.backend.IBackend):  # type: ignore[misc]
         deny_access: bool = False,
         fail_after: int | None = None,
         log_path: Path | None = None,
+        board: SimOwiUsb | None = None,
     ) -> None:
-        self.physics = physics
-        self.product_id = product_id
-        self.present, self.deny_access, self.fail_after = present, deny_access, fail_after
-        self.log_path = log_path
-        self.transfers: list[Transfer] = []
+        self.board = board or SimOwiUsb(
+            physics,
+            product_id=product_id,
+            present=present,
+            deny_access=deny_access,
+            fail_after=fail_after,
+            log_path=log_path,
+        )
         self.configuration = 0
+
+    @property
+    def transfers(self) -> list[Transfer]:
+        """The transfers the board accepted (the last ``LOG_ROWS``), oldest first."""
+        return list(self.board.transfers)
+
+    @property
+    def present(self) -> bool:
+        """False once unplugged."""
+        return self.board.present
+
+    @present.setter
+    def present(self, value: bool) -> None:
+        self.board.present = value
 
     def enumerate_devices(self) -> list[str]:
         """One opaque device id when plugged in."""
-        return ["owi535"] if self.present else []
+        return ["owi535"] if self.board.present else []
 
     def get_device_descriptor(self, dev: Any) -> Any:
         """The ELAN USB device of seed 000, Figure 8."""
         return SimpleNamespace(
             bLength=18, bDescriptorType=1, bcdUSB=0x0110, bDeviceClass=0xFF,
             bDeviceSubClass=0, bDeviceProtocol=0, bMaxPacketSize0=8,
-            idVendor=VENDOR_ID, idProduct=self.product_id, bcdDevice=0, iManufacturer=0,
+            idVendor=VENDOR_ID, idProduct=self.board.product_id, bcdDevice=0, iManufacturer=0,
             iProduct=0, iSerialNumber=0, bNumConfigurations=1, address=2, bus=1,
             port_number=2, port_numbers=(2,), speed=1,
         )  # fmt: skip
@@ -89,12 +92,13 @@ class OwiUsbBackend(usb.backend.IBackend):  # type: ignore[misc]
 
     def open_device(self, dev: Any) -> str:
         """A handle, or EACCES when access is denied."""
-        if self.deny_access:
+        if self.board.deny_access:
             raise usb.core.USBError("Access denied (insufficient permissions)", None, errno.EACCES)
         return "handle"
 
     def close_device(self, dev_handle: Any) -> None:
-        """Nothing to release."""
+        """The host let go of the board."""
+        self.board.close()
 
     def set_configuration(self, dev_handle: Any, config_value: int) -> None:
         """Remember the configuration."""
@@ -114,37 +118,8 @@ class OwiUsbBackend(usb.backend.IBackend):  # type: ignore[misc]
         self, dev_handle: Any, bmRequestType: int, bRequest: int, wValue: int, wIndex: int,
         data: Any, timeout: int,
     ) -> int:  # fmt: skip
-        """Accept the arm's one command; stall on anything else."""
-        payload = bytes(data)
-        self._check_alive()
-        if (bmRequestType, bRequest, wValue, wIndex, len(payload)) != (
-            REQUEST_TYPE, REQUEST, VALUE, INDEX, 3,
-        ):  # fmt: skip
-            raise usb.core.USBError("Pipe error", None, errno.EPIPE)
-        self._record(Transfer(bmRequestType, bRequest, wValue, wIndex, payload))
-        if self.physics is not None:
-            _drive(self.physics, payload)
-        return len(payload)
-
-    def _check_alive(self) -> None:
-        if not self.present or (
-            self.fail_after is not None and len(self.transfers) >= self.fail_after
-        ):
-            self.present = False
-            raise usb.core.USBError(
-                "No such device (it may have been disconnected)", None, errno.ENODEV
-            )
-
-    def _record(self, transfer: Transfer) -> None:
-        self.transfers.append(transfer)
-        if self.log_path is not None:
-            with open(self.log_path, "a") as fh:
-                fh.write(transfer.data.hex() + "\n")
-                fh.flush()
-
-
-def _drive(physics: OwiPhysics, payload: bytes) -> None:
-    """Hand a command to the motors: joint directions, gripper, light."""
-    motion, light = decode(payload)
-    dirs = np.array([motion.get(j, 0) for j in JOINTS], dtype=float)
-    physics.command(dirs, motion.get("gripper", 0), light)
+        """Hand the transfer to the board; its faults become pyusb's USBError."""
+        try:
+            return self.board.ctrl_transfer(bmRequestType, bRequest, wValue, wIndex, bytes(data))
+        except UsbFault as exc:
+            raise usb.core.USBError(exc.strerror, None, exc.errno) from None

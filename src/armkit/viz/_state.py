@@ -2,8 +2,9 @@
 
 A source answers "what did the arm (and the objects on the table) look like at
 time t": joint angles, gripper opening and object poses. ``DriverSource``
-reads an arm's driver (the simulator's truth, or a real arm's read-back); the
-simulation ``World`` implements the same protocol for views that follow it.
+follows an arm's driver: on a simulated device, the simulation World's truth
+about the arm (``armkit.connect.world_of``); on real hardware, the driver's
+read-back.
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
+from ..connect import world_of
 from ..drivers._driver import Driver
 from ..model import ArmModel
 
@@ -66,16 +68,20 @@ class StateSource(Protocol):
 
 
 class DriverSource:
-    """Follow a driver by reading it back (``driver.read()``), at wall time.
+    """Follow a driver, at wall time.
 
-    The gripper opening is the driver's ``grip_width`` [m] where it keeps one (the
-    simulated servo arm does), else the last width given to ``set_grip``.
+    On a simulated device the joint angles and the gripper opening are the
+    World's truth about the arm (``SimArm.q()``, ``SimArm.grip()``: where the
+    servos really are, lag and a grasped object included). On real hardware
+    they are the driver's read-back (``driver.read()``) and the last width
+    given to ``set_grip`` (a driver cannot read its gripper).
     """
 
     def __init__(self, model: ArmModel, driver: Driver) -> None:
         self._model = model
         self.driver = driver
         self._grip = model.gripper.width_max
+        self._truth = _sim_arm(model, driver)
 
     @property
     def model(self) -> ArmModel:
@@ -95,7 +101,28 @@ class DriverSource:
         driver has no history)."""
         if t is not None:
             raise InputError("a driver can only be read now; give t=None")
+        if self._truth is not None:
+            return ArmState(self.now(), self._truth.q(), self._truth.grip())
         q = np.asarray(self.driver.read(), dtype=np.float64)
-        width = getattr(self.driver, "grip_width", None)
-        grip = float(width) if isinstance(width, float) else self._grip
-        return ArmState(self.now(), q, grip)
+        return ArmState(self.now(), q, self._grip)
+
+
+class _Truth(Protocol):
+    """What a view reads of ``armkit.sim.SimArm``."""
+
+    model: ArmModel
+
+    def q(self) -> F64: ...
+
+    def grip(self) -> float: ...
+
+
+def _sim_arm(model: ArmModel, driver: Driver) -> _Truth | None:
+    """The simulated arm behind ``driver`` (its world's one arm of ``model``), or None
+    on real hardware."""
+    world = world_of(driver)
+    if world is None:
+        return None
+    arms: list[_Truth] = list(world.arms())
+    mine = [a for a in arms if a.model is model] or [a for a in arms if a.model.name == model.name]
+    return mine[0] if len(mine) == 1 else None

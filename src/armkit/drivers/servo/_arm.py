@@ -1,22 +1,26 @@
 """The hobby-servo arm driver: joint angles -> pulses through each servo's table -> one group move.
 
-Every command is checked completely (shape, each servo's range, speed, time)
-before the first byte goes out; a refused command sends nothing. A move is one
-group move: the time is set by the servo that needs longest at its maximum speed,
-so all servos arrive together and none turns faster than its limit.
+Every command is checked completely (the shared rules of ``armkit.model._limits``,
+then each servo's table and the controller's limits) before the first byte goes
+out; a refused command sends nothing. A move is one group move lasting the time
+of the shared timing rule (``move_time``), longer only if a servo's table is
+locally steeper than its joint's speed allows; all servos arrive together. A
+move longer than the controller's longest command goes as pieces along the line.
 """
 
 from __future__ import annotations
 
 import math
-import time
 from collections.abc import Callable
 
 import numpy as np
 from numpy.typing import NDArray
 
+from ..._clock import Clock, WallClock
 from ..._errors import DeviceError, InputError
 from ...model import ArmModel
+from ...model._limits import check_grip, check_joints, check_speed, move_time
+from .._driver import pieces
 from ._bus import ServoBus
 from ._table import PULSE_MAX_US, PULSE_MIN_US, ServoCalibration
 
@@ -33,7 +37,9 @@ class ServoArmDriver:
     Args:
         model: the arm; its joints' ``max_velocity`` [rad/s] limit every move.
         bus: the controller.  joints: one table per joint.  grip: the gripper's, or None.
-        on_close: called once by ``close()`` (e.g. to stop an emulator).
+        on_close: called once by ``close()``.  clock: time for waiting (real time by default).
+        settle_s: how long a waiting move waits after the controller reports it done, for
+            the servos to catch up with their pulses [s] (they report nothing).
     """
 
     def __init__(
@@ -43,12 +49,18 @@ class ServoArmDriver:
         joints: tuple[ServoCalibration, ...],
         grip: ServoCalibration | None,
         on_close: Callable[[], None] | None = None,
+        clock: Clock | None = None,
+        settle_s: float = 0.1,
     ) -> None:
         self.model, self.bus = model, bus
+        self.settle_s = settle_s
         self.joints, self.grip_table = joints, grip
+        self.clock = clock or WallClock()
         self._on_close = on_close
         self._closed = False
-        self._busy_until = 0.0  # when the moves sent so far end [s, monotonic clock]
+        self._busy_until = 0.0  # when the moves sent so far end [s, self.clock]
+        # channel -> (start pulse, target pulse, start time, duration) of the last move sent
+        self._last: dict[int, tuple[float, float, float, float]] = {}
         # channel -> last pulse sent [µs]; at start, what the controller is sending
         self._commanded = {ch: p for ch, p in bus.read(self._channels()).items() if p > 0}
 
@@ -73,66 +85,117 @@ class ServoArmDriver:
         speed: float | None = None,
         wait: bool = True,
     ) -> None:
-        """Move every joint to ``q`` [rad], shape (dof,), all arriving together.
+        """Move every joint to ``q`` [rad], shape (dof,), all arriving together, in the
+        time of the shared rule (see ``armkit.drivers.Driver``).
 
         Args:
-            duration: at least this long [s] (longer if a servo's speed limit needs it).
+            duration: exactly this long [s]; None = as fast as the limits allow.
             speed: fraction of each joint's maximum velocity, (0, 1]; None = 1.
             wait: block until the controller reports the move done.
 
         Raises:
-            JointLimitError: an angle is outside its servo's range (names servo and range).
-            ValueError: wrong shape, speed or duration.
+            JointLimitError: an angle is outside its joint's limits (names joint and range).
+            ValueError: wrong shape, speed or duration; a long move with ``wait=False``.
         """
-        q = self._check_q(q)
-        pulses = {t.channel: t.to_pulse(float(a)) for t, a in zip(self.joints, q, strict=True)}
-        time_ms = self._move_time_ms(pulses, duration, _check_speed(speed))
-        self._send(pulses, time_ms, wait)
-
-    def _check_q(self, q: NDArray[np.float64]) -> NDArray[np.float64]:
-        q = np.asarray(q, dtype=np.float64)
-        if q.shape != (self.model.dof,):
-            raise InputError(
-                f"{self.model.name} needs {self.model.dof} joint angles "
-                f"({', '.join(self.joint_names)}), got shape {q.shape}"
-            )
-        return q
-
-    def _move_time_ms(self, pulses: dict[int, float], duration: float | None, speed: float) -> int:
-        """Group time [ms]: the slowest servo's time at ``speed`` x its maximum, at least
-        ``duration``; rounded up, so no servo exceeds its limit."""
-        if duration is not None and not (math.isfinite(duration) and duration >= 0):
-            raise InputError(f"duration must be a number of seconds >= 0, got {duration}")
+        goal = check_joints(self.model, q)
+        frac = check_speed(speed)
+        self._alive()
         starts, pad = self._starts()
-        needed = [duration or 0.0]
+        origin = self._angles_of(starts)
+        # the controller moves every pulse at constant speed: its servos do the ramping
+        seconds = move_time(self.model, origin, goal, speed=frac, duration=duration, ramps=False)
+        parts = pieces(origin, goal, seconds, self.bus.max_time_ms / 1000.0)
+        if len(parts) > 1 and not wait:
+            raise InputError(
+                f"this move takes {seconds:.1f} s, longer than one {self.bus.name} command "
+                f"({self.bus.max_time_ms / 1000:.1f} s): it goes in pieces, so it must wait"
+            )
+        for k, (target, piece_s) in enumerate(parts):
+            pulses = {
+                t.channel: t.to_pulse(float(a)) for t, a in zip(self.joints, target, strict=True)
+            }
+            time_ms = self._move_time_ms(pulses, starts, pad, piece_s, duration is not None, frac)
+            self._send(pulses, time_ms, wait or k < len(parts) - 1)
+            starts, pad = dict(self._commanded), 0.0
+
+    def _alive(self) -> None:
+        if self._closed:
+            raise DeviceError(
+                f"the {self.model.name}'s {self.bus.name} is closed; open the driver again"
+            )
+
+    def _angles_of(self, pulses: dict[int, float]) -> NDArray[np.float64]:
+        """Joint angles [rad] of ``pulses`` (a servo never commanded: its home angle)."""
+        angles = [
+            table.to_value(pulses[table.channel]) if pulses.get(table.channel) else joint.home
+            for table, joint in zip(self.joints, self.model.joints, strict=True)
+        ]
+        return np.array(angles, dtype=np.float64)
+
+    def _move_time_ms(
+        self,
+        pulses: dict[int, float],
+        starts: dict[int, float],
+        pad: float,
+        seconds: float,
+        exact: bool,
+        speed: float,
+    ) -> int:
+        """Group time [ms] for ``seconds`` [s] of the shared rule, rounded up; longer only
+        where a servo's table is steeper than its joint's speed allows (refused when the
+        time was asked for exactly)."""
+        needed = 0.0
         for table, joint in zip(self.joints, self.model.joints, strict=True):
             start, target = starts.get(table.channel), pulses.get(table.channel)
             if start is not None and target is not None:
-                travel = abs(target - start) + pad  # µs of pulse
+                travel = abs(target - start) + (0.0 if exact else pad)  # µs of pulse
                 rate = table.max_rate(start, target)
-                needed.append(travel * rate / (joint.max_velocity * speed))
-        time_ms = math.ceil(max(needed) * 1000.0 - 1e-9)
-        if time_ms > self.bus.max_time_ms:
+                needed = max(needed, travel * rate / (joint.max_velocity * speed))
+        if exact and needed > seconds + 1e-3:
             raise InputError(
-                f"this move would take {time_ms / 1000:.1f} s; the {self.bus.name} allows at most "
-                f"{self.bus.max_time_ms / 1000:.1f} s per move; move in smaller steps or faster"
+                f"duration {seconds:.3f} s is too short for the servo tables: this move "
+                f"needs {needed:.3f} s on the {self.bus.name}"
             )
-        return time_ms
+        return math.ceil(max(seconds, needed) * 1000.0 - 1e-9)
 
     def _starts(self) -> tuple[dict[int, float], float]:
         """Where each servo starts from [µs], and how uncertain that is [µs]: the last
-        pulses sent, or, while a move may still be running, the pulses read back."""
-        if time.monotonic() >= self._busy_until:
-            return self._commanded, 0.0
-        read = self.bus.read(self._channels())
-        return {ch: p for ch, p in read.items() if p > 0}, self.bus.read_resolution_us
+        pulses sent, or, while a move may still be running, the pulses read back, each
+        refined to where the move sent should have it now if that agrees with the read."""
+        now = self.clock.now()
+        if now >= self._busy_until:
+            return dict(self._commanded), 0.0
+        read = {ch: p for ch, p in self.bus.read(self._channels()).items() if p > 0}
+        resolution, pad = self.bus.read_resolution_us, 0.0
+        for ch, pulse in read.items():
+            expected = self._expected(ch, now)
+            if expected is not None and abs(expected - pulse) <= resolution:
+                read[ch] = expected
+            else:
+                pad = resolution
+        return read, pad
+
+    def _expected(self, channel: int, now: float) -> float | None:
+        """The pulse [µs] the last move sent should give on ``channel`` at ``now``."""
+        if channel not in self._last:
+            return None
+        start, target, t0, seconds = self._last[channel]
+        if seconds <= 0 or now >= t0 + seconds:
+            return target
+        return start + (target - start) * max(0.0, now - t0) / seconds
 
     def _send(self, pulses: dict[int, float], time_ms: int, wait: bool) -> None:
+        now = self.clock.now()
+        for ch, target in pulses.items():
+            start = self._expected(ch, now) or self._commanded.get(ch, target)
+            self._last[ch] = (start, target, now, time_ms / 1000.0)
         self.bus.move(pulses, time_ms or None)
         self._commanded.update(pulses)
-        self._busy_until = max(self._busy_until, time.monotonic() + time_ms / 1000.0)
+        self._busy_until = max(self._busy_until, now + time_ms / 1000.0)
         if wait:
-            self.bus.wait(self._busy_until - time.monotonic() + WAIT_MARGIN_S)
+            self.clock.sleep(self._busy_until - now)  # nothing to ask before it can be done
+            self.bus.wait(WAIT_MARGIN_S)
+            self.clock.sleep(self.settle_s)
 
     def move_servo(
         self, name: str, pulse_us: float, *, speed: float = 0.5, wait: bool = True
@@ -143,7 +206,11 @@ class ServoArmDriver:
         if not PULSE_MIN_US <= pulse_us <= PULSE_MAX_US:
             raise InputError(f"pulse {pulse_us} µs for {name} is outside 500..2500 µs")
         pulses = {table.channel: float(pulse_us)}
-        time_ms = 0 if table is self.grip_table else self._move_time_ms(pulses, None, speed)
+        starts, pad = self._starts()
+        frac = check_speed(speed)
+        time_ms = 0
+        if table is not self.grip_table:
+            time_ms = self._move_time_ms(pulses, starts, pad, 0.0, False, frac)
         self._send(pulses, time_ms, wait)
 
     def _table(self, name: str) -> ServoCalibration:
@@ -169,6 +236,8 @@ class ServoArmDriver:
 
     def grip(self, width: float) -> None:
         """Set the gripper opening ``width`` [m] through the gripper's table."""
+        check_grip(self.model, width)
+        self._alive()
         if self.grip_table is None:
             raise DeviceError(f"{self.model.name} has no gripper channel on the {self.bus.name}")
         self._send({self.grip_table.channel: self.grip_table.to_pulse(width)}, 0, True)
@@ -190,11 +259,3 @@ class ServoArmDriver:
             self.bus.close()
             if self._on_close:
                 self._on_close()
-
-
-def _check_speed(speed: float | None) -> float:
-    if speed is None:
-        return 1.0
-    if not (math.isfinite(speed) and 0.0 < speed <= 1.0):
-        raise InputError(f"speed must be a fraction of the maximum in (0, 1], got {speed}")
-    return float(speed)

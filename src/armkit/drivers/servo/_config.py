@@ -8,6 +8,8 @@ Maestro falls back to the SSC-32's) gives:
     center_deg    per joint: the joint angle at 1500 µs (default 90, as 002)
     direction     per joint: +1, or -1 for a servo mounted the other way round
     grip_pulse_us [closed, open] gripper pulses [µs] (default [500, 2500])
+    settle_ms     how long the servos take to catch up with their pulses after a move
+                  [ms] (default 100): the controller cannot tell, so a waiting move waits
 
 A unit's measured tables (written by ``run_calibration``) live in
 ``<config dir>/<arm>-<driver>.toml``; the config dir is ``$ARMKIT_CONFIG_DIR``, else
@@ -38,12 +40,14 @@ class ServoSetup:
     Attributes:
         joints: one table per joint, model order.  grip: the gripper's table, or None.
         baudrate: serial speed.  unit_file: the unit's calibration file (it may not exist yet).
+        settle_s: time the servos need to reach their pulses after a move ends [s].
     """
 
     joints: tuple[ServoCalibration, ...]
     grip: ServoCalibration | None
     baudrate: int
     unit_file: Path
+    settle_s: float = 0.1
 
 
 def driver_section(model: ArmModel, driver: str) -> dict[str, Any]:
@@ -68,7 +72,13 @@ def load_setup(model: ArmModel, driver: str) -> ServoSetup:
     unit_file = config_dir() / f"{model.name}-{driver}.toml"
     if unit_file.is_file():
         joints, grip = _apply_unit_file(unit_file, joints, grip)
-    return ServoSetup(joints, grip, int(section.get("baudrate", 9600)), unit_file)
+    settle = section.get("settle_ms", 100)
+    if not isinstance(settle, int | float) or not 0 <= settle <= 2000:
+        raise ModelError(
+            f"{model.name} [drivers.{driver}]: settle_ms must be 0..2000 ms, got {settle!r}"
+        )
+    baudrate = int(section.get("baudrate", 9600))
+    return ServoSetup(joints, grip, baudrate, unit_file, float(settle) / 1000.0)
 
 
 def _per_joint(

@@ -1,74 +1,78 @@
-"""Open a servo arm on an SSC-32 or a Maestro (``port="emu"``: on its emulator)."""
+"""Open a servo arm on an SSC-32 or a Maestro: a serial device path, or an open serial line."""
 
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import TYPE_CHECKING
 
+from ..._clock import Clock
 from ..._errors import DeviceError
+from ...devices._serial import SerialPort
 from ...model import ArmModel
 from ._arm import ServoArmDriver
 from ._bus import MaestroBus, ServoBus, SSC32Bus
 from ._config import ServoSetup, load_setup
 
-if TYPE_CHECKING:
-    from ...sim.ssc32_emulator import PtyEmulator
 
-
-def open_ssc32(model: ArmModel, port: str | None) -> ServoArmDriver:
-    """The servo driver for ``model`` on an SSC-32 at ``port``: a serial device, or
-    ``"emu"`` for an emulator that lives as long as the driver.
+def open_ssc32(
+    model: ArmModel,
+    port: str | SerialPort | None,
+    *,
+    clock: Clock | None = None,
+    on_close: Callable[[], None] | None = None,
+) -> ServoArmDriver:
+    """The servo driver for ``model`` on an SSC-32 at ``port`` (a serial device path, or an
+    open ``SerialPort``: a simulated line). ``clock``: real time unless given.
 
     Raises:
         ModelError: the model's ``[drivers.ssc32]`` section or the unit's file is wrong.
         DeviceError: no port given, pyserial missing, or the board does not answer.
     """
     from ...devices.ssc32 import SSC32
-    from ...sim.ssc32_emulator import SSC32Emulator
 
     setup = load_setup(model, "ssc32")
 
-    def make_bus(path: str) -> ServoBus:
-        return SSC32Bus(SSC32(path, setup.baudrate))
+    def make_bus(line: str | SerialPort) -> ServoBus:
+        return SSC32Bus(SSC32(line, setup.baudrate, clock=clock))
 
-    return _open(model, port, setup, lambda: SSC32Emulator(setup.baudrate), make_bus)
+    return _open(model, port, setup, make_bus, clock, on_close)
 
 
-def open_maestro(model: ArmModel, port: str | None) -> ServoArmDriver:
-    """The servo driver for ``model`` on a Pololu Maestro at ``port`` (or ``"emu"``)."""
+def open_maestro(
+    model: ArmModel,
+    port: str | SerialPort | None,
+    *,
+    clock: Clock | None = None,
+    on_close: Callable[[], None] | None = None,
+) -> ServoArmDriver:
+    """The servo driver for ``model`` on a Pololu Maestro at ``port`` (as ``open_ssc32``)."""
     from ...devices.maestro import Maestro
-    from ...sim.maestro_emulator import MaestroEmulator
 
     setup = load_setup(model, "maestro")
 
-    def make_bus(path: str) -> ServoBus:
-        return MaestroBus(Maestro(path, setup.baudrate))
+    def make_bus(line: str | SerialPort) -> ServoBus:
+        return MaestroBus(Maestro(line, setup.baudrate, clock=clock))
 
-    return _open(model, port, setup, MaestroEmulator, make_bus)
+    return _open(model, port, setup, make_bus, clock, on_close)
 
 
 def _open(
     model: ArmModel,
-    port: str | None,
+    port: str | SerialPort | None,
     setup: ServoSetup,
-    make_emulator: Callable[[], PtyEmulator],
-    make_bus: Callable[[str], ServoBus],
+    make_bus: Callable[[str | SerialPort], ServoBus],
+    clock: Clock | None,
+    on_close: Callable[[], None] | None,
 ) -> ServoArmDriver:
-    """Check everything, start the emulator if asked, open the port, read the servos."""
+    """Check everything, open the port, read the servos."""
     if not port:
         raise DeviceError(
             "this driver needs a port: --port /dev/ttyUSB0 (your controller) or --port emu"
         )
-    emulator = make_emulator() if port == "emu" else None
+    bus = make_bus(port)
     try:
-        bus = make_bus(emulator.port if emulator else port)
-        try:
-            on_close = emulator.close if emulator else None
-            return ServoArmDriver(model, bus, setup.joints, setup.grip, on_close)
-        except BaseException:
-            bus.close()
-            raise
+        return ServoArmDriver(
+            model, bus, setup.joints, setup.grip, on_close, clock, settle_s=setup.settle_s
+        )
     except BaseException:
-        if emulator:
-            emulator.close()
+        bus.close()
         raise

@@ -3,8 +3,6 @@ calibrated timing model and a state file that is never lost (seed 000)."""
 
 from __future__ import annotations
 
-import numpy as np
-
 from ..._clock import Clock as Clock
 from ..._clock import WallClock as WallClock
 from ...model import ArmModel
@@ -24,8 +22,8 @@ from ._timing import TimingModel as TimingModel
 
 __all__ = [
     "ArmState", "Clock", "JointTiming", "MoveReport", "ShortMoveError",
-    "TimedDriver", "TimingModel", "UncertainEstimateWarning", "constant_rate", "default_timing", "load_state",
-    "open_driver", "open_sim_driver", "rehome", "run_calibration", "state_path",
+    "TimedDriver", "TimingModel", "UncertainEstimateWarning", "constant_rate", "default_timing",
+    "load_state", "open_driver", "rehome", "run_calibration", "state_path",
 ]  # fmt: skip
 
 
@@ -36,18 +34,3 @@ def open_driver(model: ArmModel, port: str | None = None) -> TimedDriver:
 
     unit = port or "default"
     return TimedDriver(model, open_device(), WallClock(), state_path(unit), unit)
-
-
-def open_sim_driver(model: ArmModel, port: str | None = None) -> TimedDriver:
-    """The same driver on a simulated arm (simulated clock: moves take no real time).
-    The simulated unit starts where its state file says it is."""
-    from ...devices.owi535 import open_device
-    from ...sim.owi_sim import build_sim
-
-    unit = "sim" if port in (None, "emu") else f"sim-{port}"
-    path = state_path(unit)
-    q0 = load_state(path).angles if path.exists() else None
-    sim = build_sim(model, 0, q0=None if q0 is None else np.array(q0))
-    driver = TimedDriver(model, open_device(sim.backend), sim.clock, path, unit)
-    driver.simulation = sim
-    return driver

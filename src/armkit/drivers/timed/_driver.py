@@ -21,6 +21,7 @@ from ..._clock import Clock
 from ..._errors import ArmkitError, InputError
 from ..._lock import exclusive
 from ...model import ArmModel
+from ...model._limits import check_grip, check_joints, move_time
 from ._config import OwiConfig, default_timing, owi_config
 from ._estimate import MOVING, after_run, pending_of, recovered
 from ._journal import Until, journaled_run, raise_if_watchdog, warn, write
@@ -72,6 +73,7 @@ class TimedDriver:
     def _open(self, model: ArmModel, device: Device, clock: Clock, unit: str) -> None:
         self.warn: Callable[[str], None] = warn
         self._warned = False
+        self._asked: tuple[F64, ArmState] | None = None  # the last goal, and the state after it
         self.motors = Motors(
             device,
             clock,
@@ -107,17 +109,27 @@ class TimedDriver:
         wait: bool = True,
     ) -> None:
         """Turn every joint to ``q`` [rad], shape (4,), one joint at a time in an order that
-        keeps the arm off the table. The OWI's motors have one speed, so ``duration`` and
-        ``speed`` cannot change it; moves always block. Joints within the 200 ms
-        resolution stay where they are.
+        keeps the arm off the table. ``duration`` and ``speed`` are checked by the shared
+        rule (``armkit.model._limits.move_time``) but cannot change the OWI's one motor
+        speed; moves always block. Joints within the 200 ms resolution stay where they are.
 
         Raises:
-            JointLimitError: a target is outside the unit's limits (nothing moves).
+            JointLimitError: a target is outside the model's or the unit's limits (nothing moves).
+            ValueError: a bad speed or a duration too short for the joints' speed limits.
             UnreachableError: every order would sweep the arm through the table.
         """
-        if speed is not None and not 0.0 < speed <= 1.0:
-            raise InputError(f"speed must be in (0, 1], got {speed:g}")
-        self.move_report(np.asarray(q, dtype=float))
+        goal = check_joints(self.model, q)
+        move_time(self.model, self._start(), goal, speed=speed, duration=duration)
+        self.move_report(goal)
+        self._asked = (goal, self.state)
+
+    def _start(self) -> F64:
+        """Where a move starts for the timing rule [rad]: the angles the last move was
+        asked for, while nothing has changed since (a joint within the resolution stays
+        where it is, so a stream of small steps is timed step by step), else the estimate."""
+        if self._asked is not None and self._asked[1] is self.state:
+            return self._asked[0]
+        return self.read()
 
     def move_report(self, q: F64, *, table: bool = True) -> MoveReport:
         """:meth:`move`, returning what was done (steps, and notes on joints already
@@ -168,6 +180,7 @@ class TimedDriver:
 
     def grip(self, width: float) -> None:
         """Open (``width`` [m] over half the gripper's range) or close the gripper."""
+        check_grip(self.model, width)
         self.open_gripper(width > (self.model.gripper.width_min + self.model.gripper.width_max) / 2)
 
     def stop(self) -> None:

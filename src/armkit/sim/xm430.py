@@ -1,11 +1,23 @@
-"""One emulated XM430-W350: its control-table memory and its motion profile.
+"""One simulated XM430-W350: its control-table memory and its motion profile.
 
-Motion is evaluated lazily from a clock (no ticking thread): every read of the
-present-state registers computes where the trapezoidal profile has the servo
-now. Velocity-based profile: Profile Velocity [0.229 rev/min] and Profile
+The control table is data (``armkit.devices._xm430``: address, size, sign,
+access, factory default per register), so a register the manual adds is one
+row there. The profile is evaluated from a clock, lazily: every read of the
+present-state registers computes where the trapezoid has the servo now.
+Velocity-based profile: Profile Velocity [0.229 rev/min] and Profile
 Acceleration [214.577 rev/min^2] (0 = Velocity Limit, instant ramp).
 Time-based profile (Drive Mode bit 2): Profile Velocity = total time [ms],
 Profile Acceleration = ramp time [ms], clipped to half the total.
+
+On an arm (``feedback`` set), Present Position/Velocity are what the servo's
+shaft really does (``_servo_body``: lag, speed cap); alone (``armkit emulate``)
+they follow the profile exactly. Goal Position is limited by Min/Max Position
+Limit in position mode and to +-1,048,575 in extended position mode.
+
+Known differences from the real servo (issue 11, point 5: the next step):
+Moving Status bits, Realtime Tick, the trajectory registers, Homing Offset,
+per-mode Goal Velocity/Current limits, Status Return Level, Secondary ID,
+feed-forward gains and the indirect address/data areas.
 """
 
 from __future__ import annotations
@@ -20,6 +32,8 @@ from ..devices import _xm430 as xm
 _TICKS_PER_S_PER_UNIT = xm.VELOCITY_UNIT_RPM * xm.TICKS_PER_TURN / 60.0
 _TICKS_PER_S2_PER_UNIT = xm.ACCELERATION_UNIT_RPM2 * xm.TICKS_PER_TURN / 3600.0
 LIMIT_ERROR, ACCESS_ERROR = 6, 7
+EXTENDED_LIMIT = 1_048_575  # Goal Position range in extended position mode [tick]
+_TORQUE_ENABLE = xm.register("Torque Enable").address
 
 
 @dataclass(frozen=True, slots=True)
@@ -65,7 +79,11 @@ def velocity_profile_times(distance: float, velocity: float, accel: float) -> tu
 
 
 class Servo:
-    """One emulated XM430-W350: control-table memory plus a lazily evaluated profile."""
+    """One simulated XM430-W350: control-table memory plus a lazily evaluated profile.
+
+    Args:
+        servo_id: its ID.  clock: its time [s].  position: where it starts [tick].
+    """
 
     def __init__(self, servo_id: int, clock: Callable[[], float], position: int = 2048) -> None:
         self.memory = bytearray(xm.CONTROL_TABLE_SIZE)
@@ -74,8 +92,10 @@ class Servo:
         self._clock = clock
         self.profile = Profile(float(position), 0.0, clock())
         self.plans = 0  # how many moves were started (a re-sent goal must not add one)
+        self.feedback: Callable[[], tuple[float, float]] | None = None  # (tick, tick/s)
         self.set("ID", servo_id)
         self.set("Goal Position", position)
+        self.set("Present Position", position)
 
     def get(self, name: str) -> int:
         """Register value, refreshed from the motion first."""
@@ -87,22 +107,46 @@ class Servo:
         reg = xm.register(name)
         self.memory[reg.address : reg.address + reg.size] = reg.encode(value)
 
+    def value(self, name: str) -> int:
+        """Register value as stored (no refresh)."""
+        reg = xm.register(name)
+        return reg.decode(self.memory[reg.address : reg.address + reg.size])
+
     def read(self, address: int, size: int) -> bytes:
         """``size`` bytes from ``address`` after updating the present-state registers."""
-        position, velocity = self.profile.at(self._clock())
+        now = self._clock()
+        running = now < self.profile.t0 + self.profile.total
+        if self.feedback is not None:
+            position, velocity = self.feedback()
+        else:
+            position, velocity = self.profile.at(now)
         units = velocity / _TICKS_PER_S_PER_UNIT
         self.set("Present Position", round(position))
         self.set("Present Velocity", round(units))
         self.set("Present Current", round(0.5 * units))
-        self.set("Moving", int(self._clock() < self.profile.t0 + self.profile.total))
+        moving = running or abs(units) > self.value("Moving Threshold")
+        self.set("Moving", int(moving))
         return bytes(self.memory[address : address + size])
+
+    def setpoint(self, now: float) -> float | None:
+        """Where the profile asks the motor to be at ``now`` [tick]; None with torque off."""
+        if not self.memory[_TORQUE_ENABLE]:
+            return None
+        profile = self.profile
+        if now >= profile.t0 + profile.total:
+            return profile.start + profile.distance
+        return profile.at(now)[0]
+
+    def busy(self, now: float) -> bool:
+        """True while the profile is running."""
+        return now < self.profile.t0 + self.profile.total
 
     def write(self, address: int, data: bytes) -> int:
         """WRITE as the firmware does it; returns the status error number (0 = ok)."""
         regs = [r for r in xm.XM430_W350.values() if address <= r.address < address + len(data)]
         if not regs or any(not r.writable for r in regs):
             return ACCESS_ERROR
-        if self.get("Torque Enable") and any(r.eeprom for r in regs):
+        if self.value("Torque Enable") and any(r.eeprom for r in regs):
             return ACCESS_ERROR
         if any(r.name == "Goal Position" for r in regs) and not self._in_limits(data, address):
             return LIMIT_ERROR
@@ -115,7 +159,9 @@ class Servo:
         goal = xm.register("Goal Position")
         offset = goal.address - address
         value = goal.decode(data[offset : offset + goal.size])
-        return self.get("Min Position Limit") <= value <= self.get("Max Position Limit")
+        if self.value("Operating Mode") == xm.MODE_EXTENDED_POSITION:
+            return -EXTENDED_LIMIT <= value <= EXTENDED_LIMIT
+        return self.value("Min Position Limit") <= value <= self.value("Max Position Limit")
 
     def _apply(self, reg: xm.Register, value: int) -> None:
         if reg.name == "Torque Enable":
@@ -128,13 +174,13 @@ class Servo:
 
     def _torque(self, on: bool) -> None:
         present = self.get("Present Position")
-        on = on and not self.get("Hardware Error Status")
+        on = on and not self.value("Hardware Error Status")
         self.profile = Profile(float(present), 0.0, self._clock())
         self.set("Goal Position", present)
         self.set("Torque Enable", int(on))
 
     def _plan(self, goal: int) -> None:
-        if not self.get("Torque Enable"):
+        if not self.value("Torque Enable"):
             return
         now = self._clock()
         start, _ = self.profile.at(now)
@@ -146,12 +192,12 @@ class Servo:
         self.plans += 1
 
     def _times(self, distance: float) -> tuple[float, float]:
-        pv, pa = self.get("Profile Velocity"), self.get("Profile Acceleration")
-        if self.get("Drive Mode") & xm.DRIVE_MODE_TIME_BASED:
+        pv, pa = self.value("Profile Velocity"), self.value("Profile Acceleration")
+        if self.value("Drive Mode") & xm.DRIVE_MODE_TIME_BASED:
             if pv > 0:
                 return min(pa, pv / 2) / 1000.0, pv / 1000.0
             pa = 0
-        velocity = (pv or self.get("Velocity Limit")) * _TICKS_PER_S_PER_UNIT
+        velocity = (pv or self.value("Velocity Limit")) * _TICKS_PER_S_PER_UNIT
         accel = pa * _TICKS_PER_S2_PER_UNIT if pa else math.inf
         return velocity_profile_times(distance, velocity, accel)
 
@@ -168,4 +214,4 @@ class Servo:
     @property
     def error_bits(self) -> int:
         """The alert bit for every status while a hardware error is latched."""
-        return pkt.ALERT_BIT if self.get("Hardware Error Status") else 0
+        return pkt.ALERT_BIT if self.value("Hardware Error Status") else 0

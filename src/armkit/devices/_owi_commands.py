@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-from ..._errors import InputError
+from .._errors import InputError
 
 # (motor, direction) -> bit in byte 0
 BYTE0_FLAGS: dict[tuple[str, int], int] = {

@@ -1,0 +1,75 @@
+"""``armkit emulate``: a simulated controller on a pseudo-terminal, for any program to open."""
+
+from __future__ import annotations
+
+import argparse
+import signal
+import sys
+import threading
+from types import FrameType
+from typing import Any
+
+from ..connect import emulate
+from ..model import load_model
+
+KINDS = {"ssc32": "an SSC-32U", "maestro": "a Pololu Maestro", "dynamixel": "a Dynamixel bus"}
+
+EPILOG = """\
+The first line printed is the pseudo-terminal's path (say /dev/pts/7); open it like a
+serial port, from armkit itself (--port /dev/pts/7 with --driver ssc32, maestro or
+dynamixel) or from any program:
+
+  armkit emulate ssc32 --arm lynx6 &
+  python -c "import serial; s = serial.Serial('/dev/pts/7', 9600); s.write(b'VER\\r')"
+
+The device runs in real time until Ctrl-C (or SIGTERM). Without --arm it is a lone
+controller: an SSC-32 at 9600 baud, a Maestro, or the OpenManipulator-X's five XM430
+servos (IDs 11..15) at 1,000,000 baud.
+"""
+
+
+def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
+    """Add ``emulate``."""
+    p = sub.add_parser(
+        "emulate",
+        help="serve a simulated SSC-32, Maestro or Dynamixel bus on a pseudo-terminal",
+        description="Start a simulated controller on a pseudo-terminal, print its path and "
+        "serve until Ctrl-C, so any program or library (pyserial, the dynamixel-sdk, "
+        "armkit itself with --port PATH) can talk to it as to the hardware.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("kind", choices=list(KINDS), help="which controller to emulate")
+    p.add_argument(
+        "--arm",
+        dest="emulate_arm",
+        metavar="NAME|FILE",
+        help="drive this arm's simulated servos (its channels, IDs, baud rate; default none)",
+    )
+    p.set_defaults(func=run_emulate)
+
+
+def run_emulate(args: argparse.Namespace) -> int:
+    """Serve until interrupted; the path goes to stdout, the rest to stderr."""
+    model = load_model(args.emulate_arm) if args.emulate_arm else None
+    emulator = emulate(args.kind, model)
+    done = threading.Event()
+    previous = signal.signal(signal.SIGTERM, lambda n, f: _stop(done, n, f))
+    try:
+        what = KINDS[args.kind] + (f" driving the {model.name}" if model else "")
+        try:
+            print(emulator.port, flush=True)
+            print(f"armkit: {what} on {emulator.port}; Ctrl-C to stop", file=sys.stderr, flush=True)
+            while not done.wait(0.5):
+                pass
+        except KeyboardInterrupt:
+            pass  # Ctrl-C is how an emulator ends
+        print("armkit: emulator stopped", file=sys.stderr)
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+        emulator.close()
+    return 0
+
+
+def _stop(done: threading.Event, signum: int, frame: FrameType | None) -> None:
+    done.set()

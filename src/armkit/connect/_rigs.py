@@ -1,0 +1,85 @@
+"""Simulated controllers wired to simulated arms: the device, its mounts, its world.
+
+What only the factory knows, it says here: which channel or servo turns which
+joint, taken from the driver's own calibration (the pulse tables of an SSC-32
+or a Maestro, the tick mapping of a Dynamixel bus), so the simulated servos
+answer the driver exactly as a unit calibrated like the model would.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..drivers.dynamixel import calibration_points
+from ..drivers.servo._config import load_setup
+from ..model import ArmModel, DynamixelSection, dynamixel_section
+from ..sim import SimArm, Truth, World
+from ..sim._assemble import add_servo_arm
+from ..sim._outbox import ByteDevice
+from ..sim._servo_body import GRIPPER, Mount
+from ..sim.dynamixel import SimDynamixelBus
+from ..sim.maestro import SimMaestro
+from ..sim.ssc32 import SimSSC32
+
+GENERIC_BAUD = 1_000_000
+
+
+@dataclass
+class Rig:
+    """A simulated controller (``device``) driving ``arm`` (None: a lone controller)."""
+
+    device: ByteDevice
+    arm: SimArm | None
+    baudrate: int
+    config: DynamixelSection | None = None  # the Dynamixel setup used
+
+
+def generic_config(model: ArmModel) -> DynamixelSection:
+    """The generic bus's setup: servo IDs 1..dof, the gripper next, extended position mode."""
+    return DynamixelSection(
+        ids=tuple(range(1, model.dof + 1)),
+        gripper_id=model.dof + 1,
+        baudrate=GENERIC_BAUD,
+        gripper_ticks=(1024, 3072),
+        operating_mode="extended",
+    )
+
+
+def servo_rig(model: ArmModel, world: World, kind: str, truth: Truth | None) -> Rig:
+    """An SSC-32 (``kind="ssc32"``) or a Maestro driving ``model``'s servos through the
+    model's pulse tables (and the unit's calibration file, if there is one)."""
+    setup = load_setup(model, kind)
+    device = SimSSC32(setup.baudrate) if kind == "ssc32" else SimMaestro()
+    tables = list(enumerate(setup.joints))
+    if setup.grip is not None:
+        tables.append((GRIPPER, setup.grip))
+    mounts = [Mount(t.channel, j, t.pulses_us, t.values) for j, t in tables]
+    arm = add_servo_arm(world, model, device, mounts, truth=truth)
+    arm.device = device
+    if isinstance(device, SimSSC32):
+        device.analog = arm.analog  # VA..VD read the arm's analog inputs
+    return Rig(device, arm, setup.baudrate)
+
+
+def dynamixel_rig(
+    model: ArmModel, world: World, truth: Truth | None, config: DynamixelSection | None = None
+) -> Rig:
+    """XM430s on a Dynamixel bus driving ``model``'s joints and gripper, set up by its
+    ``[drivers.dynamixel]`` table (or ``config``)."""
+    cfg = config if config is not None else dynamixel_section(model)
+    points = calibration_points(model, cfg)
+    device = SimDynamixelBus([sid for sid, *_ in points], clock=world.now)
+    mounts = [Mount(sid, joint, ticks, values) for sid, joint, ticks, values in points]
+    arm = add_servo_arm(world, model, device, mounts, truth=truth)
+    arm.device = device
+    return Rig(device, arm, cfg.baudrate, cfg)
+
+
+def lone_rig(kind: str, world: World) -> Rig:
+    """A controller with no arm on it: an SSC-32 at 9600 baud, a Maestro, or the
+    OpenManipulator-X's five XM430s (IDs 11..15) at 1,000,000 baud."""
+    if kind == "ssc32":
+        return Rig(SimSSC32(9600), None, 9600)
+    if kind == "maestro":
+        return Rig(SimMaestro(), None, 9600)
+    return Rig(SimDynamixelBus(clock=world.now), None, GENERIC_BAUD)

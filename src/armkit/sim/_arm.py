@@ -1,0 +1,119 @@
+"""``SimArm``: the truth about one simulated arm, and the physics behind it (its ``Body``)."""
+
+from __future__ import annotations
+
+import contextlib
+import threading
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Protocol
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..model import ArmModel
+from ._recording import Recorder, Recording
+
+F64 = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Truth:
+    """What a simulated arm really is, as kept between processes.
+
+    Attributes:
+        q: joint angles [rad], shape (dof,).  grip: gripper opening [m].
+        motor_s: motor-seconds used since the batteries were new (the OWI's fade), [s].
+    """
+
+    q: tuple[float, ...]
+    grip: float
+    motor_s: float = 0.0
+
+
+class Body(Protocol):
+    """The physics of one arm: servos behind a controller, or the OWI's motors."""
+
+    def step(self, t: float, dt: float) -> None:
+        """Integrate from ``t - dt`` to ``t`` [s]."""
+        ...
+
+    def q(self) -> F64:
+        """True joint angles now [rad], shape (dof,) (a view: copy it to keep it)."""
+        ...
+
+    def grip(self) -> float:
+        """True gripper opening now [m]."""
+        ...
+
+    def grip_stop(self, width: float | None) -> None:
+        """Stop the closing jaws at ``width`` [m] (an object between them); None: free."""
+        ...
+
+    def at_rest(self) -> bool:
+        """True when nothing is moving or about to move (every servo at its setpoint)."""
+        ...
+
+    def truth(self) -> Truth:
+        """The state to keep between processes."""
+        ...
+
+
+class SimArm:
+    """The truth about one simulated arm (see ``armkit.sim``'s module doc).
+
+    Attributes:
+        model: the arm.  name: its name in its world (unique there).
+        device: the simulated controller driving it (``ssc32.SimSSC32``, ``maestro.SimMaestro``,
+            ``dynamixel.SimDynamixelBus``, ``owi535.SimOwiUsb``): for tests and tools that
+            inject faults or read what it received.
+        analog: analog input channel -> function giving volts (0..5 V). On a Lynx6 these
+            are the SSC-32's VA..VD (channels 0..3); elsewhere a serial ADC board's
+            channels. A distance sensor installs its function here.
+    """
+
+    def __init__(self, model: ArmModel, body: Body, name: str | None = None) -> None:
+        self.model, self.name = model, name or model.name
+        self.body = body
+        self.device: object | None = None  # the simulated controller driving it (tests, tools)
+        self.analog: dict[int, Callable[[], float]] = {}
+        self._lock: contextlib.AbstractContextManager[object] = threading.RLock()
+        self._recorder = Recorder(model.joint_names, 2)
+
+    def join(self, lock: contextlib.AbstractContextManager[object], rows: int, now: float) -> None:
+        """Called by ``World.add_arm``: share the world's ``lock``, keep ``rows`` samples of
+        recording, the first at ``now`` [s]."""
+        self._lock = lock
+        self._recorder = Recorder(self.model.joint_names, rows)
+        self._recorder.add(now, self.body.q())
+
+    def q(self) -> F64:
+        """True joint angles [rad], shape (dof,)."""
+        with self._lock:
+            return np.array(self.body.q(), dtype=np.float64)
+
+    def grip(self) -> float:
+        """True gripper opening [m]."""
+        with self._lock:
+            return float(self.body.grip())
+
+    def grip_stop(self, width: float | None) -> None:
+        """The scene calls this when the jaws close on an object of ``width`` [m]: the
+        simulated gripper stops there (None: no obstacle)."""
+        with self._lock:
+            self.body.grip_stop(width)
+
+    def at_rest(self) -> bool:
+        """True when every joint and the gripper have settled."""
+        with self._lock:
+            return self.body.at_rest()
+
+    def recording(self) -> Recording:
+        """True joint angles, one sample per step (bounded: the world's ``record_s``)."""
+        with self._lock:
+            return self._recorder.recording()
+
+    def step(self, t: float, dt: float) -> None:
+        """One simulation step (the world calls this, holding its lock)."""
+        self.body.step(t, dt)
+        self._recorder.add(t, self.body.q())

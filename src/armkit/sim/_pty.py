@@ -1,0 +1,94 @@
+"""The one pseudo-terminal server: any simulated byte device, served where any program can open it.
+
+``PtyServer(device, world)`` opens a pseudo-terminal and serves its master side
+from a background thread; ``.port`` is the slave side's path. Any client that
+opens a serial port by path (pyserial, the official dynamixel-sdk, a terminal
+program) talks to the device as to real hardware on a USB-serial adapter.
+Bytes reach the device at the world's time and replies are written when due.
+The client lives in real time, so the world should too (``World(realtime=True)``).
+Like the hardware, the device ignores a client set to another baud rate.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import select
+import termios
+import threading
+import tty
+from typing import Self
+
+from ._outbox import ByteDevice
+from ._world import World
+
+
+class PtyServer:
+    """``device`` on a pseudo-terminal (see module doc). Attributes: ``port`` (the path to
+    open), ``misheard`` (bytes sent at the wrong baud rate)."""
+
+    def __init__(self, device: ByteDevice, world: World) -> None:
+        self.device, self.world = device, world
+        self.misheard = 0
+        self._master, self._slave = os.openpty()
+        tty.setraw(self._slave)
+        os.set_blocking(self._master, False)
+        self.port = os.ttyname(self._slave)
+        self._wake_r, self._wake_w = os.pipe()
+        self._running = True
+        self._thread = threading.Thread(target=self._serve, name=f"{device.name}-pty", daemon=True)
+        self._thread.start()
+
+    def _serve(self) -> None:
+        while self._running:
+            ready, _, _ = select.select([self._master, self._wake_r], [], [], self._wait_s())
+            if self._master in ready:
+                self._receive()
+            self._send_due()
+
+    def _wait_s(self) -> float:
+        with self.world.lock:
+            due = self.device.outbox.next_due()
+            now = self.world.now()
+        return 0.5 if due is None else max(0.0, (due - now) / self.world.pace)
+
+    def _receive(self) -> None:
+        try:
+            data = os.read(self._master, 4096)
+        except OSError:
+            return
+        if not self._baud_matches():
+            self.misheard += len(data)
+            return
+        with self.world.lock:
+            self.device.receive(data, self.world.now())
+
+    def _baud_matches(self) -> bool:
+        wanted = self.device.baudrate
+        if wanted is None:
+            return True
+        speed = termios.tcgetattr(self._slave)[5]
+        return bool(speed == getattr(termios, f"B{wanted}", None))
+
+    def _send_due(self) -> None:
+        with self.world.lock:
+            data = self.device.outbox.take(self.world.now())
+        if data:
+            with contextlib.suppress(OSError):  # nobody reading: lost, as on a real line
+                os.write(self._master, data)
+
+    def close(self) -> None:
+        """Stop serving and close the pseudo-terminal. Safe to call twice."""
+        if not self._running:
+            return
+        self._running = False
+        os.write(self._wake_w, b"x")
+        self._thread.join(timeout=2.0)
+        for fd in (self._master, self._slave, self._wake_r, self._wake_w):
+            os.close(fd)
+
+    def __enter__(self) -> Self:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()

@@ -1,0 +1,76 @@
+"""A simulated arm's record of true joint angles: one sample per step, in bounded memory."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+from numpy.typing import NDArray
+
+F64 = NDArray[np.float64]
+_FIRST_ROWS = 4096  # the buffer starts this small and doubles up to its capacity
+
+
+@dataclass(frozen=True)
+class Recording:
+    """True joint angles sampled once per simulation step.
+
+    Attributes:
+        joint_names: the joints, in model order.
+        t: sample times [s], shape (N,), increasing.
+        q: true joint angles [rad], shape (N, dof).
+    """
+
+    joint_names: tuple[str, ...]
+    t: F64
+    q: F64
+
+    def between(self, t0: float, t1: float) -> Recording:
+        """The samples with t0 <= t <= t1 [s]."""
+        keep = (self.t >= t0 - 1e-9) & (self.t <= t1 + 1e-9)
+        return Recording(self.joint_names, self.t[keep], self.q[keep])
+
+    def write_csv(self, path: str | Path) -> int:
+        """Write ``t_s,<joint>_deg,...`` and one row per sample; returns the row count."""
+        header = ",".join(["t_s", *(f"{n}_deg" for n in self.joint_names)])
+        table = np.column_stack([self.t, np.degrees(self.q)])
+        np.savetxt(Path(path), table, fmt="%.6f", delimiter=",", header=header, comments="")
+        return int(table.shape[0])
+
+
+class Recorder:
+    """A ring buffer of (t, q) samples holding at most ``capacity`` rows (the oldest go)."""
+
+    def __init__(self, joint_names: tuple[str, ...], capacity: int) -> None:
+        self.joint_names, self.capacity = joint_names, max(2, capacity)
+        rows = min(self.capacity, _FIRST_ROWS)
+        self._t = np.zeros(rows)
+        self._q = np.zeros((rows, len(joint_names)))
+        self._count = 0  # samples ever added
+
+    def add(self, t: float, q: F64) -> None:
+        """Append the sample at time ``t`` [s], angles ``q`` [rad], shape (dof,)."""
+        rows = self._t.shape[0]
+        if self._count == rows and rows < self.capacity:
+            self._grow(min(self.capacity, 2 * rows))
+            rows = self._t.shape[0]
+        i = self._count % rows
+        self._t[i] = t
+        self._q[i] = q
+        self._count += 1
+
+    def _grow(self, rows: int) -> None:
+        t, q = np.zeros(rows), np.zeros((rows, self._q.shape[1]))
+        t[: self._count], q[: self._count] = self._t, self._q
+        self._t, self._q = t, q
+
+    def recording(self) -> Recording:
+        """The samples kept, oldest first (copies)."""
+        rows = self._t.shape[0]
+        if self._count <= rows:
+            t, q = self._t[: self._count].copy(), self._q[: self._count].copy()
+        else:
+            order = np.roll(np.arange(rows), -(self._count % rows))
+            t, q = self._t[order], self._q[order]
+        return Recording(self.joint_names, t, q)

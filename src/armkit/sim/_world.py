@@ -1,0 +1,248 @@
+"""The simulation world: one clock, every simulated device on it, the truth about each arm.
+
+A ``World`` is THE place where a simulated arm's true state lives, and the one
+hook for everything that needs it: a scene's physics (grasping, settling), a
+distance sensor (``SimArm.analog``), contact detection for music, the pen
+trace of a drawing and the 3D viewer are ``Observer``s (called after every
+simulation step) or readers of ``SimArm.q()``/``grip()`` and
+``World.recording()``.
+
+Time is the world's own. In the default mode it is virtual: nothing happens
+until somebody waits on ``world.clock`` (a driver polling its device, a
+streamer between waypoints), and waiting runs the simulation forward, faster
+than real time. The clock is exact (``sleep(0.0123)`` moves it by exactly that);
+the arms are stepped at every multiple of ``1 / rate_hz`` s it passes (their
+recordings are on that grid). With
+``realtime=True`` the world is paced to the wall clock instead (for the
+viewer, for music): a background thread steps it as wall time passes, and
+``clock.sleep`` really waits. Observers must be cheap: they run at
+``rate_hz`` of simulated time; one that needs 30 Hz checks the time itself.
+
+Every method is thread-safe (``world.lock``, re-entrant, guards all state).
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+import time
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Protocol
+
+from .._errors import ArmkitError
+
+if TYPE_CHECKING:
+    from ._arm import SimArm
+    from ._recording import Recording
+
+
+class Observer(Protocol):
+    """Something that watches the world: called after every simulation step."""
+
+    def on_step(self, world: World, t: float) -> None:
+        """The world has just stepped to time ``t`` [s]; read it, or change the scene."""
+        ...
+
+
+class WorldClock:
+    """The world's time as an ``armkit._clock.Clock``: ``sleep`` advances the simulation
+    (virtual mode) or waits for the wall clock while the world keeps pace (real time)."""
+
+    def __init__(self, world: World) -> None:
+        self.world = world
+
+    def now(self) -> float:
+        """Simulated time [s] since the world was made."""
+        return self.world.now()
+
+    def sleep(self, seconds: float) -> None:
+        """Let ``seconds`` [s] of simulated time pass (rounded up to whole steps)."""
+        self.world.advance(seconds)
+
+
+class World:
+    """Virtual time, every simulated device on it, and the true state of each arm.
+
+    Args:
+        realtime: pace the simulation to the wall clock (see the module doc).
+        rate_hz: simulation steps per simulated second (also the recording rate).
+        pace: in real-time mode, simulated seconds per wall second (1 = real time).
+        record_s: how many seconds of simulated time each arm's recording keeps [s].
+    """
+
+    def __init__(
+        self,
+        *,
+        realtime: bool = False,
+        rate_hz: float = 1000.0,
+        pace: float = 1.0,
+        record_s: float = 120.0,
+    ) -> None:
+        if not (math.isfinite(rate_hz) and 1.0 <= rate_hz <= 100_000.0):
+            raise ValueError(f"rate_hz must be 1..100000 steps per second, got {rate_hz!r}")
+        if not (math.isfinite(pace) and pace > 0) or not (math.isfinite(record_s) and record_s > 0):
+            raise ValueError(f"pace and record_s must be > 0, got {pace!r}, {record_s!r}")
+        self.realtime, self.rate_hz, self.pace = realtime, float(rate_hz), float(pace)
+        self.dt = 1.0 / self.rate_hz
+        self.record_rows = max(2, round(record_s * self.rate_hz))
+        self.lock = threading.RLock()
+        self.clock = WorldClock(self)
+        self._t = 0.0  # the clock [s]
+        self._steps = 0  # grid steps done: the arms are at time _steps * dt <= _t
+        self._in_step = False
+        self._arms: dict[str, SimArm] = {}
+        self._observers: list[Observer] = []
+        self._closers: list[Callable[[], None]] = []
+        self._wall0 = time.monotonic()
+        self._running = realtime
+        self._pacer: threading.Thread | None = None  # started with the first arm or observer
+
+    # -- time ---------------------------------------------------------------
+    def now(self) -> float:
+        """Simulated seconds since the world was made."""
+        with self.lock:
+            if self.realtime and not self._in_step:
+                self._catch_up()
+            return self._t
+
+    def advance(self, seconds: float) -> None:
+        """Run the simulation for ``seconds`` [s] of simulated time (nothing for
+        seconds <= 0). In real-time mode this waits as long."""
+        if not seconds > 0:
+            return
+        if self.realtime:
+            self._wait_until(self.now() + seconds)
+            return
+        with self.lock:
+            self._run_to(self._t + seconds)
+
+    # -- arms and observers ----------------------------------------------------
+    def arms(self) -> tuple[SimArm, ...]:
+        """Every simulated arm, in the order they were added."""
+        with self.lock:
+            return tuple(self._arms.values())
+
+    def arm(self, name: str | None = None) -> SimArm:
+        """The arm called ``name``; None: the only arm (ArmkitError if there are 0 or several)."""
+        with self.lock:
+            if name is None and len(self._arms) == 1:
+                return next(iter(self._arms.values()))
+            if name is not None and name in self._arms:
+                return self._arms[name]
+            names = ", ".join(self._arms) or "none yet"
+            asked = "single arm" if name is None else f"arm {name!r}"
+            raise ArmkitError(f"this world has no {asked} to pick; its arms: {names}")
+
+    def add_arm(self, arm: SimArm) -> SimArm:
+        """Put ``arm`` in this world (the factory does this when it opens a simulated
+        device); its name must be new. Returns it."""
+        with self.lock:
+            if arm.name in self._arms:
+                raise ArmkitError(f"this world already has an arm called {arm.name!r}")
+            arm.join(self.lock, self.record_rows, self.now())
+            self._arms[arm.name] = arm
+            self._start_pacing()
+        return arm
+
+    def remove_arm(self, name: str) -> None:
+        """Take the arm called ``name`` out of this world (its device failed to open)."""
+        with self.lock:
+            self._arms.pop(name, None)
+
+    def unique_name(self, name: str) -> str:
+        """``name``, or ``name-2``, ``name-3``, ... if an arm of that name is already here."""
+        with self.lock:
+            k, found = 1, name
+            while found in self._arms:
+                k += 1
+                found = f"{name}-{k}"
+            return found
+
+    def attach(self, observer: Observer) -> Callable[[], None]:
+        """Call ``observer.on_step(world, t)`` after every step; returns ``detach()``."""
+        with self.lock:
+            self._observers.append(observer)
+            self._start_pacing()
+
+        def detach() -> None:
+            with self.lock:
+                if observer in self._observers:
+                    self._observers.remove(observer)
+
+        return detach
+
+    def recording(self, name: str | None = None) -> Recording:
+        """The true joint angles of arm ``name`` (None: the only arm), one sample per step
+        for the last ``record_s`` seconds."""
+        return self.arm(name).recording()
+
+    def on_close(self, action: Callable[[], None]) -> None:
+        """Run ``action`` (once) when the world is closed."""
+        with self.lock:
+            self._closers.append(action)
+
+    def close(self) -> None:
+        """Stop pacing (real-time mode) and run the close actions. Safe to call twice."""
+        self._running = False
+        if self._pacer is not None and self._pacer is not threading.current_thread():
+            self._pacer.join(timeout=1.0)
+        with self.lock:
+            closers, self._closers = self._closers, []
+        for action in closers:
+            action()
+
+    def _start_pacing(self) -> None:
+        """In real-time mode, start the thread that steps the world (once, and only when
+        there is something to step: a world of lone devices needs no thread)."""
+        if self._running and self._pacer is None:
+            self._pacer = threading.Thread(target=self._pace, name="armkit-world", daemon=True)
+            self._pacer.start()
+
+    # -- stepping -----------------------------------------------------------------
+    def _step(self, count: int) -> None:
+        """``count`` steps of every arm and observer (the caller holds the lock)."""
+        if not self._arms and not self._observers:
+            self._steps += count  # nothing to integrate: jump
+            return
+        arms, observers, dt = tuple(self._arms.values()), tuple(self._observers), self.dt
+        self._in_step = True
+        try:
+            for _ in range(count):
+                self._steps += 1
+                t = self._steps * dt
+                for arm in arms:
+                    arm.step(t, dt)
+                for observer in observers:
+                    observer.on_step(self, t)
+        finally:
+            self._in_step = False
+
+    def _run_to(self, t: float) -> None:
+        """Move the clock to ``t`` [s] and step the arms over every grid time up to it."""
+        self._t = max(self._t, t)
+        due = math.floor(self._t * self.rate_hz + 1e-9)
+        if due > self._steps:
+            self._step(due - self._steps)
+
+    def _catch_up(self) -> None:
+        self._run_to((time.monotonic() - self._wall0) * self.pace)
+
+    def _wait_until(self, t: float) -> None:
+        wall = self._wall0 + t / self.pace
+        time.sleep(max(0.0, wall - time.monotonic()))
+        with self.lock:
+            self._catch_up()
+            self._run_to(t)
+
+    def _pace(self) -> None:
+        """The real-time thread: step the world as the wall clock passes."""
+        while self._running:
+            with self.lock:
+                self._catch_up()
+                busy = bool(self._arms or self._observers)
+            step_wall = 1.0 / (self.rate_hz * self.pace)
+            if not busy:
+                time.sleep(0.01)
+                continue
+            next_due = self._wall0 + (self._steps + 1) * step_wall
+            time.sleep(max(0.0, next_due - time.monotonic()))
