@@ -36,16 +36,19 @@ Ways = Callable[[float, float, float, Q], "tuple[tuple[float, float], ...] | Rea
 NearestPitch = Callable[[float, float, float, float, float], "float | None"]
 
 
-def fit(v: float, lo: float, hi: float, j: int, misses: Misses | None) -> float | None:
-    """v [rad] (outside [lo, hi]) moved by whole turns into [lo, hi] and clamped to it, or
-    None (recorded in ``misses``: joint j's angle at the turn nearest its range)."""
+def fit(v: float, lo: float, hi: float) -> float | None:
+    """v [rad] moved by whole turns into [lo, hi] and clamped to it (within ``_SLACK``), or
+    None. ``solve`` has it inline."""
     w = v - _TWO_PI * math.floor((v - lo + _SLACK) / _TWO_PI)
-    if w <= hi + _SLACK:
-        return lo if w < lo else (hi if w > hi else w)
+    return (lo if w < lo else (hi if w > hi else w)) if w <= hi + _SLACK else None
+
+
+def miss(v: float, lo: float, hi: float, j: int, misses: Misses | None) -> None:
+    """Record in ``misses`` (if any) that joint j's angle v [rad] cannot turn into [lo, hi]:
+    its excess and its value at the turn nearest the range."""
     if misses is not None:
         near = 0.5 * (lo + hi) + math.remainder(v - 0.5 * (lo + hi), _TWO_PI)
         misses.violations.append((max(lo - near, near - hi), j, near))
-    return None
 
 
 def pitch_for_phi(phi: float, r: float, rho: float) -> float:
@@ -70,14 +73,8 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
     (c1x, c1z), (v3x, v3z) = fam.c1, fam.links[2] if three else (0.0, 0.0)
     lat, az, bs, c0, s0 = fam.lateral, fam.azimuth_r, fam.base_sign, math.cos(phi0), math.sin(phi0)
     (ux, uy, uz), pi, tp = fam.u, math.pi, _TWO_PI
-    cos, sin, acos, atan2, sqrt, rem = (
-        math.cos,
-        math.sin,
-        math.acos,
-        math.atan2,
-        math.sqrt,
-        math.remainder,
-    )
+    cos, sin, acos, atan2, sqrt = math.cos, math.sin, math.acos, math.atan2, math.sqrt
+    rem, floor = math.remainder, math.floor
     yaw3 = base == 0 and fam.planar == (1, 2, 3)  # the common layout: joints in order
     pair = base is None and fam.planar == (0, 1) and dof == 2
 
@@ -104,8 +101,14 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
         x: float, y: float, z: float, pitch: float | None, seed: Q, misses: Misses | None
     ) -> Found:
         found: Found = []
-        branches = ways(x, y, z, seed)
         rho = sqrt(x * x + y * y)
+        if base is not None and not lat and rho >= 1e-12:  # ``ways``' common case, inline
+            heading = bs * (atan2(y, x) - az)
+            branches: tuple[tuple[float, float], ...] | Reason = (
+                (rho, heading), (-rho, heading + bs * pi)
+            )  # fmt: skip
+        else:
+            branches = ways(x, y, z, seed)
         if three and rho < 1e-12 and abs(pitch or 0.0) > pi / 2 + 1e-12:
             branches = "pitch"  # on the base axis the pitch is within -90..90 deg
         if isinstance(branches, str):
@@ -114,10 +117,12 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
             return found
         sp, cp = (sin(pitch), cos(pitch)) if three and pitch is not None else (0.0, 1.0)
         for r, q0 in branches:
-            if base is not None and not lo0 <= q0 <= hi0:
-                q0 = fit(q0, lo0, hi0, base, misses)  # type: ignore[assignment]
-                if q0 is None:
+            if base is not None and not lo0 <= q0 <= hi0:  # by whole turns into the limits
+                w = q0 - tp * floor((q0 - lo0 + _SLACK) / tp)
+                if w > hi0 + _SLACK:
+                    miss(q0, lo0, hi0, base, misses)
                     continue
+                q0 = lo0 if w < lo0 else (hi0 if w > hi0 else w)
             wx, wz, turn = r - c1x, z - c1z, 0.0
             if three:  # the wrist point, from the plane turn that gives the pitch
                 if rho < 1e-12 or -1e-12 < r < 1e-12:
@@ -149,14 +154,26 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
                             misses.reasons.append("pitch")
                         continue
                 v1, v2 = s1 * a1, s2 * a2
-                if not lo1 <= v1 <= hi1 and (v1 := fit(v1, lo1, hi1, j1, misses)) is None:  # type: ignore[assignment]
-                    continue
-                if not lo2 <= v2 <= hi2 and (v2 := fit(v2, lo2, hi2, j2, misses)) is None:  # type: ignore[assignment]
-                    continue
+                if not lo1 <= v1 <= hi1:  # as the base: inline, a call costs more than this
+                    w = v1 - tp * floor((v1 - lo1 + _SLACK) / tp)
+                    if w > hi1 + _SLACK:
+                        miss(v1, lo1, hi1, j1, misses)
+                        continue
+                    v1 = lo1 if w < lo1 else (hi1 if w > hi1 else w)
+                if not lo2 <= v2 <= hi2:
+                    w = v2 - tp * floor((v2 - lo2 + _SLACK) / tp)
+                    if w > hi2 + _SLACK:
+                        miss(v2, lo2, hi2, j2, misses)
+                        continue
+                    v2 = lo2 if w < lo2 else (hi2 if w > hi2 else w)
                 if three:
                     v3 = s3 * (turn - a1 - a2)
-                    if not lo3 <= v3 <= hi3 and (v3 := fit(v3, lo3, hi3, j3, misses)) is None:  # type: ignore[assignment]
-                        continue
+                    if not lo3 <= v3 <= hi3:
+                        w = v3 - tp * floor((v3 - lo3 + _SLACK) / tp)
+                        if w > hi3 + _SLACK:
+                            miss(v3, lo3, hi3, j3, misses)
+                            continue
+                        v3 = lo3 if w < lo3 else (hi3 if w > hi3 else w)
                     if yaw3:
                         d0, d1, d2, d3 = q0 - seed[0], v1 - seed[1], v2 - seed[2], v3 - seed[3]
                         sol = (q0, v1, v2, v3, *seed[4:]) if dof > 4 else (q0, v1, v2, v3)

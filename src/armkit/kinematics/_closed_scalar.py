@@ -35,7 +35,7 @@ def free(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
         return found
     gap, base = math.inf, chain.family.base
     for r, q0 in ways:  # a joint limit is in the way: the nearest boundary point that fits
-        if base is None or fit(q0, chain.lower[base], chain.upper[base], base, None) is not None:
+        if base is None or fit(q0, chain.lower[base], chain.upper[base]) is not None:
             d, pitch = boundary_pitch(chain, chain.family, r, z, math.hypot(x, y), want, Floats)
             gap, at = (d, pitch) if d < gap else (gap, at)
     return chain.fixed(x, y, z, at, seed, None) if gap < math.inf else []

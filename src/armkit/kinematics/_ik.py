@@ -89,16 +89,14 @@ def ik(
                 found = free(chain, p[0], p[1], p[2], seed)
             if not found:
                 raise refusal(chain, fam, p, pitch, seed)
-            return IKResult.of(
-                tuple(found), "analytic", tuple.__new__(Goal, (p, pitch, None)), chain
-            )
+            return IKResult.of(tuple(found), (p, pitch, None), chain)
     elif orientation is None and pitch is None:
         pitch = chain.default_pitch
     use = _numeric_method(chain, method, orientation)
     R = None if orientation is None else rotation(orientation, "orientation")
     if R is not None and pitch is not None:
         raise InputError("give pitch or orientation, not both")
-    goal = Goal(p, pitch, None if R is None else tuple(R.ravel().tolist()))
+    goal: Goal = (p, pitch, None if R is None else tuple(R.ravel().tolist()))
     tol = (tolerance(tol_m, "tol_m"), tolerance(tol_rad, "tol_rad"))
     return solve_one(use, chain, goal, list(seed), *tol)
 

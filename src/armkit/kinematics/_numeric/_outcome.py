@@ -10,7 +10,6 @@ import numpy as np
 from ..._errors import NoSolutionError, UnreachableError
 from .._chain import Chain
 from .._result import IKResult, Method
-from .._target import Goal
 from ._residual import Residual, Task
 
 
@@ -51,9 +50,9 @@ def finish(chain: Chain, method: Method, task: Task, attempt: Attempt) -> IKResu
     """
     res = attempt.residual
     if attempt.converged:  # q's arrays are built when read (see IKResult)
-        goal = Goal(task.p, task.pitch, task.R)
+        goal = (task.p, task.pitch, task.R)
         ranked = ((0.0, tuple(attempt.q)),)
-        return IKResult(ranked, method, attempt.iterations, attempt.restarts, goal, chain)
+        return IKResult(ranked, goal, chain, method, attempt.iterations, attempt.restarts)
     q = np.array(attempt.q)
     miss = f"{res.position_error * 1000:.3f} mm, {math.degrees(res.angle_error):.3f} deg"
     if beyond_reach(chain, task):
