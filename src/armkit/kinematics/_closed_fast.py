@@ -102,11 +102,12 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
     ) -> Found:
         found: Found = []
         rho = sqrt(x * x + y * y)
-        if base is not None and not lat and rho >= 1e-12:  # ``ways``' common case, inline
+        branches: tuple[tuple[float, float], ...] | Reason
+        if base is not None and not lat and rho >= 1e-12:  # ``ways``' common cases, inline
             heading = bs * (atan2(y, x) - az)
-            branches: tuple[tuple[float, float], ...] | Reason = (
-                (rho, heading), (-rho, heading + bs * pi)
-            )  # fmt: skip
+            branches = ((rho, heading), (-rho, heading + bs * pi))
+        elif base is None and abs(x * ux + y * uy + z * uz - lat) <= 1e-9:
+            branches = ((ux * y - uy * x, 0.0),)
         else:
             branches = ways(x, y, z, seed)
         if three and rho < 1e-12 and abs(pitch or 0.0) > pi / 2 + 1e-12:
@@ -123,7 +124,7 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
                     miss(q0, lo0, hi0, base, misses)
                     continue
                 q0 = lo0 if w < lo0 else (hi0 if w > hi0 else w)
-            wx, wz, turn = r - c1x, z - c1z, 0.0
+            wx, wz, c, s = r - c1x, z - c1z, 1.0, 0.0
             if three:  # the wrist point, from the plane turn that gives the pitch
                 if rho < 1e-12 or -1e-12 < r < 1e-12:
                     ca, sa = cp, sp
@@ -134,7 +135,6 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
                 else:
                     ca, sa = (cp if r > 0.0 else -cp), sp
                 c, s = ca * c0 + sa * s0, sa * c0 - ca * s0
-                turn = atan2(s, c)
                 wx, wz = wx - (c * v3x - s * v3z), wz - (s * v3x + c * v3z)
             cg = (wx * wx + wz * wz - k0) / k1
             if not -1.0 - 1e-12 <= cg <= 1.0 + 1e-12:
@@ -142,7 +142,7 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
                     misses.reasons.append("too_far" if cg > 0 else "too_close")
                 continue
             cg = 1.0 if cg > 1.0 else (-1.0 if cg < -1.0 else cg)
-            g = acos(cg)
+            g, turn = acos(cg), atan2(s, c)
             t = atan2(l2 * sqrt(1.0 - cg * cg), l1 + l2 * cg)
             aim = atan2(wz, wx) - ang1
             for gg, tt in ((g, t), (-g, -t)) if g > 1e-12 else ((g, t),):

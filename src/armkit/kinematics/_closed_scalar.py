@@ -30,8 +30,7 @@ def free(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
         if at is None:  # out of reach at every pitch
             return []
     found = chain.fixed(x, y, z, at, seed, None)
-    ways = chain.ways(x, y, z, seed)
-    if found or isinstance(ways, str):
+    if found or isinstance(ways := chain.ways(x, y, z, seed), str):
         return found
     gap, base = math.inf, chain.family.base
     for r, q0 in ways:  # a joint limit is in the way: the nearest boundary point that fits

@@ -65,9 +65,14 @@ def ik(
     chain = chain_of(model)
     if isinstance(position, Target):
         position, pitch, orientation = _unpack(position, pitch, orientation)
-    p = point(position)
-    if not (type(pitch) is float and pitch - pitch == 0.0):  # else: a finite float already
-        pitch = angle(pitch, "pitch")
+    if isinstance(position, tuple) and len(position) == 3:  # the common case, without a call
+        x, y, z = position
+        ok = type(x) is float and type(y) is float and type(z) is float
+        p = position if ok and x - x == 0.0 and y - y == 0.0 and z - z == 0.0 else point(position)
+    else:
+        p = point(position)
+    if pitch is not None and not (type(pitch) is float and pitch - pitch == 0.0):
+        pitch = angle(pitch, "pitch")  # else: None or a finite float already
     if p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > chain.reach2:
         raise too_far(chain, p, pitch)
     if q_seed is None:
