@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from operator import itemgetter
 
 from .._errors import Reason
 from ._family import PlanarFamily
@@ -21,6 +22,7 @@ Q = tuple[float, ...]
 Found = list[tuple[float, Q]]  # (squared joint distance to the seed, solution)
 _TWO_PI = 2.0 * math.pi
 _SLACK = 1e-9
+_first = itemgetter(0)
 
 
 @dataclass
@@ -251,19 +253,16 @@ def nearest_solver(
             c_lo, c_hi = (big2 + l3 * l3 - hi2) / k, (big2 + l3 * l3 - lo2) / k
             if c_lo > 1.0 + 1e-12 or c_hi < -1.0 - 1e-12:
                 continue
-            if c_lo <= (ca * tx + sa * tz) / big <= c_hi:  # the wrist within reach at want
+            c = (ca * tx + sa * tz) / big  # cos u at want (u: the turn from W's nearest)
+            if c_lo <= c <= c_hi:  # the wrist within reach at want
                 return want
-            todo.append((sign, tx, tz, c_lo, c_hi))
-        best, gap = None, math.inf
-        for sign, tx, tz, c_lo, c_hi in todo:  # the nearest turn within reach: a clamp
-            shift = atan2(tz, tx) - ang3
-            u0 = rem((want if sign > 0 else pi - want) - phi0 - shift, tp)
-            u_in, u_out = acos(min(1.0, c_hi)), acos(max(-1.0, c_lo))
-            u = min(max(abs(u0), u_in), u_out)
-            u = u if u0 >= 0.0 else -u
-            if abs(u - u0) < gap:
-                turn = u + shift + phi0
-                best, gap = rem(turn if sign > 0 else pi - turn, tp), abs(u - u0)
-        return best
+            u = acos(min(1.0, c_hi)) if c > c_hi else acos(max(-1.0, c_lo))  # |u| clamped
+            gap = abs(u - acos(max(-1.0, min(1.0, c))))
+            todo.append((gap, sign, tx, tz, u if sa * tx - ca * tz >= 0.0 else -u))
+        if not todo:
+            return None
+        _, sign, tx, tz, u = min(todo, key=_first)  # the nearest turn within reach: a clamp
+        turn = u + atan2(tz, tx) - ang3 + phi0
+        return rem(turn if sign > 0 else pi - turn, tp)
 
     return nearest
