@@ -53,6 +53,8 @@ class Chain:
             ways: the base branches of a target (``_closed_fast``); None off the family.
         nearest: the pitch nearest a wanted one at which the wrist is within reach
             (``_closed_fast``), or None where the general path is used.
+        free_pitch: a family arm with 3 planar joints: without a pitch, the closed form
+            chooses one (with 2 the pitch follows from the position).
     """
 
     name: str
@@ -80,6 +82,7 @@ class Chain:
     fixed: FixedSolver | None
     ways: Ways | None
     nearest: NearestPitch | None
+    free_pitch: bool
 
 
 _CHAINS: dict[int, Chain] = {}
@@ -161,4 +164,5 @@ def compile_chain(model: ArmModel) -> Chain:
         else nearest_solver(
             fam, wrist_range(fam, lower[j2], upper[j2]), (lower[fam.base], upper[fam.base])
         ),
+        free_pitch=fam is not None and len(fam.planar) == 3,
     )

@@ -63,18 +63,16 @@ def ik(
         InputError: malformed input (a ValueError), naming the argument.
     """
     chain = chain_of(model)
-    if isinstance(position, Target):
-        position, pitch, orientation = _unpack(position, pitch, orientation)
     if isinstance(position, tuple) and len(position) == 3:  # the common case, without a call
         x, y, z = position
         ok = type(x) is float and type(y) is float and type(z) is float
         p = position if ok and x - x == 0.0 and y - y == 0.0 and z - z == 0.0 else point(position)
     else:
+        if isinstance(position, Target):
+            position, pitch, orientation = _unpack(position, pitch, orientation)
         p = point(position)
     if pitch is not None and not (type(pitch) is float and pitch - pitch == 0.0):
         pitch = angle(pitch, "pitch")  # else: None or a finite float already
-    if p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > chain.reach2:
-        raise too_far(chain, p, pitch)
     if q_seed is None:
         seed = chain.home
     elif isinstance(q_seed, np.ndarray) and q_seed.shape == (chain.dof,) and q_seed.dtype == float:
@@ -83,19 +81,25 @@ def ik(
             raise InputError("q_seed must be finite [rad], got NaN or infinity")
     else:
         seed = tuple(joints(q_seed, chain.dof, "q_seed", False).tolist())
-    if orientation is None and (method == "auto" or method == "analytic"):
-        fam = chain.family
+    solve = chain.fixed
+    if solve is not None and orientation is None and (method == "auto" or method == "analytic"):
         if pitch is None:
             pitch = chain.default_pitch
-        if fam is not None and chain.fixed is not None:
-            if pitch is not None or len(fam.planar) == 2:
-                found = chain.fixed(p[0], p[1], p[2], pitch, seed, None)
-            else:
-                found = free(chain, p[0], p[1], p[2], seed)
-            if not found:
-                raise refusal(chain, fam, p, pitch, seed)
-            return IKResult.of(tuple(found), (p, pitch, None), chain)
-    elif orientation is None and pitch is None:
+        if pitch is not None or not chain.free_pitch:
+            found = solve(p[0], p[1], p[2], pitch, seed, None)
+        elif p[0] * p[0] + p[1] * p[1] + p[2] * p[2] <= chain.reach2:
+            found = free(chain, p[0], p[1], p[2], seed)
+        else:
+            found = []
+        if not found:
+            if not p[0] * p[0] + p[1] * p[1] + p[2] * p[2] <= chain.reach2:
+                raise too_far(chain, p, pitch)
+            assert chain.family is not None
+            raise refusal(chain, chain.family, p, pitch, seed)
+        return IKResult.of(found, (p, pitch, None), chain)
+    if p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > chain.reach2:
+        raise too_far(chain, p, pitch)
+    if orientation is None and pitch is None:
         pitch = chain.default_pitch
     use = _numeric_method(chain, method, orientation)
     R = None if orientation is None else rotation(orientation, "orientation")
