@@ -105,7 +105,8 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
         found: Found = []
         rho = sqrt(x * x + y * y)
         branches: tuple[tuple[float, float], ...] | Reason
-        if base is not None and not lat and rho >= 1e-12:  # ``ways``' common cases, inline
+        plain = base is not None and not lat and rho >= 1e-12  # off the axis, no offset
+        if plain:  # ``ways``' common cases, inline
             heading = bs * (atan2(y, x) - az)
             branches = ((rho, heading), (-rho, heading + bs * pi))
         elif base is None and abs(x * ux + y * uy + z * uz - lat) <= 1e-9:
@@ -119,6 +120,7 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
                 misses.reasons.append(branches)
             return found
         sp, cp = (sin(pitch), cos(pitch)) if three and pitch is not None else (0.0, 1.0)
+        given = not three and pitch is not None  # 2 planar joints: check the pitch they give
         for r, q0 in branches:
             if base is not None and not lo0 <= q0 <= hi0:  # by whole turns into the limits
                 w = q0 - tp * floor((q0 - lo0 + _SLACK) / tp)
@@ -128,7 +130,9 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
                 q0 = lo0 if w < lo0 else (hi0 if w > hi0 else w)
             wx, wz, c, s = r - c1x, z - c1z, 1.0, 0.0
             if three:  # the wrist point, from the plane turn that gives the pitch
-                if rho < 1e-12 or -1e-12 < r < 1e-12:
+                if plain:
+                    ca, sa = (cp if r > 0.0 else -cp), sp
+                elif rho < 1e-12 or -1e-12 < r < 1e-12:
                     ca, sa = cp, sp
                 elif lat:
                     sa = sp * abs(r) / rho
@@ -144,14 +148,14 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
                     misses.reasons.append("too_far" if cg > 0 else "too_close")
                 continue
             cg = 1.0 if cg > 1.0 else (-1.0 if cg < -1.0 else cg)
-            g, turn = acos(cg), atan2(s, c)
+            g, turn = acos(cg), atan2(s, c) if three else 0.0
             t = atan2(l2 * sqrt(1.0 - cg * cg), l1 + l2 * cg)
             aim = atan2(wz, wx) - ang1
             for gg, tt in ((g, t), (-g, -t)) if g > 1e-12 else ((g, t),):
                 a1, a2 = aim - tt, gg - bend
-                if not three and pitch is not None:
+                if given:
                     got = pitch_for_phi(phi0 + a1 + a2, r, rho)
-                    if abs(rem(got - pitch, tp)) > 1e-7:
+                    if abs(rem(got - pitch, tp)) > 1e-7:  # type: ignore[operator]
                         if misses is not None:
                             misses.reasons.append("pitch")
                         continue
