@@ -227,34 +227,36 @@ def nearest_solver(
     lo2, hi2 = reach[0] ** 2, reach[1] ** 2
     lo0, hi0 = base_range
     pi, tp, atan2, acos, rem = math.pi, _TWO_PI, math.atan2, math.acos, math.remainder
+    sqrt, cos, sin, mid, l3sq = math.sqrt, math.cos, math.sin, 0.5 * (lo0 + hi0), l3 * l3
     full = hi0 - lo0 >= tp - 1e-9  # the base turns all the way: both branches always face
     c_k, s_k = math.cos(phi0 - ang3), math.sin(phi0 - ang3)
 
+    def faces(x: float, y: float, sign: float) -> bool:
+        """The base can face the target (sign +1) or turn its back to it (-1)."""
+        q0 = bs * (atan2(y, x) - az + (0.0 if sign > 0.0 else pi))
+        return lo0 - 1e-9 <= rem(q0 - mid, tp) + mid <= hi0 + 1e-9
+
     def nearest(x: float, y: float, z: float, want: float, seed0: float) -> float | None:
-        r = math.hypot(x, y)
+        r = sqrt(x * x + y * y)
         if r < 1e-9:
             return want  # on the base axis: the solvers decide
-        heading = atan2(y, x) - az
-        cw, sw = math.cos(want), math.sin(want)
-        # cos and sin of want's turn less the wrist link's angle, facing (+) and reaching back (-)
-        ways = (
-            (r, 1.0, bs * heading, cw * c_k + sw * s_k, sw * c_k - cw * s_k),
-            (-r, -1.0, bs * (heading + pi), -(cw * c_k - sw * s_k), sw * c_k + cw * s_k),
-        )
+        cw, sw = cos(want), sin(want)
+        tz = z - c1z
         todo = []
-        for rr, sign, q0, ca, sa in ways:
-            mid = 0.5 * (lo0 + hi0)
-            if not full and not lo0 - 1e-9 <= rem(q0 - mid, tp) + mid <= hi0 + 1e-9:
-                continue  # the base cannot face this way
-            tx, tz = rr - c1x, z - c1z
+        # per way: cos and sin of want's turn less the wrist link's angle, facing (+) and back (-)
+        for sign, ca, sa in ((1.0, cw * c_k + sw * s_k, sw * c_k - cw * s_k),
+                             (-1.0, sw * s_k - cw * c_k, sw * c_k + cw * s_k)):  # fmt: skip
+            if not full and not faces(x, y, sign):
+                continue
+            tx = sign * r - c1x
             big2 = tx * tx + tz * tz
-            big = math.sqrt(big2)
+            big = sqrt(big2)
             k = 2.0 * big * l3
             if k < 1e-15:
-                if lo2 - 1e-12 <= big2 + l3 * l3 <= hi2 + 1e-12:
+                if lo2 - 1e-12 <= big2 + l3sq <= hi2 + 1e-12:
                     return want
                 continue
-            c_lo, c_hi = (big2 + l3 * l3 - hi2) / k, (big2 + l3 * l3 - lo2) / k
+            c_lo, c_hi = (big2 + l3sq - hi2) / k, (big2 + l3sq - lo2) / k
             if c_lo > 1.0 + 1e-12 or c_hi < -1.0 - 1e-12:
                 continue
             c = (ca * tx + sa * tz) / big  # cos u at want (u: the turn from W's nearest)
@@ -262,10 +264,10 @@ def nearest_solver(
                 return want
             u = acos(min(1.0, c_hi)) if c > c_hi else acos(max(-1.0, c_lo))  # |u| clamped
             gap = abs(u - acos(max(-1.0, min(1.0, c))))
-            todo.append((gap, sign, tx, tz, u if sa * tx - ca * tz >= 0.0 else -u))
+            todo.append((gap, sign, tx, u if sa * tx - ca * tz >= 0.0 else -u))
         if not todo:
             return None
-        _, sign, tx, tz, u = min(todo, key=_first)  # the nearest turn within reach: a clamp
+        _, sign, tx, u = min(todo, key=_first)  # the nearest turn within reach: a clamp
         turn = u + atan2(tz, tx) - ang3 + phi0
         return rem(turn if sign > 0 else pi - turn, tp)
 
