@@ -23,21 +23,25 @@ def free(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
     """Position only (3 planar joints): every solution at the pitch nearest the seed's at
     which the arm fits, unsorted; [] if none."""
     want = chain.home_pitch if seed == chain.home else preferred(chain, seed)
-    assert chain.fixed is not None and chain.ways is not None and chain.family is not None
+    solve, nearest = chain.fixed, chain.nearest
+    assert solve is not None
     at: float | None = want
-    if chain.nearest is not None:  # the nearest pitch with the wrist point within reach
-        at = chain.nearest(x, y, z, want, seed[0])
+    if nearest is not None:  # the nearest pitch with the wrist point within reach
+        at = nearest(x, y, z, want, seed[0])
         if at is None:  # out of reach at every pitch
             return []
-    found = chain.fixed(x, y, z, at, seed, None)
-    if found or isinstance(ways := chain.ways(x, y, z, seed), str):
+    found = solve(x, y, z, at, seed, None)
+    if found:
+        return found
+    assert chain.ways is not None and chain.family is not None
+    if isinstance(ways := chain.ways(x, y, z, seed), str):
         return found
     gap, base = math.inf, chain.family.base
     for r, q0 in ways:  # a joint limit is in the way: the nearest boundary point that fits
         if base is None or fit(q0, chain.lower[base], chain.upper[base]) is not None:
             d, pitch = boundary_pitch(chain, chain.family, r, z, math.hypot(x, y), want, Floats)
             gap, at = (d, pitch) if d < gap else (gap, at)
-    return chain.fixed(x, y, z, at, seed, None) if gap < math.inf else []
+    return solve(x, y, z, at, seed, None) if gap < math.inf else []
 
 
 def preferred(chain: Chain, seed: Q) -> float:

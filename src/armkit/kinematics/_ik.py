@@ -87,10 +87,8 @@ def ik(
             pitch = chain.default_pitch
         if pitch is not None or not chain.free_pitch:
             found = solve(p[0], p[1], p[2], pitch, seed, None)
-        elif p[0] * p[0] + p[1] * p[1] + p[2] * p[2] <= chain.reach2:
+        else:  # (a far target finds nothing and is refused as such below)
             found = free(chain, p[0], p[1], p[2], seed)
-        else:
-            found = []
         if not found:
             if not p[0] * p[0] + p[1] * p[1] + p[2] * p[2] <= chain.reach2:
                 raise too_far(chain, p, pitch)
