@@ -61,11 +61,6 @@ class Planes:
     z: F64
     bad: Bool
 
-    def take(self, idx: NDArray[np.intp]) -> Planes:
-        """The branches of the targets at indices ``idx``."""
-        lanes = (np.arange(len(self.r) // len(self.bad))[:, None] * len(self.bad) + idx).ravel()
-        return Planes(self.r[lanes], self.q0[lanes], self.rho[lanes], self.z[lanes], self.bad[idx])
-
     def per_target(self, v: NDArray[Any]) -> NDArray[Any]:
         """Stacked values (B * N, ...) as (B, N, ...)."""
         return v.reshape(-1, len(self.bad), *v.shape[1:])
