@@ -45,12 +45,11 @@ def fit(v: float, lo: float, hi: float) -> float | None:
     return (lo if w < lo else (hi if w > hi else w)) if w <= hi + _SLACK else None
 
 
-def miss(v: float, lo: float, hi: float, j: int, misses: Misses | None) -> None:
-    """Record in ``misses`` (if any) that joint j's angle v [rad] cannot turn into [lo, hi]:
-    its excess and its value at the turn nearest the range."""
-    if misses is not None:
-        near = 0.5 * (lo + hi) + math.remainder(v - 0.5 * (lo + hi), _TWO_PI)
-        misses.violations.append((max(lo - near, near - hi), j, near))
+def miss(v: float, lo: float, hi: float, j: int, misses: Misses) -> None:
+    """Record in ``misses`` that joint j's angle v [rad] cannot turn into [lo, hi]: its
+    excess and its value at the turn nearest the range."""
+    near = 0.5 * (lo + hi) + math.remainder(v - 0.5 * (lo + hi), _TWO_PI)
+    misses.violations.append((max(lo - near, near - hi), j, near))
 
 
 def pitch_for_phi(phi: float, r: float, rho: float) -> float:
@@ -125,7 +124,8 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
             if base is not None and not lo0 <= q0 <= hi0:  # by whole turns into the limits
                 w = q0 - tp * floor((q0 - lo0 + _SLACK) / tp)
                 if w > hi0 + _SLACK:
-                    miss(q0, lo0, hi0, base, misses)
+                    if misses is not None:
+                        miss(q0, lo0, hi0, base, misses)
                     continue
                 q0 = lo0 if w < lo0 else (hi0 if w > hi0 else w)
             wx, wz, c, s = r - c1x, z - c1z, 1.0, 0.0
@@ -163,13 +163,15 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
                 if not lo1 <= v1 <= hi1:  # as the base: inline, a call costs more than this
                     w = v1 - tp * floor((v1 - lo1 + _SLACK) / tp)
                     if w > hi1 + _SLACK:
-                        miss(v1, lo1, hi1, j1, misses)
+                        if misses is not None:
+                            miss(v1, lo1, hi1, j1, misses)
                         continue
                     v1 = lo1 if w < lo1 else (hi1 if w > hi1 else w)
                 if not lo2 <= v2 <= hi2:
                     w = v2 - tp * floor((v2 - lo2 + _SLACK) / tp)
                     if w > hi2 + _SLACK:
-                        miss(v2, lo2, hi2, j2, misses)
+                        if misses is not None:
+                            miss(v2, lo2, hi2, j2, misses)
                         continue
                     v2 = lo2 if w < lo2 else (hi2 if w > hi2 else w)
                 if three:
@@ -177,7 +179,8 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
                     if not lo3 <= v3 <= hi3:
                         w = v3 - tp * floor((v3 - lo3 + _SLACK) / tp)
                         if w > hi3 + _SLACK:
-                            miss(v3, lo3, hi3, j3, misses)
+                            if misses is not None:
+                                miss(v3, lo3, hi3, j3, misses)
                             continue
                         v3 = lo3 if w < lo3 else (hi3 if w > hi3 else w)
                     if yaw3:
