@@ -103,7 +103,7 @@ def ik(
     R = None if orientation is None else rotation(orientation, "orientation")
     if R is not None and pitch is not None:
         raise InputError("give pitch or orientation, not both")
-    goal: Goal = (p, pitch, None if R is None else tuple(R.ravel().tolist()))
+    goal = Goal(p, pitch, None if R is None else tuple(R.ravel().tolist()))
     tol = (tolerance(tol_m, "tol_m"), tolerance(tol_rad, "tol_rad"))
     return solve_one(use, chain, goal, list(seed), *tol)
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 from numpy.typing import ArrayLike
 
@@ -38,11 +38,20 @@ class Target:
         return "position" if self.pitch is None else "position+pitch"
 
 
-Goal = tuple[tuple[float, float, float], "float | None", "tuple[float, ...] | None"]
-"""A checked single target in plain floats: p [m], pitch [rad] or None, R row-major or None."""
+Aim = tuple[tuple[float, float, float], "float | None", "tuple[float, ...] | None"]
+"""A checked single target in plain floats: p [m], pitch [rad] or None, R row-major or None
+(the closed form passes a bare tuple: cheaper to build than a ``Goal``)."""
 
 
-def errors(goal: Goal, st: ChainState) -> tuple[float, float]:
+class Goal(NamedTuple):
+    """An ``Aim`` with names."""
+
+    p: tuple[float, float, float]
+    pitch: float | None
+    R: tuple[float, ...] | None
+
+
+def errors(goal: Aim, st: ChainState) -> tuple[float, float]:
     """Position [m] and pitch or orientation [rad] error of a chain state for ``goal``."""
     (px, py, pz), ((gx, gy, gz), pitch, R) = st.p, goal
     pos = math.sqrt((px - gx) ** 2 + (py - gy) ** 2 + (pz - gz) ** 2)

@@ -10,6 +10,7 @@ import numpy as np
 from ..._errors import NoSolutionError, UnreachableError
 from .._chain import Chain
 from .._result import IKResult, Method
+from .._target import Goal
 from ._residual import Residual, Task
 
 
@@ -50,7 +51,7 @@ def finish(chain: Chain, method: Method, task: Task, attempt: Attempt) -> IKResu
     """
     res = attempt.residual
     if attempt.converged:  # q's arrays are built when read (see IKResult)
-        goal = (task.p, task.pitch, task.R)
+        goal = Goal(task.p, task.pitch, task.R)
         ranked = ((0.0, tuple(attempt.q)),)
         return IKResult(ranked, goal, chain, method, attempt.iterations, attempt.restarts)
     q = np.array(attempt.q)
