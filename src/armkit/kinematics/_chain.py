@@ -20,9 +20,8 @@ from numpy.typing import NDArray
 
 from .._errors import ModelError
 from ..model import ArmModel, JointFrame
-from ._closed_fast import FixedSolver, NearestPitch, fixed_solver, nearest_pitch_solver
-from ._family import PlanarFamily, detect
-from ._planar import wrist_range
+from ._closed_fast import FixedSolver, NearestPitch, Ways, fixed_solver, nearest_solver
+from ._family import PlanarFamily, detect, wrist_range
 from ._pose import pitch_scalar
 from ._scalar import State, compile_state
 from ._steps import Fixed, Step, frames_of, steps_of
@@ -50,10 +49,12 @@ class Chain:
         home_pitch: the tool's pitch at home [rad].
         wrist_reach: (min, max) distance [m] from the first planar joint to the end of
             link 2 that the elbow's limits allow (family arms; else (0, 0)).
-        fixed: the closed form at one pitch with this chain's constants bound
-            (``_closed_fast``), or None.
+        fixed: the closed form at one pitch with this chain's constants bound, and
+            ways: the base branches of a target (``_closed_fast``); None off the family.
         nearest: the pitch nearest a wanted one at which the wrist is within reach
             (``_closed_fast``), or None where the general path is used.
+        free_pitch: a family arm with 3 planar joints: without a pitch, the closed form
+            chooses one (with 2 the pitch follows from the position).
     """
 
     name: str
@@ -79,7 +80,9 @@ class Chain:
     home_pitch: float
     wrist_reach: tuple[float, float]
     fixed: FixedSolver | None
+    ways: Ways | None
     nearest: NearestPitch | None
+    free_pitch: bool
 
 
 _CHAINS: dict[int, Chain] = {}
@@ -130,6 +133,7 @@ def compile_chain(model: ArmModel) -> Chain:
     at_home = state(list(home))
     fam = family if isinstance(family, PlanarFamily) else None
     j2 = fam.planar[1] if fam is not None else 0
+    solvers = fixed_solver(fam, lower, upper) if fam is not None else None
     return Chain(
         name=model.name,
         dof=model.dof,
@@ -153,10 +157,12 @@ def compile_chain(model: ArmModel) -> Chain:
         why_not="" if isinstance(family, PlanarFamily) else f"{model.name} {family}",
         home_pitch=pitch_scalar(at_home.R[0], at_home.p),
         wrist_reach=wrist_range(fam, lower[j2], upper[j2]) if fam is not None else (0.0, 0.0),
-        fixed=fixed_solver(fam, lower, upper) if fam is not None else None,
+        fixed=solvers[0] if solvers else None,
+        ways=solvers[1] if solvers else None,
         nearest=None
         if fam is None or fam.base is None
-        else nearest_pitch_solver(
+        else nearest_solver(
             fam, wrist_range(fam, lower[j2], upper[j2]), (lower[fam.base], upper[fam.base])
         ),
+        free_pitch=fam is not None and len(fam.planar) == 3,
     )

@@ -1,17 +1,18 @@
 """Closed-form IK for N targets at once, vectorised over targets: the reference.
 
-For each base branch the plane target is computed once on (N,) arrays, then
-both elbow branches share its trigonometry (+-gamma); the 4 candidates per
-target land in an (N, 4, dof) array and the valid one nearest the seed wins.
-Without a pitch (3 planar joints) the pitch nearest the seed's that fits is
-found in closed form: the nearest at which the wrist point is within the
-links' reach, else the nearest of the pitches where the reach or a joint
-limit begins or ends (``candidates``) that fits, tried nearest first.
+Base branches: the arm faces the target (plane radius r > 0) or reaches over
+its shoulder (r < 0). Elbow branches: the law of cosines' two signs. For each
+base branch the plane target is computed once on (N,) arrays and both elbows
+share its trigonometry; the 4 candidates per target land in an (N, 4, dof)
+array, every joint moved by whole turns into its limits where it can be, and
+the valid one nearest the seed wins. The scalar fast path (``_closed_fast``)
+is pinned to this by tests.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -21,81 +22,124 @@ from ._family import PlanarFamily
 
 F64 = NDArray[np.float64]
 Bool = NDArray[np.bool_]
-_TWO_PI = 2.0 * np.pi
-_SLACK = 1e-9
-
-
-@dataclass(frozen=True)
-class Branches:
-    """Per base branch (1 or 2): plane radius r (signed), distance rho, base angle, each (N,)."""
-
-    r: list[F64]
-    rho: F64
-    q0: list[F64]
-    bad: Bool  # off the plane (no base) or inside the lateral offset (with a base)
+TWO_PI = 2.0 * np.pi
+SLACK = 1e-9  # [rad] a joint this far beyond a limit counts as at it
 
 
 @dataclass(frozen=True)
 class Candidates:
-    """q (N, K, dof) [rad], valid (N, K), and per target: beyond reach (too_far) (N,)."""
+    """K candidates for each of N targets as lanes: joint angles (dof, K, N) [rad] and
+    where each fits (K, N); per target (N,): beyond reach, and with no base branch (off
+    the plane, or inside the lateral offset)."""
 
-    q: F64
-    valid: Bool
+    lanes: F64
+    fits: Bool
     far: Bool
     bad: Bool
 
+    @property
+    def q(self) -> F64:
+        """The candidates per target [rad], (N, K, dof)."""
+        return self.lanes.transpose(2, 1, 0)
 
-def branches(fam: PlanarFamily, P: F64, seed: F64) -> Branches:
-    """The base branches of targets P (N, 3) [m]: facing them, and over the shoulder."""
-    x, y = P[:, 0], P[:, 1]
-    rho = np.hypot(x, y)
+    @property
+    def valid(self) -> Bool:
+        """Where each candidate fits, (N, K)."""
+        return self.fits.T
+
+
+@dataclass(frozen=True)
+class Planes:
+    """The base branches of N targets, B of them (facing the target, and over the shoulder;
+    one without a base), stacked branch after branch: per branch and target (B * N,) the
+    plane radius r (signed), the base angle q0 [rad], the horizontal distance rho and
+    height z of the target [m]; and the targets with no branch at all (N,)."""
+
+    r: F64
+    q0: F64
+    rho: F64
+    z: F64
+    bad: Bool
+
+    def per_target(self, v: NDArray[Any]) -> NDArray[Any]:
+        """Stacked values (B * N, ...) as (B, N, ...)."""
+        return v.reshape(-1, len(self.bad), *v.shape[1:])
+
+
+def planes(fam: PlanarFamily, P: F64, seed: F64) -> Planes:
+    """The base branches of targets P (N, 3) [m] (seeds (N, dof) [rad] give the base angle
+    on the base axis)."""
+    x, y, z = P[:, 0], P[:, 1], P[:, 2]
+    rho2 = x * x + y * y
+    rho = np.sqrt(rho2)
     if fam.base is None:
         ux, uy, uz = fam.u
-        bad = np.abs(x * ux + y * uy + P[:, 2] * uz - fam.lateral) > 1e-9
-        return Branches([-uy * x + ux * y], rho, [np.zeros(len(P))], bad)
-    r2 = rho * rho - fam.lateral**2
+        bad = np.abs(x * ux + y * uy + z * uz - fam.lateral) > 1e-9
+        return Planes(ux * y - uy * x, np.zeros(len(P)), rho, z, bad)
+    r2 = rho2 - fam.lateral * fam.lateral
     r = np.sqrt(np.maximum(r2, 0.0))
-    heading = np.arctan2(y, x) - fam.azimuth_r
-    on_axis = rho < 1e-12
-    q0 = []
-    for rr, turn in ((r, 0.0), (-r, np.pi)):  # on the axis: the seed's base angle, or turned round
-        psi = fam.base_sign * (heading - np.arctan2(-fam.lateral, rr))
-        q0.append(np.where(on_axis, seed[:, fam.base] + turn, psi))
-    return Branches([r, np.where(on_axis, -0.0, -r)], rho, q0, r2 < -1e-18)
+    r = np.concatenate([r, np.where(rho < 1e-12, -0.0, -r)])
+    axis = np.concatenate([rho, rho]) < 1e-12
+    turn = np.repeat([0.0, np.pi], len(P))  # on the axis: the seed's base angle, or turned round
+    lean = np.arctan2(-fam.lateral, r) if fam.lateral else -turn
+    heading = np.tile(np.arctan2(y, x) - fam.azimuth_r, 2)
+    q0 = np.where(axis, np.tile(seed[:, fam.base], 2) + turn, fam.base_sign * (heading - lean))
+    return Planes(r, q0, np.tile(rho, 2), np.tile(z, 2), r2 < -1e-18)
 
 
-def solve(chain: Chain, fam: PlanarFamily, P: F64, pitch: F64 | None, seed: F64) -> Candidates:
+def turn_of(fam: PlanarFamily, pitch: F64, b: Planes) -> tuple[F64, F64, F64]:
+    """cos, sin and angle [rad] of the plane turn (from q = 0) that gives ``pitch`` (N,)
+    [rad] in each base branch of ``b`` (B * N,) (see ``pitch_of``); NaN on the base axis
+    beyond +-90 deg, where no pitch is possible."""
+    count, axis = len(b.r) // len(pitch), (b.rho < 1e-12) | (np.abs(b.r) < 1e-12)
+    pitch = np.tile(pitch, count)
+    pitch = np.where((b.rho < 1e-12) & (np.abs(pitch) > np.pi / 2 + 1e-12), np.nan, pitch)
+    sp, cp = np.sin(pitch), np.cos(pitch)
+    cp = np.where(axis | (b.r > 0), cp, -cp)  # reaching back the approach points the other way
+    if fam.lateral:
+        sp = sp * np.where(axis, 1.0, np.abs(b.r) / np.where(axis, 1.0, b.rho))
+        norm = np.sqrt(sp * sp + cp * cp)
+        sp, cp = sp / norm, cp / norm
+        phi = np.arctan2(sp, cp)
+    else:  # the approach angle in the plane is the pitch, or pi - pitch reaching back
+        phi = np.where(axis | (b.r > 0), pitch, np.pi - pitch)
+    c0, s0 = np.cos(fam.phi0), np.sin(fam.phi0)
+    return cp * c0 + sp * s0, sp * c0 - cp * s0, phi - fam.phi0
+
+
+def pitch_of_phi(c: F64, s: F64, r: F64, rho: F64) -> F64:
+    """Inverse of ``turn_of``: the pitch [rad] in [-pi, pi] of plane approach angles given
+    by their cosines c and sines s, at plane radii r (signed) and distances rho [m]."""
+    axis = (np.abs(r) < 1e-12) | (rho < 1e-12)
+    return np.asarray(np.arctan2(s, np.where(axis, np.abs(c), c * r / np.where(axis, 1.0, rho))))
+
+
+def solve(
+    chain: Chain, fam: PlanarFamily, P: F64, pitch: F64 | None, seed: F64, b: Planes | None = None
+) -> Candidates:
     """Every candidate for targets P (N, 3) [m] at ``pitch`` (N,) [rad] (None: 2 planar
-    joints, the pitch follows), seeds (N, dof) [rad]."""
-    n, b = len(P), branches(fam, P, seed)
-    k = 2 * len(b.r)
-    q = np.repeat(seed[:, None, :], k, axis=1)
-    valid = np.zeros((n, k), dtype=bool)
-    far = np.zeros(n, dtype=bool)
-    for i, (r, q0) in enumerate(zip(b.r, b.q0, strict=True)):
-        far |= _branch(
-            chain,
-            fam,
-            P[:, 2],
-            r,
-            b.rho,
-            q0,
-            pitch,
-            q[:, 2 * i : 2 * i + 2],
-            valid[:, 2 * i : 2 * i + 2],
-        )
-    valid &= ~b.bad[:, None]
-    return Candidates(q, valid, far, b.bad)
+    joints, the pitch follows), seeds (N, dof) [rad] (and their ``planes`` if known):
+    K = 2 B, elbow by elbow, each of every base branch."""
+    b = planes(fam, P, seed) if b is None else b
+    count = len(b.r) // len(P)
+    lanes = np.empty((chain.dof, 2, len(b.r)))
+    lanes[:] = np.tile(seed.T, count)[:, None, :]
+    fits, far = _branches(chain, fam, b, pitch, lanes)
+    fits = fits.reshape(2 * count, len(P)) & ~b.bad
+    lanes = lanes.reshape(chain.dof, 2 * count, len(P))
+    return Candidates(lanes, fits, np.asarray(b.per_target(far).any(axis=0)), b.bad)
 
 
 def best(c: Candidates, seed: F64) -> tuple[F64, Bool]:
     """The valid candidate nearest each seed (NaN rows where none), and ok (N,)."""
-    diff = c.q - seed[:, None, :]
-    dist = np.where(c.valid, np.einsum("nkd,nkd->nk", diff, diff), np.inf)
-    pick = np.argmin(dist, axis=1)
-    rows = np.arange(len(seed))
-    ok = c.valid[rows, pick]
-    return np.where(ok[:, None], c.q[rows, pick], np.nan), ok
+    dist = np.zeros(c.fits.shape)
+    for j in range(len(c.lanes)):
+        d = c.lanes[j] - seed[:, j]
+        dist += d * d
+    pick = np.argmin(np.where(c.fits, dist, np.inf), axis=0)
+    cols = np.arange(len(seed))
+    ok = c.fits[pick, cols]
+    return np.where(ok[:, None], c.lanes[:, pick, cols].T, np.nan), ok
 
 
 def reasons(fam: PlanarFamily, c: Candidates) -> NDArray[np.str_]:
@@ -107,73 +151,51 @@ def reasons(fam: PlanarFamily, c: Candidates) -> NDArray[np.str_]:
     return reason
 
 
-def _branch(
-    chain: Chain, fam: PlanarFamily, z: F64, r: F64, rho: F64, q0: F64, pitch: F64 | None,
-    out: F64, valid: Bool,
-) -> Bool:  # fmt: skip
-    """Fill both elbow candidates of one base branch; return the too-far mask (N,)."""
+def wrap(v: F64, lo: float, hi: float) -> tuple[F64, Bool]:
+    """Angles v [rad] moved by whole turns into [lo, hi] (kept where already inside), clamped
+    to it; and where that was possible (within ``SLACK``)."""
+    w = v - TWO_PI * np.floor((v - (lo - SLACK)) / TWO_PI)  # in [lo - SLACK, lo - SLACK + 2 pi)
+    if hi - lo > TWO_PI - 2 * SLACK:  # a turn or more: keep an angle that is already inside
+        w = np.where((v >= lo - SLACK) & (v <= hi + SLACK), v, w)
+    return np.clip(w, lo, hi), w <= hi + SLACK
+
+
+def _branches(
+    chain: Chain, fam: PlanarFamily, b: Planes, pitch: F64 | None, out: F64
+) -> tuple[Bool, Bool]:
+    """Fill both elbow candidates (dof, 2, B * N) of every base branch; return where each
+    fits (2, B * N) and where the branch is beyond reach (B * N,)."""
     three = len(fam.planar) == 3
-    wx, wz = r - fam.c1[0], z - fam.c1[1]
-    turn = np.zeros_like(r)
+    wx, wz = b.r - fam.c1[0], b.z - fam.c1[1]
     if three:
         assert pitch is not None
-        c, s, turn = wrist_turn(fam, r, rho, pitch)
+        c, s, turn = turn_of(fam, pitch, b)
         (v3x, v3z) = fam.links[2]
         wx, wz = wx - (c * v3x - s * v3z), wz - (s * v3x + c * v3z)
     l1, l2 = fam.l1, fam.l2
     cos_g = (wx * wx + wz * wz - l1 * l1 - l2 * l2) / (2.0 * l1 * l2)
-    reach = np.abs(cos_g) <= 1.0 + 1e-12
     cg = np.clip(cos_g, -1.0, 1.0)
     g = np.arccos(cg)
     t = np.arctan2(l2 * np.sqrt(1.0 - cg * cg), l1 + l2 * cg)
     aim = np.arctan2(wz, wx) - fam.ang1
+    ok = np.abs(cos_g) <= 1.0 + 1e-12
+    if fam.base is not None:
+        out[fam.base], fits = wrap(b.q0, chain.lower[fam.base], chain.upper[fam.base])
+        ok &= fits
+    valid = np.empty((2, len(ok)), dtype=bool)
     for e, sign in enumerate((1.0, -1.0)):
-        alphas = [aim - sign * t, sign * g - fam.bend]
-        ok = reach.copy()
-        if three:
-            alphas.append(turn - alphas[0] - alphas[1])
-        elif pitch is not None:
-            ok &= _pitch_ok(fam, alphas[0] + alphas[1], r, rho, pitch)
-        valid[:, e] = ok & _fill(chain, fam, q0, alphas, out[:, e])
-    return np.asarray(cos_g > 1.0 + 1e-12)
+        a1, a2 = aim - sign * t, sign * g - fam.bend
+        alphas = (a1, a2, turn - a1 - a2) if three else (a1, a2)
+        fit = ok if three or pitch is None else ok & _pitch_ok(fam, a1 + a2, b, pitch)
+        for j, s_j, a in zip(fam.planar, fam.sigma, alphas, strict=True):
+            out[j, e], inside = wrap(s_j * a, chain.lower[j], chain.upper[j])
+            fit = fit & inside
+        valid[e] = fit
+    return valid, np.asarray(cos_g > 1.0 + 1e-12)
 
 
-def wrist_turn(fam: PlanarFamily, r: F64, rho: F64, pitch: F64) -> tuple[F64, F64, F64]:
-    """cos, sin and angle of the total plane turn that gives ``pitch`` (3 planar joints)."""
-    on_axis = (rho < 1e-12) | (np.abs(r) < 1e-12)
-    pitch = np.where((rho < 1e-12) & (np.abs(pitch) > np.pi / 2 + 1e-12), np.nan, pitch)
-    sp = np.sin(pitch) * np.where(on_axis, 1.0, np.abs(r) / np.where(on_axis, 1.0, rho))
-    cp = np.cos(pitch) * np.where(on_axis | (r > 0), 1.0, -1.0)
-    norm = np.hypot(sp, cp)
-    sp, cp = sp / norm, cp / norm
-    c0, s0 = np.cos(fam.phi0), np.sin(fam.phi0)
-    c, s = cp * c0 + sp * s0, sp * c0 - cp * s0
-    return c, s, np.arctan2(s, c)
-
-
-def _fill(chain: Chain, fam: PlanarFamily, q0: F64, alphas: list[F64], out: F64) -> Bool:
-    """Write base and planar angles into ``out`` (N, dof), wrapped into limits; the fit mask."""
-    cols = ([fam.base] if fam.base is not None else []) + list(fam.planar)
-    values = ([q0] if fam.base is not None else []) + [
-        s * a for s, a in zip(fam.sigma, alphas, strict=True)
-    ]
-    ok = np.ones(len(q0), dtype=bool)
-    for j, v in zip(cols, values, strict=True):
-        lo, hi = chain.lower[j] - _SLACK, chain.upper[j] + _SLACK
-        w = v - _TWO_PI * np.round(v / _TWO_PI)  # the turn in [-pi, pi], then one more if needed
-        w += np.where(w < lo, _TWO_PI, np.where(w > hi, -_TWO_PI, 0.0))
-        if lo < -np.pi or hi > np.pi:  # a range wider than that: keep an angle already inside
-            w = np.where((v >= lo) & (v <= hi), v, w)
-        inside = (w >= lo) & (w <= hi)
-        out[:, j] = np.clip(w, chain.lower[j], chain.upper[j])
-        ok &= inside
-    return ok
-
-
-def _pitch_ok(fam: PlanarFamily, turn: F64, r: F64, rho: F64, pitch: F64) -> Bool:
-    phi = fam.phi0 + turn
-    along = np.where(
-        np.abs(r) < 1e-12, np.abs(np.cos(phi)), np.cos(phi) * r / np.where(rho < 1e-12, 1, rho)
-    )
-    got = np.arctan2(np.sin(phi), along)
-    return np.asarray(np.abs(np.remainder(got - pitch + np.pi, _TWO_PI) - np.pi) < 1e-7)
+def _pitch_ok(fam: PlanarFamily, turn: F64, b: Planes, pitch: F64) -> Bool:
+    """Where the plane turns [rad] of a 2-joint planar chain give ``pitch`` (N,) [rad]."""
+    got = pitch_of_phi(np.cos(fam.phi0 + turn), np.sin(fam.phi0 + turn), b.r, b.rho)
+    pitch = np.tile(pitch, len(b.r) // len(pitch))
+    return np.asarray(np.abs(np.remainder(got - pitch + np.pi, TWO_PI) - np.pi) < 1e-7)

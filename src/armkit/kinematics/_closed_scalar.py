@@ -1,13 +1,10 @@
-"""Closed-form IK for one target in plain floats: the scalar fast path of ``_closed``.
+"""Closed-form IK for one target: position only, and the errors that say why not.
 
-Base branches: the arm faces the target (r > 0) or reaches over its shoulder
-(r < 0). Elbow branches: the law of cosines' two signs. Every candidate is
-wrapped into the joint limits by whole turns and kept only if it fits.
 Without a pitch (3 planar joints) the pitch is the one nearest the seed's at
-which the arm fits: first the nearest at which the wrist point is within the
-links' reach (``annulus_arcs``); if the limits refuse it, the nearest of the
-pitches where a limit or the reach begins (``_pitch_range.candidates``) that fits.
-Tests pin this path to the vectorised solver, which is the reference.
+which the arm fits (see ``_pitch_range``): first the nearest at which the wrist
+point is within the links' reach, by the chain's scalar ``nearest``; where a
+joint limit refuses that one, the vectorised ``boundary_pitch`` on this one
+target.
 """
 
 from __future__ import annotations
@@ -16,11 +13,41 @@ import math
 
 from .._errors import Reason, UnreachableError
 from ._chain import Chain
-from ._closed_fast import Found, Misses, Q, wrap_into
+from ._closed_fast import Found, Misses, Q, fit
 from ._family import PlanarFamily
-from ._planar import pitch_for_phi, planes
+from ._pitch_range import Floats, boundary_pitch
+from ._pose import pitch_scalar
 
-_TWO_PI = 2.0 * math.pi
+
+def free(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
+    """Position only (3 planar joints): every solution at the pitch nearest the seed's at
+    which the arm fits, unsorted; [] if none."""
+    want = chain.home_pitch if seed == chain.home else preferred(chain, seed)
+    solve, nearest = chain.fixed, chain.nearest
+    assert solve is not None
+    at: float | None = want
+    if nearest is not None:  # the nearest pitch with the wrist point within reach
+        at = nearest(x, y, z, want, seed[0])
+        if at is None:  # out of reach at every pitch
+            return []
+    found = solve(x, y, z, at, seed, None)
+    if found:
+        return found
+    assert chain.ways is not None and chain.family is not None
+    if isinstance(ways := chain.ways(x, y, z, seed), str):
+        return found
+    gap, base = math.inf, chain.family.base
+    for r, q0 in ways:  # a joint limit is in the way: the nearest boundary point that fits
+        if base is None or fit(q0, chain.lower[base], chain.upper[base]) is not None:
+            d, pitch = boundary_pitch(chain, chain.family, r, z, math.hypot(x, y), want, Floats)
+            gap, at = (d, pitch) if d < gap else (gap, at)
+    return solve(x, y, z, at, seed, None) if gap < math.inf else []
+
+
+def preferred(chain: Chain, seed: Q) -> float:
+    """The pitch [rad] of the tool at joint angles ``seed``."""
+    st = chain.state(list(seed))
+    return pitch_scalar(st.R[0], st.p)
 
 
 def refusal(
@@ -33,110 +60,6 @@ def refusal(
         pitch = preferred(chain, seed)
     misses = Misses()
     chain.fixed(p[0], p[1], p[2], pitch, seed, misses)
-    return unreachable(chain, p, pitch, misses)
-
-
-def preferred(chain: Chain, seed: Q) -> float:
-    """The pitch [rad] of the tool at joint angles ``seed``."""
-    st = chain.state(list(seed))
-    (ax, ay, az), (px, py, _) = st.R[0], st.p
-    rho = math.hypot(px, py)
-    h = (ax * px + ay * py) / rho if rho >= 1e-9 else math.hypot(ax, ay)
-    return math.atan2(az, h)
-
-
-def free(chain: Chain, fam: PlanarFamily, x: float, y: float, z: float, seed: Q) -> Found:
-    """Position only (3 planar joints): every solution at the pitch nearest the seed's at
-    which the arm fits, unsorted; [] if none."""
-    want = chain.home_pitch if seed == chain.home else preferred(chain, seed)
-    assert chain.fixed is not None
-    at: float | None = want
-    if chain.nearest is not None:  # the nearest pitch with the wrist point within reach
-        at = chain.nearest(x, y, z, want, seed[0])
-        if at is None:  # out of reach at every pitch
-            return []
-    return chain.fixed(x, y, z, at, seed, None) or _exact(chain, fam, x, y, z, seed, want)
-
-
-def _exact(
-    chain: Chain, fam: PlanarFamily, x: float, y: float, z: float, seed: Q, want: float
-) -> Found:
-    """The nearest fitting pitch among those where the fit can change: the scalar form of
-    ``_pitch_range.candidates`` (see there), tried nearest ``want`` first."""
-    assert chain.fixed is not None
-    branches = planes(fam, x, y, z, seed[fam.base] if fam.base is not None else 0.0)
-    if isinstance(branches, str):
-        return []
-    (v1x, v1z), (v2x, v2z), (v3x, v3z) = fam.links
-    l1, l2, l3, ang3 = fam.l1, fam.l2, math.hypot(v3x, v3z), math.atan2(v3z, v3x)
-    (s1, s2, s3), (j1, j2, j3) = fam.sigma, fam.planar
-    lo_d, hi_d = chain.wrist_reach
-    elbow = [
-        math.hypot(l1 + l2 * math.cos(s2 * a + fam.bend), l2 * math.sin(s2 * a + fam.bend))
-        for a in (chain.lower[j2], chain.upper[j2])
-    ]
-    radii = sorted({lo_d, hi_d, *(d for d in elbow if lo_d < d < hi_d)})
-    pitches = []
-    for r, rho, q0 in branches:
-        if (
-            fam.base is not None
-            and wrap_into(q0, chain.lower[fam.base], chain.upper[fam.base]) is None
-        ):
-            continue
-        tx, tz = r - fam.c1[0], z - fam.c1[1]
-        turns = [t for d in radii for t in _circles(tx, tz, l3, ang3, d)]
-        for a in (chain.lower[j1], chain.upper[j1]):  # shoulder at a limit
-            c, s = math.cos(s1 * a), math.sin(s1 * a)
-            turns += _circles(tx - (c * v1x - s * v1z), tz - (s * v1x + c * v1z), l3, ang3, l2)
-        for a in (chain.lower[j3], chain.upper[j3]):  # wrist at a limit
-            c, s = math.cos(s3 * a), math.sin(s3 * a)
-            ux, uz = v2x + c * v3x - s * v3z, v2z + s * v3x + c * v3z
-            turns += [
-                t + s3 * a for t in _circles(tx, tz, math.hypot(ux, uz), math.atan2(uz, ux), l1)
-            ]
-        pitches += [pitch_for_phi(fam.phi0 + t, r, rho) for t in turns]
-    pitches.sort(key=lambda p: abs(math.remainder(p - want, _TWO_PI)))
-    for pitch in pitches:
-        found = chain.fixed(x, y, z, pitch, seed, None)
-        if found:
-            return found
-    return []
-
-
-def _circles(tx: float, tz: float, length: float, angle: float, radius: float) -> list[float]:
-    """Turns t [rad] with |T - R(t) v| = radius, T = (tx, tz), v of ``length`` at ``angle``."""
-    big = math.hypot(tx, tz)
-    c = (big * big + length * length - radius * radius) / max(2.0 * big * length, 1e-300)
-    if abs(c) > 1.0 + 1e-12:
-        return []
-    u, base = math.acos(min(1.0, max(-1.0, c))), math.atan2(tz, tx) - angle
-    return [base + u, base - u]
-
-
-def _num(v: float) -> str:
-    """A number for a message: one decimal, or 3 significant digits when huge."""
-    return f"{v:.1f}" if abs(v) < 1e6 else f"{v:.3g}"
-
-
-def where(p: Q, pitch: float | None) -> str:
-    """The target in the user's units, briefly: '(x, y, z) mm at pitch P deg'."""
-    mm = [v * 1000.0 for v in p]
-    if all(math.isfinite(v) for v in mm):
-        text = "(" + ", ".join(_num(v) for v in mm) + ") mm"
-    else:  # too far for millimetres in a float: metres
-        text = "(" + ", ".join(f"{v:.3g}" for v in p) + ") m"
-    return text if pitch is None else text + f" at pitch {_num(math.degrees(pitch))} deg"
-
-
-def too_far(chain: Chain, p: Q, pitch: float | None) -> UnreachableError:
-    """The error for a target beyond every pose's reach."""
-    return UnreachableError(
-        f"{chain.name} cannot reach {where(p, pitch)}: {EXPLAIN['too_far']}", reason="too_far"
-    )
-
-
-def unreachable(chain: Chain, p: Q, pitch: float | None, misses: Misses) -> UnreachableError:
-    """The error for a target no candidate reaches: the nearest limit miss, or the reason."""
     if misses.violations:
         _, i, value = min(misses.violations)
         lo, hi = math.degrees(chain.lower[i]), math.degrees(chain.upper[i])
@@ -150,6 +73,28 @@ def unreachable(chain: Chain, p: Q, pitch: float | None, misses: Misses) -> Unre
     return UnreachableError(
         f"{chain.name} cannot reach {where(p, pitch)}: {EXPLAIN[reason]}", reason=reason
     )
+
+
+def too_far(chain: Chain, p: Q, pitch: float | None) -> UnreachableError:
+    """The error for a target beyond every pose's reach."""
+    return UnreachableError(
+        f"{chain.name} cannot reach {where(p, pitch)}: {EXPLAIN['too_far']}", reason="too_far"
+    )
+
+
+def where(p: Q, pitch: float | None) -> str:
+    """The target in the user's units, briefly: '(x, y, z) mm at pitch P deg'."""
+    mm = [v * 1000.0 for v in p]
+    if all(math.isfinite(v) for v in mm):
+        text = "(" + ", ".join(_num(v) for v in mm) + ") mm"
+    else:  # too far for millimetres in a float: metres
+        text = "(" + ", ".join(f"{v:.3g}" for v in p) + ") m"
+    return text if pitch is None else text + f" at pitch {_num(math.degrees(pitch))} deg"
+
+
+def _num(v: float) -> str:
+    """A number for a message: one decimal, or 3 significant digits when huge."""
+    return f"{v:.1f}" if abs(v) < 1e6 else f"{v:.3g}"
 
 
 EXPLAIN: dict[Reason, str] = {

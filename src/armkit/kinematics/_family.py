@@ -135,3 +135,22 @@ def _geometry(
         ang1=ang1,
         bend=math.atan2(v2z, v2x) - ang1,
     )
+
+
+def wrist_range(fam: PlanarFamily, lower: float, upper: float) -> tuple[float, float]:
+    """Smallest and largest distance [m] from the first planar joint to the end of
+    link 2 that the second planar joint's limits [rad] allow (both elbow branches)."""
+    ends = sorted((fam.sigma[1] * lower + fam.bend, fam.sigma[1] * upper + fam.bend))
+    full = upper - lower >= 2.0 * math.pi
+
+    def contains(angle: float) -> bool:
+        return full or (angle - ends[0]) % (2.0 * math.pi) <= ends[1] - ends[0]
+
+    cos_ends = (math.cos(ends[0]), math.cos(ends[1]))
+    c_max = 1.0 if contains(0.0) else max(cos_ends)
+    c_min = -1.0 if contains(math.pi) else min(cos_ends)
+    l1, l2 = fam.l1, fam.l2
+    return (
+        math.sqrt(max(l1 * l1 + l2 * l2 + 2 * l1 * l2 * c_min, 0.0)),
+        math.sqrt(max(l1 * l1 + l2 * l2 + 2 * l1 * l2 * c_max, 0.0)),
+    )

@@ -63,13 +63,16 @@ def ik(
         InputError: malformed input (a ValueError), naming the argument.
     """
     chain = chain_of(model)
-    if isinstance(position, Target):
-        position, pitch, orientation = _unpack(position, pitch, orientation)
-    p = point(position)
-    if not (type(pitch) is float and pitch - pitch == 0.0):  # else: a finite float already
-        pitch = angle(pitch, "pitch")
-    if p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > chain.reach2:
-        raise too_far(chain, p, pitch)
+    if isinstance(position, tuple) and len(position) == 3:  # the common case, without a call
+        x, y, z = position
+        ok = type(x) is float and type(y) is float and type(z) is float
+        p = position if ok and x - x == 0.0 and y - y == 0.0 and z - z == 0.0 else point(position)
+    else:
+        if isinstance(position, Target):
+            position, pitch, orientation = _unpack(position, pitch, orientation)
+        p = point(position)
+    if pitch is not None and not (type(pitch) is float and pitch - pitch == 0.0):
+        pitch = angle(pitch, "pitch")  # else: None or a finite float already
     if q_seed is None:
         seed = chain.home
     elif isinstance(q_seed, np.ndarray) and q_seed.shape == (chain.dof,) and q_seed.dtype == float:
@@ -78,21 +81,23 @@ def ik(
             raise InputError("q_seed must be finite [rad], got NaN or infinity")
     else:
         seed = tuple(joints(q_seed, chain.dof, "q_seed", False).tolist())
-    if orientation is None and (method == "auto" or method == "analytic"):
-        fam = chain.family
+    solve = chain.fixed
+    if solve is not None and orientation is None and (method == "auto" or method == "analytic"):
         if pitch is None:
             pitch = chain.default_pitch
-        if fam is not None and chain.fixed is not None:
-            if pitch is not None or len(fam.planar) == 2:
-                found = chain.fixed(p[0], p[1], p[2], pitch, seed, None)
-            else:
-                found = free(chain, fam, p[0], p[1], p[2], seed)
-            if not found:
-                raise refusal(chain, fam, p, pitch, seed)
-            return IKResult.of(
-                tuple(found), "analytic", tuple.__new__(Goal, (p, pitch, None)), chain
-            )
-    elif orientation is None and pitch is None:
+        if pitch is not None or not chain.free_pitch:
+            found = solve(p[0], p[1], p[2], pitch, seed, None)
+        else:  # (a far target finds nothing and is refused as such below)
+            found = free(chain, p[0], p[1], p[2], seed)
+        if not found:
+            if not p[0] * p[0] + p[1] * p[1] + p[2] * p[2] <= chain.reach2:
+                raise too_far(chain, p, pitch)
+            assert chain.family is not None
+            raise refusal(chain, chain.family, p, pitch, seed)
+        return IKResult.of(found, (p, pitch, None), chain)
+    if p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > chain.reach2:
+        raise too_far(chain, p, pitch)
+    if orientation is None and pitch is None:
         pitch = chain.default_pitch
     use = _numeric_method(chain, method, orientation)
     R = None if orientation is None else rotation(orientation, "orientation")
@@ -189,20 +194,23 @@ def ik_batch(
 
 def _closed_batch(chain: Chain, fam: Any, P: F64, pitch: F64 | None, seed: F64) -> IKBatchResult:
     """The vectorised closed form over cache-sized chunks of targets, with reasons."""
-    q, ok = np.full((len(P), chain.dof), np.nan), np.zeros(len(P), dtype=bool)
-    reason = np.full(len(P), "", dtype="<U11")
     free = pitch is None and len(fam.planar) == 3
-    if free:  # whole batch at once: its rounds over the few hard targets cost per round
+    if free:
         q, ok = free_batch(chain, fam, P, seed)
-    for s in range(0, len(P), CHUNK):
-        part, sd = P[s : s + CHUNK], seed[s : s + CHUNK]
-        at = None if pitch is None else pitch[s : s + CHUNK]
-        if not free:
+    else:
+        q, ok = np.full((len(P), chain.dof), np.nan), np.zeros(len(P), dtype=bool)
+        for s in range(0, len(P), CHUNK):
+            part, sd, at = (
+                P[s : s + CHUNK],
+                seed[s : s + CHUNK],
+                None if pitch is None else pitch[s : s + CHUNK],
+            )
             q[s : s + CHUNK], ok[s : s + CHUNK] = best(solve(chain, fam, part, at, sd), sd)
-        bad = np.flatnonzero(~ok[s : s + CHUNK])
-        if bad.size:  # why not: the candidates at the asked (or the seed's) pitch
-            at = preferred(chain, sd[bad]) if free else (None if at is None else at[bad])
-            reason[s + bad] = reasons(fam, solve(chain, fam, part[bad], at, sd[bad]))
+    reason = np.full(len(P), "", dtype="<U11")
+    bad = np.flatnonzero(~ok)
+    if bad.size:  # why not: the candidates at the asked (or the seed's) pitch
+        at = preferred(chain, seed[bad]) if free else (None if pitch is None else pitch[bad])
+        reason[bad] = reasons(fam, solve(chain, fam, P[bad], at, seed[bad]))
     return IKBatchResult(q=q, ok=ok, reason=reason, method="analytic")
 
 

@@ -1,53 +1,77 @@
 """Position-only closed form (3 planar joints): the pitch nearest the seed's that fits.
 
-In the arm's plane the wrist point (the end of link 2) lies on a circle of
-the last link's length around the target; as the pitch turns, it moves round
-that circle. The arm fits where the wrist point is within the two links'
-annulus around the first planar joint and every joint is inside its limits.
-Each boundary of that set is where the wrist point's distance reaches one of
-a few radii (the annulus and the elbow's limits), where the shoulder sits at
-a limit (the elbow point is then fixed: the wrist lies at link 2's length
-from it), or where the wrist joint sits at a limit (links 2 and 3 then form
-one rigid link) - each the intersection of two circles, in closed form.
-The nearest pitch that fits is the seed's own, or the nearest of those
-boundaries that fits. First tried: the nearest pitch at which the wrist point
-is inside the annulus (``nearest_reachable``), which fits on most targets.
+In the arm's plane the wrist point W (the end of link 2) lies on the circle of
+the last link's length around the target; as the pitch turns, W moves round
+that circle. The arm fits where W is within the two links' annulus around the
+first planar joint and every joint is inside its limits. The nearest fitting
+pitch is the seed's own, or one where the fit changes: where the elbow sits at
+a limit or straight or folded (W then at a known distance from the shoulder),
+where the shoulder sits at a limit (W at link 2's length from a fixed elbow
+point), or where the wrist sits at a limit (links 2 and 3 then one rigid link,
+at its length from the target) - each the meeting of two circles, in closed
+form. First taken, and enough for most targets: the nearest pitch at which W
+is within the annulus (``nearest_reachable``, and the chain's scalar
+``nearest``). Where a joint limit refuses it, every boundary point is checked
+by dot products of the links (no angle computed) and the nearest that fits is
+taken (``boundary_pitch``): written once for lanes that are Python floats (one
+target's base branch) or arrays (many at once).
 """
 
 from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ._chain import Chain
-from ._closed import Branches, best, branches, solve
+from ._closed import TWO_PI, Planes, best, pitch_of_phi, planes, solve, turn_of, wrap
 from ._family import PlanarFamily
-from ._forward import sweep
+from ._forward import CHUNK, sweep
 from ._pose import pitch_of
 
 F64 = NDArray[np.float64]
 Bool = NDArray[np.bool_]
-_TWO_PI = 2.0 * np.pi
+Lane = Any  # a float, or an array of floats: one value per lane
+_CHECK = 0.5e-9  # [rad]: a boundary point fits within half the solvers' slack
+
+
+class Floats:
+    """numpy's names for the functions ``boundary_pitch`` uses, on Python floats."""
+
+    sqrt = staticmethod(math.sqrt)
+    cos = staticmethod(math.cos)
+    sin = staticmethod(math.sin)
+    arctan2 = staticmethod(math.atan2)
+
+    @staticmethod
+    def where(c: bool, a: float, b: float) -> float:
+        return a if c else b
 
 
 def free_batch(chain: Chain, fam: PlanarFamily, P: F64, seed: F64) -> tuple[F64, Bool]:
     """Best solution per target [rad] (N, dof) (NaN rows where none) and ok (N,)."""
-    want = preferred(chain, seed)
-    b = branches(fam, P, seed)
-    pitch, has = nearest_reachable(chain, fam, b, P[:, 2], want)
-    q, ok = best(solve(chain, fam, P, pitch, seed), seed)
-    idx = np.flatnonzero(~ok & has)
-    trials = candidates(chain, fam, P[idx], seed[idx], want[idx]) if idx.size else None
-    still = np.ones(idx.size, dtype=bool)
-    for k in range(0 if trials is None else trials.shape[1]):
-        assert trials is not None
-        live = np.isfinite(trials[:, k]) & still
-        if not live.any():
-            break
-        sub = idx[live]
-        qs, oks = best(solve(chain, fam, P[sub], trials[live, k], seed[sub]), seed[sub])
-        q[sub[oks]], ok[sub[oks]] = qs[oks], True
-        still[np.flatnonzero(live)[oks]] = False
+    q, ok = np.full((len(P), chain.dof), np.nan), np.zeros(len(P), dtype=bool)
+    want, has = preferred(chain, seed), np.zeros(len(P), dtype=bool)
+    for s in range(0, len(P), CHUNK):
+        part, sd = P[s : s + CHUNK], seed[s : s + CHUNK]
+        b = planes(fam, part, sd)
+        pitch, has[s : s + CHUNK] = nearest_reachable(chain, fam, b, want[s : s + CHUNK])
+        q[s : s + CHUNK], ok[s : s + CHUNK] = best(solve(chain, fam, part, pitch, sd, b), sd)
+    hard = np.flatnonzero(~ok & has)
+    for s in range(0, len(hard), 4 * CHUNK):  # large lanes: boundary_pitch loops per point
+        i = hard[s : s + 4 * CHUNK]
+        b = planes(fam, P[i], seed[i])
+        gap, at = boundary_pitch(chain, fam, b.r, b.z, b.rho, np.tile(want[i], len(b.r) // len(i)))
+        gap = np.where(
+            _base_fits(chain, fam, b.q0) & ~np.tile(b.bad, len(b.r) // len(i)), gap, np.inf
+        )
+        k = np.argmin(b.per_target(gap), axis=0)
+        at = b.per_target(at)[k, np.arange(len(i))]
+        q[i], ok[i] = best(solve(chain, fam, P[i], at, seed[i], b), seed[i])
+        ok[i] &= np.isfinite(b.per_target(gap).min(axis=0))
     return q, ok
 
 
@@ -58,95 +82,162 @@ def preferred(chain: Chain, seed: F64) -> F64:
     return np.asarray(pitch_of(sweep(chain, seed).T), dtype=np.float64)
 
 
-def _to_pitch(fam: PlanarFamily, turn: F64, r: F64, rho: F64) -> F64:
-    """Pitch [rad] of plane turns (see ``_planar.pitch_for_phi``), broadcast."""
-    phi = fam.phi0 + turn
-    if fam.lateral == 0.0 and not (rho < 1e-12).any():  # pitch = phi, or pi - phi reaching back
-        return np.asarray(np.remainder(np.where(r >= 0, phi, np.pi - phi) + np.pi, _TWO_PI) - np.pi)
-    c = np.cos(phi)
-    axis = (np.abs(r) < 1e-12) | (rho < 1e-12)
-    along = np.where(axis, np.abs(c), c * r / np.where(axis, 1.0, rho))
-    return np.asarray(np.arctan2(np.sin(phi), along))
+def nearest_reachable(chain: Chain, fam: PlanarFamily, b: Planes, want: F64) -> tuple[F64, Bool]:
+    """Per target the pitch [rad] nearest ``want`` at which the wrist point is within reach
+    of the first two links (and the base inside its limits), and whether there is one.
 
-
-def _base_ok(chain: Chain, fam: PlanarFamily, q0: F64) -> Bool:
-    if fam.base is None:
-        return np.ones(len(q0), dtype=bool)
-    lo, hi = chain.lower[fam.base], chain.upper[fam.base]
-    w = lo + np.remainder(q0 - lo, _TWO_PI)
-    return np.asarray((w <= hi + 1e-9) | ((q0 >= lo - 1e-9) & (q0 <= hi + 1e-9)))
-
-
-def nearest_reachable(
-    chain: Chain, fam: PlanarFamily, b: Branches, z: F64, want: F64
-) -> tuple[F64, Bool]:
-    """Per target the pitch nearest ``want`` at which the wrist point is within reach of
-    the first two links (and the base inside its limits), and whether there is one."""
-    out, dist = want.copy(), np.full(len(z), np.inf)
+    With u the turn from the one at which the wrist point is nearest the shoulder, its
+    distance d follows d^2 = D^2 + L3^2 - 2 D L3 cos u: within reach where cos u lies in
+    [c_lo, c_hi], so the nearest u is a clamp of cos u (the sign of sin u kept).
+    """
     lo_d, hi_d = chain.wrist_reach
-    (v3x, v3z), c1 = fam.links[2], fam.c1
-    l3, ang3 = np.hypot(v3x, v3z), np.arctan2(v3z, v3x)
-    for r, q0 in zip(b.r, b.q0, strict=True):
-        tx, tz = r - c1[0], z - c1[1]
-        big = np.hypot(tx, tz)
-        k = np.maximum(2.0 * big * l3, 1e-300)
-        c_lo = (big * big + l3 * l3 - hi_d * hi_d) / k
-        c_hi = (big * big + l3 * l3 - lo_d * lo_d) / k
-        empty = (c_lo > 1.0 + 1e-12) | (c_hi < -1.0 - 1e-12) | ~_base_ok(chain, fam, q0) | b.bad
-        u_in, u_out = np.arccos(np.clip(c_hi, -1, 1)), np.arccos(np.clip(c_lo, -1, 1))
-        shift = np.arctan2(tz, tx) - ang3
-        for start, end in ((shift + u_in, shift + u_out), (shift - u_out, shift - u_in)):
-            a, e = _to_pitch(fam, start, r, b.rho), _to_pitch(fam, end, r, b.rho)
-            lo, hi = np.where(r >= 0, a, e), np.where(r >= 0, e, a)
-            span = np.remainder(hi - lo, _TWO_PI)
-            d = np.remainder(want - lo, _TWO_PI)
-            to_hi, to_lo = d - span, _TWO_PI - d
-            pick = np.where(d <= span, want, np.where(to_hi < to_lo, lo + span, lo))
-            gap = np.where(d <= span, 0.0, np.minimum(to_hi, to_lo))
-            better = ~empty & (gap < dist)
-            out, dist = np.where(better, pick, out), np.where(better, gap, dist)
-    return out, np.isfinite(dist)
+    (v3x, v3z), (c1x, c1z) = fam.links[2], fam.c1
+    l3, ang3 = math.hypot(v3x, v3z), math.atan2(v3z, v3x)
+    ck, sk, cp, sp = math.cos(ang3), math.sin(ang3), math.cos(fam.phi0), math.sin(fam.phi0)
+    tx, tz = b.r - c1x, b.z - c1z
+    big = np.sqrt(tx * tx + tz * tz)
+    k = np.maximum(2.0 * big * l3, 1e-300)
+    c_lo, c_hi = (big * big + l3 * l3 - hi_d * hi_d) / k, (big * big + l3 * l3 - lo_d * lo_d) / k
+    empty = (c_lo > 1.0 + 1e-12) | (c_hi < -1.0 - 1e-12) | ~_base_fits(chain, fam, b.q0)
+    cs, ss = (tx * ck + tz * sk) / big, (tz * ck - tx * sk) / big  # where W is nearest
+    c, s, _ = turn_of(fam, want, b)
+    cu, su = c * cs + s * ss, s * cs - c * ss  # u at want
+    clamped = np.clip(cu, c_lo, c_hi)
+    with np.errstate(invalid="ignore"):
+        su = np.where(clamped == cu, su, np.copysign(np.sqrt(1.0 - clamped * clamped), su))
+    ct, st = clamped * cs - su * ss, su * cs + clamped * ss  # the turn at u
+    wants = np.tile(want, len(b.r) // len(want))
+    pitch = np.where(
+        clamped == cu, wants, pitch_of_phi(ct * cp - st * sp, st * cp + ct * sp, b.r, b.rho)
+    )
+    gap = b.per_target(
+        np.where(empty | np.tile(b.bad, len(b.r) // len(want)), np.inf, _gap(pitch, wants, np))
+    )
+    i, cols = np.argmin(gap, axis=0), np.arange(len(want))
+    found = np.isfinite(gap[i, cols])
+    return np.where(found, b.per_target(pitch)[i, cols], want), found
 
 
-def candidates(chain: Chain, fam: PlanarFamily, P: F64, seed: F64, want: F64) -> F64:
-    """Pitches [rad] where the arm's fit can change, shape (N, K), nearest ``want`` first
-    (NaN where none), for targets P (N, 3) [m] and seeds (N, dof) [rad]."""
-    b = branches(fam, P, seed)
+def boundary_pitch(
+    chain: Chain, fam: PlanarFamily, r: Lane, z: Lane, rho: Lane, want: Lane, xp: Any = np
+) -> tuple[Lane, Lane]:
+    """Per lane - one base branch of a target: plane radius r (signed), height z and
+    horizontal distance rho [m] - the boundary point that fits nearest ``want`` [rad]: how
+    far (a number that grows with the distance; inf where none fits) and its pitch [rad].
+    Lanes are floats (``xp = Floats``) or arrays (``xp = numpy``)."""
+    tx, tz = r - fam.c1[0], z - fam.c1[1]
+    (v3x, v3z), l3 = fam.links[2], math.hypot(*fam.links[2])
+    k = fam.phi0 - math.atan2(v3z, v3x)  # the approach's angle in the plane less link 3's
+    ranges, r_rho = _ranges(chain, fam), r / xp.where(rho < 1e-12, 1.0, rho)
+    on_axis = (rho < 1e-12) | (abs(r) < 1e-12)
+    if fam.lateral or np.any(on_axis):  # the pitch's own distance from want
+        wx3 = wz3 = None
+    else:  # pitch = +-(approach angle) + a constant: nearest where link 3 is nearest want's
+        c, s = xp.where(r > 0, 1.0, -1.0) * xp.cos(want), xp.sin(want)  # the approach at want
+        wx3, wz3 = c * math.cos(k) + s * math.sin(k), s * math.cos(k) - c * math.sin(k)
+    gap, bx, bz = math.inf + 0.0 * tx, 0.0 * tx, 0.0 * tx
+    for wx, wz, ex, ez in _boundaries(chain, fam, tx, tz, xp):
+        l3x, l3z = tx - wx, tz - wz
+        if wx3 is None:
+            d = _gap(_pitch(l3x, l3z, k, l3, on_axis, r_rho, xp), want, xp)
+        else:
+            d = -(l3x * wx3 + l3z * wz3)
+        better = _fits(ranges, (ex, ez), (wx - ex, wz - ez), (l3x, l3z)) & (d < gap)
+        gap, bx, bz = xp.where(better, d, gap), xp.where(better, l3x, bx), xp.where(better, l3z, bz)
+    return gap, _pitch(bx, bz, k, l3, on_axis, r_rho, xp)
+
+
+def _pitch(l3x: Lane, l3z: Lane, k: float, l3: float, on_axis: Lane, r_rho: Lane, xp: Any) -> Lane:
+    """The pitch [rad] at which link 3 is (l3x, l3z) [m] in the plane (see ``pitch_of_phi``)."""
+    c, s = (
+        (l3x * math.cos(k) - l3z * math.sin(k)) / l3,
+        (l3x * math.sin(k) + l3z * math.cos(k)) / l3,
+    )
+    return xp.arctan2(s, xp.where(on_axis, abs(c), c * r_rho))
+
+
+def _gap(pitch: Lane, want: Lane, xp: Any) -> Lane:
+    """|pitch - want| [rad] round the circle, for pitches and ``want`` in [-pi, pi]."""
+    d = abs(pitch - want)
+    return xp.where(d > math.pi, TWO_PI - d, d)
+
+
+def _base_fits(chain: Chain, fam: PlanarFamily, q0: F64) -> Bool:
+    """Where the base angles q0 [rad] are inside the base's limits by whole turns."""
+    if fam.base is None or chain.upper[fam.base] - chain.lower[fam.base] >= TWO_PI:
+        return np.ones(len(q0), dtype=bool)
+    return wrap(q0, chain.lower[fam.base], chain.upper[fam.base])[1]
+
+
+def _boundaries(
+    chain: Chain, fam: PlanarFamily, tx: Lane, tz: Lane, xp: Any
+) -> Iterator[tuple[Lane, Lane, Lane, Lane]]:
+    """Where the fit can change along the wrist circle about T = (tx, tz) [m]: per boundary
+    point the wrist point W and the elbow point E, x and z each [m] (NaN where none)."""
     (v1x, v1z), (v2x, v2z), (v3x, v3z) = fam.links
-    l1, l2, l3, ang3 = fam.l1, fam.l2, np.hypot(v3x, v3z), np.arctan2(v3z, v3x)
-    s1, s2, s3 = fam.sigma
-    j1, j2, j3 = fam.planar
-    elbow = [
-        np.hypot(l1 + l2 * np.cos(s2 * a + fam.bend), l2 * np.sin(s2 * a + fam.bend))
-        for a in (chain.lower[j2], chain.upper[j2])
-    ]
-    lo_d, hi_d = chain.wrist_reach  # the annulus; inside it the elbow's limits
-    radii = sorted({lo_d, hi_d, *(d for d in elbow if lo_d < d < hi_d)})
+    l1, l2, l3 = fam.l1, fam.l2, math.hypot(v3x, v3z)
+    (j1, j2, j3), (s1, s2, s3) = fam.planar, fam.sigma
+    lo, hi = sorted((s2 * chain.lower[j2] + fam.bend, s2 * chain.upper[j2] + fam.bend))
+    for b in {lo, hi} | {b for b in (0.0, math.pi) if (b - lo) % TWO_PI <= hi - lo}:
+        x, y = l1 + l2 * math.cos(b), l2 * math.sin(b)  # elbow at a limit, straight or folded:
+        d = math.hypot(x, y)  # W at distance d, E turned from W by a constant
+        if d > 1e-12:
+            for wx, wz in _meet(0.0, 0.0, d, tx, tz, l3, xp):
+                yield wx, wz, (x * wx + y * wz) * (l1 / d / d), (x * wz - y * wx) * (l1 / d / d)
+    for a in (chain.lower[j1], chain.upper[j1]):  # shoulder at a limit: E fixed
+        ex, ez = (
+            math.cos(s1 * a) * v1x - math.sin(s1 * a) * v1z,
+            math.sin(s1 * a) * v1x + math.cos(s1 * a) * v1z,
+        )
+        for wx, wz in _meet(ex, ez, l2, tx, tz, l3, xp):
+            yield wx, wz, ex + 0.0 * wx, ez + 0.0 * wz
+    for a in (chain.lower[j3], chain.upper[j3]):  # wrist at a limit: links 2 and 3 make one
+        c, s = math.cos(s3 * a), math.sin(s3 * a)  # rigid link U; R U = T - E, R turns link 2
+        ux, uz = v2x + c * v3x - s * v3z, v2z + s * v3x + c * v3z
+        u2 = ux * ux + uz * uz
+        for ex, ez in _meet(0.0, 0.0, l1, tx, tz, math.sqrt(u2), xp):
+            rc, rs = (ux * (tx - ex) + uz * (tz - ez)) / u2, (ux * (tz - ez) - uz * (tx - ex)) / u2
+            yield ex + rc * v2x - rs * v2z, ez + rs * v2x + rc * v2z, ex, ez
+
+
+def _meet(
+    ax: float, az: float, ra: float, bx: Lane, bz: Lane, rb: float, xp: Any
+) -> tuple[tuple[Lane, Lane], tuple[Lane, Lane]]:
+    """Both points where the circle about (ax, az) of radius ra meets the circle about
+    (bx, bz) of radius rb [m] (NaN where they do not)."""
+    dx, dz = bx - ax, bz - az
+    d2 = dx * dx + dz * dz + 1e-300
+    along = (d2 + ra * ra - rb * rb) / (2.0 * d2)  # along the centre line, per its length
+    h2 = ra * ra / d2 - along * along
+    h = xp.where(h2 >= -1e-12, xp.sqrt(abs(h2)), math.nan)
+    mx, mz = ax + along * dx, az + along * dz
+    return (mx - h * dz, mz + h * dx), (mx + h * dz, mz - h * dx)
+
+
+Range = tuple[int, float, float, float]  # link k, its middle direction's cos, sin, least dot
+
+
+def _ranges(chain: Chain, fam: PlanarFamily) -> list[Range]:
+    """Per planar joint with a range under a turn: the direction its range's middle gives
+    its link k (from the plane's r axis, or the previous link), and the least dot product of
+    the link with it inside the range (lengths times the cosine of half the range) [m^2]."""
     out = []
-    for r, q0 in zip(b.r, b.q0, strict=True):
-        tx, tz = r - fam.c1[0], P[:, 2] - fam.c1[1]
-        turns = [_circles(tx, tz, l3, ang3, d) for d in radii]
-        for a in (chain.lower[j1], chain.upper[j1]):  # shoulder at a limit: elbow point fixed
-            ex = np.cos(s1 * a) * v1x - np.sin(s1 * a) * v1z
-            ez = np.sin(s1 * a) * v1x + np.cos(s1 * a) * v1z
-            turns.append(_circles(tx - ex, tz - ez, l3, ang3, l2))
-        for a in (chain.lower[j3], chain.upper[j3]):  # wrist at a limit: links 2 + 3 rigid
-            ux = v2x + np.cos(s3 * a) * v3x - np.sin(s3 * a) * v3z
-            uz = v2z + np.sin(s3 * a) * v3x + np.cos(s3 * a) * v3z
-            turns.append(_circles(tx, tz, np.hypot(ux, uz), np.arctan2(uz, ux), l1) + s3 * a)
-        pitch = _to_pitch(fam, np.concatenate(turns, axis=1), r[:, None], b.rho[:, None])
-        out.append(np.where(_base_ok(chain, fam, q0)[:, None], pitch, np.nan))
-    pitches = np.concatenate(out, axis=1)
-    gap = np.abs(np.remainder(pitches - want[:, None] + np.pi, _TWO_PI) - np.pi)
-    order = np.argsort(np.where(np.isfinite(gap), gap, np.inf), axis=1, kind="stable")
-    return np.take_along_axis(pitches, order, axis=1)
+    angles = [math.atan2(vz, vx) for vx, vz in fam.links]
+    for k, (j, s) in enumerate(zip(fam.planar, fam.sigma, strict=True)):
+        lo, hi = sorted((s * chain.lower[j], s * chain.upper[j]))
+        half = 0.5 * (hi - lo) + _CHECK
+        if half < math.pi:
+            mid = 0.5 * (lo + hi) + angles[k] - (angles[k - 1] if k else 0.0)
+            lengths = math.hypot(*fam.links[k]) * (math.hypot(*fam.links[k - 1]) if k else 1.0)
+            out.append((k, math.cos(mid), math.sin(mid), lengths * math.cos(half)))
+    return out
 
 
-def _circles(tx: F64, tz: F64, length: float | F64, angle: float | F64, radius: float) -> F64:
-    """Turns t (N, 2) with |T - R(t) v| = radius, T = (tx, tz), v of ``length`` at ``angle``
-    (NaN where the circles do not meet)."""
-    big = np.hypot(tx, tz)
-    c = (big * big + length * length - radius * radius) / np.maximum(2.0 * big * length, 1e-300)
-    u = np.arccos(np.where(np.abs(c) <= 1.0 + 1e-12, np.clip(c, -1.0, 1.0), np.nan))
-    base = np.arctan2(tz, tx) - angle
-    return np.stack([base + u, base - u], axis=1)
+def _fits(ranges: list[Range], *links: tuple[Lane, Lane]) -> Lane:
+    """Where every planar joint is inside its range, given links 1 (= E), 2 and 3 as vectors
+    [m]: each link's dot product with the direction of its range's middle."""
+    ok = links[2][0] == links[2][0]  # not NaN: the boundary point exists
+    for k, cm, sm, least in ranges:
+        (bx, bz), (px, pz) = links[k], (links[k - 1] if k else (1.0, 0.0))
+        ok = ok & ((px * cm - pz * sm) * bx + (px * sm + pz * cm) * bz >= least)
+    return ok

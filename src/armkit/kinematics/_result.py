@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Literal
 
@@ -9,9 +10,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ._chain import Chain
-from ._target import Goal, errors
+from ._target import Aim, errors
 
 F64 = NDArray[np.float64]
+Ranked = Sequence[tuple[float, tuple[float, ...]]]  # (distance to the seed, q) pairs
 Method = Literal["analytic", "lm", "ccd", "jacobian", "random"]
 METHODS: tuple[Method, ...] = ("analytic", "lm", "ccd", "jacobian", "random")
 
@@ -23,36 +25,32 @@ class IKResult:
     Attributes:
         ranked: every solution found as (squared joint distance to the seed [rad^2],
             joint angles [rad]) pairs, in any order (see ``solutions``).
+        goal: the target as solved (position [m], pitch [rad] or None, rotation or None).
+        chain: the arm's compiled chain, to measure the errors.
         method: the solver that produced it.
         iterations: solver iterations (0 for the closed form).
         restarts: restarts from new seeds (0 for the closed form).
-        goal: the target as solved (position [m], pitch [rad] or None, rotation or None).
-        chain: the arm's compiled chain, to measure the errors.
 
     The arrays and the errors are derived from these fields when read (``q``,
     ``solutions``, ``position_error``, ``angle_error``), so a closed-form call
     stays within microseconds; reading ``q`` costs about half a microsecond.
     """
 
-    ranked: tuple[tuple[float, tuple[float, ...]], ...]
-    method: Method
-    iterations: int
-    restarts: int
-    goal: Goal
+    ranked: Ranked
+    goal: Aim
     chain: Chain = field(repr=False)
+    method: Method = "analytic"
+    iterations: int = 0
+    restarts: int = 0
 
     @classmethod
-    def of(
-        cls, ranked: tuple[tuple[float, tuple[float, ...]], ...], method: Method, goal: Goal,
-        chain: Chain, iterations: int = 0, restarts: int = 0,
-    ) -> IKResult:  # fmt: skip
-        """The same as the constructor, without the frozen dataclass's per-field
-        ``object.__setattr__`` (0.5 us of a 4 us closed-form call)."""
+    def of(cls, ranked: Ranked, goal: Aim, chain: Chain) -> IKResult:
+        """A closed-form result, as the constructor builds it but without the frozen
+        dataclass's per-field ``object.__setattr__``: the defaults stay on the class
+        (a fifth of a 3.5 us closed-form call saved)."""
         self = object.__new__(cls)
-        self.__dict__.update(
-            ranked=ranked, method=method, iterations=iterations, restarts=restarts,
-            goal=goal, chain=chain,
-        )  # fmt: skip
+        d = self.__dict__
+        d["ranked"], d["goal"], d["chain"] = ranked, goal, chain
         return self
 
     @property

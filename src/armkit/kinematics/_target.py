@@ -38,20 +38,25 @@ class Target:
         return "position" if self.pitch is None else "position+pitch"
 
 
+Aim = tuple[tuple[float, float, float], "float | None", "tuple[float, ...] | None"]
+"""A checked single target in plain floats: p [m], pitch [rad] or None, R row-major or None
+(the closed form passes a bare tuple: cheaper to build than a ``Goal``)."""
+
+
 class Goal(NamedTuple):
-    """A checked single target in plain floats: p [m], pitch [rad] or None, R row-major or None."""
+    """An ``Aim`` with names."""
 
     p: tuple[float, float, float]
     pitch: float | None
     R: tuple[float, ...] | None
 
 
-def errors(goal: Goal, st: ChainState) -> tuple[float, float]:
+def errors(goal: Aim, st: ChainState) -> tuple[float, float]:
     """Position [m] and pitch or orientation [rad] error of a chain state for ``goal``."""
-    (px, py, pz), (gx, gy, gz) = st.p, goal.p
+    (px, py, pz), ((gx, gy, gz), pitch, R) = st.p, goal
     pos = math.sqrt((px - gx) ** 2 + (py - gy) ** 2 + (pz - gz) ** 2)
-    if goal.pitch is not None:
-        return pos, abs(math.remainder(pitch_scalar(st.R[0], st.p) - goal.pitch, 2 * math.pi))
-    if goal.R is not None:
-        return pos, rotation_angle(goal.R, st.R)
+    if pitch is not None:
+        return pos, abs(math.remainder(pitch_scalar(st.R[0], st.p) - pitch, 2 * math.pi))
+    if R is not None:
+        return pos, rotation_angle(R, st.R)
     return pos, 0.0

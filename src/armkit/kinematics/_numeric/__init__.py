@@ -43,7 +43,7 @@ def solve_one(
         UnreachableError: reason ``"too_far"``; NoSolutionError: ``"no_convergence"``;
             both with ``closest``, the best joint vector found [rad].
     """
-    task = Task(goal.p, goal.pitch, goal.R, chain.weight)
+    task = Task(*goal, chain.weight)
     attempt = SOLVERS[method](chain, task, seed, tol_pos, tol_ang, rng_seed)
     return finish(chain, method, task, attempt)
 

@@ -53,7 +53,7 @@ def finish(chain: Chain, method: Method, task: Task, attempt: Attempt) -> IKResu
     if attempt.converged:  # q's arrays are built when read (see IKResult)
         goal = Goal(task.p, task.pitch, task.R)
         ranked = ((0.0, tuple(attempt.q)),)
-        return IKResult(ranked, method, attempt.iterations, attempt.restarts, goal, chain)
+        return IKResult(ranked, goal, chain, method, attempt.iterations, attempt.restarts)
     q = np.array(attempt.q)
     miss = f"{res.position_error * 1000:.3f} mm, {math.degrees(res.angle_error):.3f} deg"
     if beyond_reach(chain, task):

@@ -15,6 +15,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .._pose import pitch_scalar
 from .._scalar import ChainState, Vec3
 
 
@@ -86,13 +87,6 @@ def task_jacobian(task: Task, st: ChainState) -> list[tuple[float, ...]]:
 def wrap(angle: float) -> float:
     """angle [rad] wrapped into [-pi, pi)."""
     return (angle + math.pi) % (2.0 * math.pi) - math.pi
-
-
-def pitch_scalar(a: Vec3, p: Vec3) -> float:
-    """``pitch_of`` for approach axis a and tool point p [rad]."""
-    rho = math.hypot(p[0], p[1])
-    h = (a[0] * p[0] + a[1] * p[1]) / rho if rho >= 1e-9 else math.hypot(a[0], a[1])
-    return math.atan2(a[2], h)
 
 
 def pitch_gradient(st: ChainState) -> list[float]:
