@@ -19,7 +19,7 @@ produced it by the pose it carries, which gives:
   is older by up to one period more (the age of the read);
 - draws/s: frames the page's renderer drew (requestAnimationFrame).
 
-    .venv/bin/python benchmarks/view.py [--seconds 5] [--rates 30 60] [--follow-rates 30 60]
+    .venv/bin/python benchmarks/view.py [--seconds 5] [--rates 30 60] [--follow-rates 30 45]
 """
 
 from __future__ import annotations
@@ -180,7 +180,7 @@ def main() -> None:
     parser.add_argument("--seconds", type=float, default=5.0, help="motion per rate [s]")
     parser.add_argument("--rates", type=float, nargs="+", default=[30.0, 60.0], help="[Hz]")
     parser.add_argument(
-        "--follow-rates", type=float, nargs="+", default=[30.0, 60.0], help="[Hz], --follow"
+        "--follow-rates", type=float, nargs="+", default=[30.0, 45.0], help="[Hz], --follow"
     )
     args = parser.parse_args()
     print("armkit view following the simulated OpenManipulator-X moving in real time")

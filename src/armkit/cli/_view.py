@@ -17,6 +17,8 @@ import numpy as np
 from .._errors import InputError
 from ._watch import web_module
 
+RATE = 30.0  # [Hz] updates of the view
+FOLLOW_RATE = 45.0  # [Hz] with --follow: 30+ new states a second from the 100 Hz live file
 EPILOG = """\
 The page is served from this computer (no network needed): open the printed URL.
 --host 127.0.0.1 (default) lets only this computer see it; 0.0.0.0 serves every network.
@@ -55,7 +57,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         help="TCP port of the page (default 8080; 0 = any free); the driver's port is the "
         "global --port before 'view'",
     )
-    p.add_argument("--rate", type=float, default=30.0, metavar="HZ", help="updates per second [Hz]")
+    p.add_argument("--rate", type=float, metavar="HZ", help="updates per second [Hz] (default 30; 45 with --follow, so that at least 30 new states a second reach the page from a file another process writes)")  # fmt: skip
     p.add_argument("--frames", action="store_true", help="draw every joint frame's axes")
     p.add_argument(
         "--follow",
@@ -238,6 +240,8 @@ def _target(args: argparse.Namespace) -> tuple[Any, float | None] | None:
 
 def _outputs(args: argparse.Namespace) -> list[Path]:
     """Every output file checked before anything moves: suffix, folder, writable."""
+    if args.rate is None:
+        args.rate = FOLLOW_RATE if args.follow else RATE
     if not 1 <= args.rate <= 240:
         raise InputError(f"--rate must be 1..240 Hz, got {args.rate}")
     if not 0 <= args.http_port <= 65535:
