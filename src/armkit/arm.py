@@ -17,6 +17,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ._closing import close_after
 from ._errors import DeviceError, InputError, UnreachableError
 from .connect import World, open_driver, world_of
 from .drivers._driver import Driver
@@ -220,13 +221,7 @@ class Arm:
     ) -> None:
         """Stop and close; when the block failed, its error stays the one raised (a failure
         to stop afterwards, likely from the same cause, is added to it as a note)."""
-        if exc is None:
-            self.close()
-            return
-        try:
-            self.close()
-        except Exception as cleanup:
-            exc.add_note(f"and stopping the arm afterwards failed too: {cleanup}")
+        close_after(self.close, exc)
 
     def _joint_target(self, angles: Mapping[str, float] | Sequence[float]) -> F64:
         if isinstance(angles, Mapping):

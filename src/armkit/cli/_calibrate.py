@@ -6,6 +6,7 @@ import argparse
 import importlib
 from typing import Any
 
+from .._closing import closing
 from .._errors import ArmkitError, InputError
 from .._files import config_dir
 from ..connect import auto_operator, open_driver
@@ -60,9 +61,7 @@ def run_calibrate(args: argparse.Namespace) -> int:
     if args.driver == "sim":  # the simulated OWI is timed by an automatic operator
         operator = auto_operator(driver)
         ask = operator.ask if operator is not None else _ask
-    try:
+    with closing(driver):
         path = module.run_calibration(model, driver, ask, print)
-    finally:
-        driver.close()
     print(f"wrote {path}")
     return 0

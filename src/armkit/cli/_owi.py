@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._closing import closing
 from .._errors import ArmkitError
 from .._files import config_dir
 from ._args import check_folder, coordinate, number
@@ -71,46 +72,34 @@ def _open(args: argparse.Namespace) -> TimedDriver:
 def _keys(args: argparse.Namespace) -> int:
     from ..drivers.timed._keys import run_keys
 
-    driver = _open(args)
-    try:
+    with closing(_open(args)) as driver:
         return run_keys(driver)
-    finally:
-        driver.close()
 
 
 def _pick_place(args: argparse.Namespace) -> int:
     from ..tasks.pick_place_owi import pick_place
 
-    driver = _open(args)
-    try:
+    with closing(_open(args)) as driver:
         a = np.array([args.ax, args.ay, args.az]) / 1000.0
         b = np.array([args.bx, args.by, args.bz]) / 1000.0
         pick_place(driver.model, driver, a, b, lift_m=args.lift / 1000.0, say=print)
         _summary(driver)
-    finally:
-        driver.close()
     return 0
 
 
 def _rehome(args: argparse.Namespace) -> int:
     from ..drivers.timed import rehome
 
-    driver = _open(args)
-    try:
+    with closing(_open(args)) as driver:
         rehome(driver, print)
         _summary(driver)
-    finally:
-        driver.close()
     return 0
 
 
 def _light(args: argparse.Namespace) -> int:
-    driver = _open(args)
-    try:
+    with closing(_open(args)) as driver:
         driver.set_light(args.state == "on")
         print(f"light {args.state}")
-    finally:
-        driver.close()
     return 0
 
 
