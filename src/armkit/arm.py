@@ -20,11 +20,10 @@ from numpy.typing import ArrayLike, NDArray
 from ._closing import close_after
 from ._errors import DeviceError, InputError, UnreachableError
 from .connect import World, open_driver, world_of
-from .drivers._driver import Driver
+from .drivers import Driver
 from .kinematics import fk, ik, pitch_of
-from .model import ArmModel, load_model
-from .model._limits import MAX_MOVE_S as MAX_MOVE_S
-from .model._limits import check_grip, check_joints, move_time
+from .model import MAX_MOVE_S as MAX_MOVE_S
+from .model import ArmModel, check_grip, check_joints, load_model, move_time
 from .motion import (
     JointPath,
     NaiveStepping,

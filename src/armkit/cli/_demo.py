@@ -79,7 +79,7 @@ def run_demo(args: argparse.Namespace) -> int:
 def _every_arm() -> None:
     """Each shipped arm reaches a point in front of it; the error by forward kinematics."""
     from ..arm import Arm
-    from ..viz._arm_shapes import reach_of
+    from ..viz import reach_of
 
     rows = []
     for name in shipped_models():

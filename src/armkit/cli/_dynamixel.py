@@ -7,7 +7,7 @@ import contextlib
 from typing import Any
 
 from .._errors import DeviceError, InputError
-from ..devices import _xm430 as xm
+from ..devices import xm430 as xm
 from ..devices.dynamixel import DynamixelBus
 from ._args import integer
 from ._table import table

@@ -70,7 +70,7 @@ def _open(args: argparse.Namespace) -> TimedDriver:
 
 
 def _keys(args: argparse.Namespace) -> int:
-    from ..drivers.timed._keys import run_keys
+    from ..drivers.timed import run_keys
 
     with closing(_open(args)) as driver:
         return run_keys(driver)
@@ -104,6 +104,6 @@ def _light(args: argparse.Namespace) -> int:
 
 
 def _summary(driver: TimedDriver) -> None:
-    from ..drivers.timed._keys import status_line
+    from ..drivers.timed import status_line
 
     print(status_line(driver), file=sys.stdout)

@@ -78,8 +78,8 @@ def _scene(args: argparse.Namespace) -> Any:
 
 def _outputs(args: argparse.Namespace) -> dict[str, Path]:
     """Every output path, checked before anything moves."""
+    from ..music import PLOT_SUFFIXES as SUFFIXES
     from ..music import check_output
-    from ..music._plot import SUFFIXES
 
     out = {}
     if args.wav:

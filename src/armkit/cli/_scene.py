@@ -83,8 +83,7 @@ def _list(args: argparse.Namespace) -> int:
 
 def _show(args: argparse.Namespace) -> int:
     from ..model import load_model
-    from ..scene._picture import check_output, top_view
-    from ..scene._show import describe
+    from ..scene import check_output, describe, top_view
 
     scene = scene_of(args)
     model = load_model(args.arm)

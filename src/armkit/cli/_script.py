@@ -20,11 +20,7 @@ from ._watch import add_watch_options
 
 if TYPE_CHECKING:
     from ..arm import Arm
-    from ..script import Source
-    from ..script._ast import Header, Statement
-    from ..script._backend import Frame
-    from ..script._check import Setup
-    from ..script._resolve import SceneInfo
+    from ..script import Frame, Header, SceneInfo, Setup, Source, Statement
 
 DEFAULTS = {"arm": "openmanipulator_x", "driver": "sim"}
 UNITS_NOTE = (
@@ -119,8 +115,7 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def _shell(args: argparse.Namespace) -> int:
-    from ..script._session import Session
-    from ..script._shell import Shell
+    from ..script import Session, Shell
 
     with _open(args, None, None) as arm:
         session = Session(arm, scene=_scene(args))
@@ -129,8 +124,7 @@ def _shell(args: argparse.Namespace) -> int:
 
 
 def _read(name: str) -> tuple[Source, Setup]:
-    from ..script import Source, parse
-    from ..script._check import setup_of
+    from ..script import Source, parse, setup_of
 
     path = Path(name)
     try:
@@ -177,8 +171,7 @@ def _scene(args: argparse.Namespace) -> SceneInfo | None:
     label = getattr(args, "scene", None)
     if not label:
         return None
-    from ..script._ast import Loc
-    from ..script._check import load_scene_info
+    from ..script import Loc, load_scene_info
 
     problems: list[Any] = []
     info = load_scene_info(str(label), Path.cwd(), Loc(1, 1), problems)

@@ -109,7 +109,7 @@ def _open_device(driver: str, args: argparse.Namespace, stack: ExitStack) -> Any
 
 def run_table(args: argparse.Namespace) -> int:
     """Print every servo's table: point (degrees or mm) -> pulse [µs]."""
-    from ..drivers.servo._config import load_setup
+    from ..drivers.servo import load_setup
     from ..model import load_model
 
     driver = _servo_driver(args)

@@ -176,7 +176,7 @@ def _finish(
     poses: dict[str, Any],
 ) -> int:
     """Show the target, then write the picture or serve until Ctrl-C."""
-    from ..viz._target import describe
+    from ..viz import describe
 
     if target is not None:
         check = view.set_target(target[0], target[1]) if args.follow else view.target

@@ -113,8 +113,7 @@ def watching(args: argparse.Namespace, arm: Any, scene: Any = None) -> Iterator[
     if world is None:
         yield None
         return
-    from ..viz import GifRecorder, publisher_of
-    from ..viz._state import cubes
+    from ..viz import GifRecorder, cubes, publisher_of
 
     physics = _physics(arm, scene)
     publisher = publisher_of(world)

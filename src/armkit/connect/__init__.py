@@ -27,14 +27,13 @@ from typing import TYPE_CHECKING, Any
 
 from .._clock import Clock
 from .._errors import InputError
-from ..drivers._driver import Driver
-from ..drivers._registry import DRIVERS
-from ..drivers._registry import driver_names as hardware_names
-from ..drivers._registry import open_driver as open_hardware
+from ..drivers import DRIVERS, Driver
+from ..drivers import driver_names as hardware_names
+from ..drivers import open_driver as open_hardware
 from ..model import ArmModel
 from ..sim import World as World
+from ..sim import state_file
 from ..sim import world_of as world_of
-from ..sim._state import state_file
 
 if TYPE_CHECKING:
     from ..devices.dynamixel import DynamixelBus

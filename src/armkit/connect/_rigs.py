@@ -11,12 +11,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..drivers.dynamixel import calibration_points
-from ..drivers.servo._config import load_setup
+from ..drivers.servo import load_setup
 from ..model import ArmModel, DynamixelSection, dynamixel_section
 from ..sim import SimArm, Truth, World
-from ..sim._assemble import add_servo_arm
-from ..sim._outbox import ByteDevice
-from ..sim._servo_body import GRIPPER, Mount
+from ..sim.assembly import GRIPPER, ByteDevice, Mount, add_servo_arm
 from ..sim.dynamixel import SimDynamixelBus
 from ..sim.maestro import SimMaestro
 from ..sim.ssc32 import SimSSC32

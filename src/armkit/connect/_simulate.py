@@ -19,18 +19,16 @@ from typing import Any
 
 from .._clock import Clock
 from .._errors import DeviceError
-from ..devices._dxl_protocol import PortHandler
+from ..devices import PortHandler
 from ..devices.dynamixel import DynamixelBus
 from ..devices.owi535 import OwiDevice, attach, open_device
-from ..drivers._driver import Driver
+from ..drivers import Driver
 from ..drivers.dynamixel import DynamixelDriver
 from ..drivers.servo import open_maestro, open_ssc32
 from ..drivers.timed import TimedDriver, state_path
 from ..model import ArmModel, DynamixelSection, dynamixel_section
-from ..sim import SimArm, World
-from ..sim._assemble import Persistence, add_owi_arm
-from ..sim._state import state_key
-from ..sim._wire import Wire, serial_port
+from ..sim import SimArm, World, state_key
+from ..sim.assembly import Persistence, Wire, add_owi_arm, serial_port
 from ..sim.owi535 import SimOwiUsb
 from ..sim.owi_sim import OwiSim
 from ._rigs import dynamixel_rig, generic_config, lone_rig, servo_rig
@@ -51,7 +49,7 @@ def simulate(model: ArmModel, kind: str, world: World | None, state: Path | None
             keep.release()
         raise
     if state is not None:  # others may follow it live (armkit view --follow)
-        from ..viz._live import publish_live
+        from ..viz.live import publish_live
 
         for arm in opened:
             publish_live(where, arm, state)

@@ -10,8 +10,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..scene import Pen, PenStand, Scene
-from ..tasks._plan import Step
-from ..tasks._state import Context, Options, State, down, grip, up
+from ..tasks import Step
+from ..tasks.steps import Context, Options, State, down, grip, up
 from ._rig import Rig
 from ._segments_job import GripMove, JointMove, Segment
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from .._errors import DeviceError
-from ..devices._port import PortGoneError
+from ..devices import PortGoneError
 from ..devices.dynamixel import DynamixelBus
 
 HOLD_PROFILE_MS = (50, 100)  # (ramp, total) of a stop: settle on the held tick in 0.1 s

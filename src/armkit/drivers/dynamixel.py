@@ -36,10 +36,19 @@ from numpy.typing import NDArray
 
 from .._clock import Clock, WallClock
 from .._errors import DeviceError, InputError
-from ..devices import _xm430 as xm
+from ..devices import xm430 as xm
 from ..devices.dynamixel import DynamixelBus
-from ..model import ArmModel, DynamixelSection, dynamixel_section
-from ..model._limits import check_grip, check_joints, check_speed, limits, move_time, ramp_time
+from ..model import (
+    ArmModel,
+    DynamixelSection,
+    check_grip,
+    check_joints,
+    check_speed,
+    dynamixel_section,
+    limits,
+    move_time,
+    ramp_time,
+)
 from ._driver import pieces
 from ._dxl_hold import describe, hold
 from ._dxl_points import calibration_points as calibration_points

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import math
 import tomllib
-from importlib import resources
 from pathlib import Path
 from typing import Any
 
@@ -12,6 +11,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import ModelError
+from .._toml_files import resolve, shipped
 from ._check import MAX_LENGTH_MM
 from ._check import NUM as _NUM
 from ._check import Checker as _Checker
@@ -65,8 +65,7 @@ MAX_WIDTH_MM = 1000.0
 
 def shipped_models() -> list[str]:
     """Names of the arm models shipped with armkit, sorted."""
-    folder = resources.files("armkit.model") / "arms"
-    return sorted(p.name[:-5] for p in folder.iterdir() if p.name.endswith(".toml"))
+    return shipped("armkit.model", "arms")
 
 
 def load_model(name_or_path: str | Path) -> ArmModel:
@@ -94,18 +93,7 @@ def load_model(name_or_path: str | Path) -> ArmModel:
 
 
 def _resolve(name_or_path: str | Path) -> Path:
-    text = str(name_or_path)
-    if text.endswith(".toml") or "/" in text or "\\" in text:
-        path = Path(text).expanduser()
-        if not path.is_file():
-            raise ModelError(f"{path}: no such model file")
-        return path
-    names = shipped_models()
-    if text not in names:
-        raise ModelError(
-            f"unknown arm {text!r}; shipped arms are {', '.join(names)} (or give a path to a .toml file)"
-        )
-    return Path(str(resources.files("armkit.model") / "arms" / f"{text}.toml"))
+    return resolve(name_or_path, "armkit.model", "arms", ModelError, kind="model", noun="arm")
 
 
 def _build(data: dict[str, Any], path: Path) -> ArmModel:

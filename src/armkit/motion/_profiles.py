@@ -16,8 +16,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError
-from ..model import ArmModel
-from ..model._limits import check_speed, limits, trapezoid_time
+from ..model import ArmModel, check_speed, limits, trapezoid_time
 
 F64 = NDArray[np.float64]
 

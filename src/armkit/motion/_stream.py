@@ -21,7 +21,7 @@ from numpy.typing import NDArray
 
 from .._clock import Clock
 from .._errors import DeviceError, InputError
-from ..drivers._driver import Driver
+from ..drivers import Driver
 from ..model import ArmModel
 from ._paths import corners
 from ._plan import JointPath

@@ -40,6 +40,7 @@ from ._plan import plan_performance as plan_performance
 from ._play import Played as Played
 from ._play import play as play
 from ._play import prepare as prepare
+from ._plot import PLOT_SUFFIXES as PLOT_SUFFIXES
 from ._plot import plot_onsets as plot_onsets
 from ._predict import JointProfile as JointProfile
 from ._predict import LinearMove as LinearMove

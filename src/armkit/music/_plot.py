@@ -10,13 +10,13 @@ from ._onsets import Contact, match, onset_stats
 from ._score import note_name
 from ._synth import check_output
 
-SUFFIXES = (".png", ".svg", ".pdf")
+PLOT_SUFFIXES = (".png", ".svg", ".pdf")
 
 
 def plot_onsets(planned: Sequence[Contact], played: Sequence[Contact], path: str | Path) -> Path:
     """Save a figure: the notes against time (planned hollow, played filled) and each
     note's onset error [ms]; ``path`` ends in .png, .svg or .pdf. Returns the path."""
-    out = check_output(path, SUFFIXES)
+    out = check_output(path, PLOT_SUFFIXES)
     try:
         from matplotlib.figure import Figure
     except ImportError as exc:  # pragma: no cover - the dev install has it

@@ -18,8 +18,7 @@ from typing import Protocol
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..model import ArmModel
-from ..model._limits import limits, ramp_time, shortest_time
+from ..model import ArmModel, limits, ramp_time, shortest_time
 from ..motion import Trapezoid, trapezoid
 
 F64 = NDArray[np.float64]

@@ -11,6 +11,8 @@ from ._clearance import Held as Held
 from ._clearance import check_clear as check_clear
 from ._clearance import joint_sweep as joint_sweep
 from ._errors import SceneError as SceneError
+from ._grasp import MIN_COVER as MIN_COVER
+from ._grasp import grasp as grasp
 from ._instruments import Drum as Drum
 from ._instruments import Xylophone as Xylophone
 from ._instruments import note_name as note_name
@@ -25,12 +27,18 @@ from ._objects import PenStand as PenStand
 from ._objects import Place as Place
 from ._physics import SceneEvent as SceneEvent
 from ._physics import ScenePhysics as ScenePhysics
+from ._picture import check_output as check_output
+from ._picture import top_view as top_view
 from ._scene import Scene as Scene
+from ._show import describe as describe
 from ._state import load_physics as load_physics
 from ._state import physics_text as physics_text
+from ._state import rest_scene as rest_scene
 from ._state import save_physics as save_physics
 from ._state import scene_state_file as scene_state_file
+from ._support import Rect as Rect
 from ._support import Settled as Settled
 from ._support import settle as settle
+from ._support import support_under as support_under
 from ._surfaces import PAPER_SIZES as PAPER_SIZES
 from ._surfaces import Sheet as Sheet

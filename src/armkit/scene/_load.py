@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import tomllib
 from dataclasses import replace
-from importlib import resources
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from .._toml_files import resolve, shipped
 from ._errors import SceneError
 from ._fields import Entry, entries
 from ._objects import Board, Container, Cube, Hand, Pen, PenStand, Place
@@ -33,8 +33,7 @@ REST_TOLERANCE = 0.5e-3  # [m] a cube's bottom must be this close to what it sta
 
 def shipped_scenes() -> list[str]:
     """Names of the scenes shipped with armkit, sorted."""
-    folder = resources.files("armkit.scene") / "scenes"
-    return sorted(p.name[:-5] for p in folder.iterdir() if p.name.endswith(".toml"))
+    return shipped("armkit.scene", "scenes")
 
 
 def load_scene(name_or_path: str | Path) -> Scene:
@@ -57,19 +56,7 @@ def load_scene(name_or_path: str | Path) -> Scene:
 
 
 def _resolve(name_or_path: str | Path) -> Path:
-    text = str(name_or_path)
-    if text.endswith(".toml") or "/" in text or "\\" in text:
-        path = Path(text).expanduser()
-        if not path.is_file():
-            raise SceneError(f"{path}: no such scene file")
-        return path
-    names = shipped_scenes()
-    if text not in names:
-        raise SceneError(
-            f"unknown scene {text!r}; shipped scenes are {', '.join(names)} "
-            "(or give a path to a .toml file)"
-        )
-    return Path(str(resources.files("armkit.scene") / "scenes" / f"{text}.toml"))
+    return resolve(name_or_path, "armkit.scene", "scenes", SceneError, kind="scene", noun="scene")
 
 
 def build_scene(data: dict[str, Any], path: Path) -> Scene:

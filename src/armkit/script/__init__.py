@@ -45,12 +45,19 @@ a caret; nothing moves if there is one. ``run_source`` then runs it through the
 public ``Arm`` API; a failure at run time names the line and repeat iteration.
 """
 
+from ._ast import Header as Header
+from ._ast import Loc as Loc
 from ._ast import Program as Program
 from ._ast import Source as Source
+from ._ast import Statement as Statement
+from ._backend import Frame as Frame
 from ._backend import ScriptRunError as ScriptRunError
 from ._check import CheckResult as CheckResult
+from ._check import Setup as Setup
 from ._check import check_file as check_file
 from ._check import check_source as check_source
+from ._check import load_scene_info as load_scene_info
+from ._check import setup_of as setup_of
 from ._diagnostics import Diagnostic as Diagnostic
 from ._diagnostics import ScriptCheckError as ScriptCheckError
 from ._jobs import JOBS as JOBS
@@ -59,5 +66,8 @@ from ._jobs import JobSpec as JobSpec
 from ._parse import parse as parse
 from ._plan import Plan as Plan
 from ._plan import PlanStep as PlanStep
+from ._resolve import SceneInfo as SceneInfo
 from ._run import run_checked as run_checked
 from ._run import run_source as run_source
+from ._session import Session as Session
+from ._shell import Shell as Shell

@@ -13,8 +13,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from ..devices import _dxl_packet as pkt
-from ..devices import _xm430 as xm
+from ..devices import dxl_packet as pkt
+from ..devices import xm430 as xm
 from .xm430 import ACCESS_ERROR, Servo
 
 

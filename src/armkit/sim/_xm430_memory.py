@@ -4,7 +4,7 @@ Indirect Data n reads and writes the byte Indirect Address n names)."""
 
 from __future__ import annotations
 
-from ..devices import _xm430 as xm
+from ..devices import xm430 as xm
 
 _BY_ADDRESS = {r.address: r for r in xm.XM430_W350.values()}
 # Indirect Data byte address -> address of the Indirect Address register that points it

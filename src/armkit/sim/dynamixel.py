@@ -25,8 +25,8 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Callable, Iterable
 
-from ..devices import _dxl_packet as pkt
-from ..devices import _xm430 as xm
+from ..devices import dxl_packet as pkt
+from ..devices import xm430 as xm
 from ._dxl_groups import GroupInstructions, u16
 from ._outbox import Outbox, log
 from .xm430 import ACCESS_ERROR, Servo

@@ -25,7 +25,7 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from ..devices._owi_commands import decode
+from ..devices import owi_decode as decode
 from ..devices.owi535 import INDEX, REQUEST, REQUEST_TYPE, VALUE
 from ..model import ArmModel
 from ._arm import Truth

@@ -30,8 +30,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from ..devices import _dxl_packet as pkt
-from ..devices import _xm430 as xm
+from ..devices import dxl_packet as pkt
+from ..devices import xm430 as xm
 from ._xm430_memory import covered, merged, read_through, runs
 from ._xm430_profile import (
     TICKS_PER_S2_PER_UNIT,

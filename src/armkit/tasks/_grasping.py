@@ -12,9 +12,7 @@ from numpy.typing import NDArray
 
 from ..kinematics import fk
 from ..model import ArmModel
-from ..scene import Cube, Held, settle
-from ..scene._grasp import MIN_COVER, grasp
-from ..scene._support import Rect, support_under
+from ..scene import MIN_COVER, Cube, Held, Rect, grasp, settle, support_under
 from ._plan import TaskError
 from ._state import Context, State, down, grip, solve, up
 

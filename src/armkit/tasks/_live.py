@@ -14,8 +14,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from .._errors import ArmkitError
-from ..scene import Scene, ScenePhysics
-from ..scene._state import rest_scene
+from ..scene import Scene, ScenePhysics, rest_scene
 from ._plan import Plan, Step, TaskError, cube_text, pose_error
 from ._run import run_plan
 

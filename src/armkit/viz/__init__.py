@@ -8,6 +8,7 @@ Nothing here imports matplotlib or viser until a picture or the web view
 """
 
 from ._arm_shapes import arm_primitives as arm_primitives
+from ._arm_shapes import reach_of as reach_of
 from ._arm_shapes import table_primitive as table_primitive
 from ._gif import GifRecorder as GifRecorder
 from ._gif import default_tour as default_tour
@@ -39,5 +40,7 @@ from ._state import DriverSource as DriverSource
 from ._state import ObjectPose as ObjectPose
 from ._state import StateSource as StateSource
 from ._state import WorldSource as WorldSource
+from ._state import cubes as cubes
 from ._target import TargetCheck as TargetCheck
 from ._target import check_target as check_target
+from ._target import describe as describe

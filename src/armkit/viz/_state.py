@@ -20,7 +20,7 @@ from numpy.typing import NDArray
 
 from .._errors import InputError
 from ..connect import World, world_of
-from ..drivers._driver import Driver
+from ..drivers import Driver
 from ..model import ArmModel
 from ..scene import ScenePhysics
 

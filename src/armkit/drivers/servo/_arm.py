@@ -18,8 +18,7 @@ from numpy.typing import NDArray
 
 from ..._clock import Clock, WallClock
 from ..._errors import DeviceError, InputError
-from ...model import ArmModel
-from ...model._limits import check_grip, check_joints, check_speed, move_time
+from ...model import ArmModel, check_grip, check_joints, check_speed, move_time
 from .._driver import pieces
 from ._bus import ServoBus
 from ._table import PULSE_MAX_US, PULSE_MIN_US, ServoCalibration

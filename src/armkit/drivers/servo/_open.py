@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 from ..._clock import Clock
 from ..._errors import DeviceError
-from ...devices._serial import SerialPort
+from ...devices import SerialPort
 from ...model import ArmModel
 from ._arm import ServoArmDriver
 from ._bus import MaestroBus, ServoBus, SSC32Bus

@@ -11,6 +11,8 @@ from ._config import constant_rate as constant_rate
 from ._config import default_timing as default_timing
 from ._driver import TimedDriver as TimedDriver
 from ._journal import UncertainEstimateWarning as UncertainEstimateWarning
+from ._keys import run_keys as run_keys
+from ._keys import status_line as status_line
 from ._plan import MoveReport as MoveReport
 from ._plan import ShortMoveError as ShortMoveError
 from ._rehome import rehome as rehome
@@ -23,7 +25,8 @@ from ._timing import TimingModel as TimingModel
 __all__ = [
     "ArmState", "Clock", "JointTiming", "MoveReport", "ShortMoveError",
     "TimedDriver", "TimingModel", "UncertainEstimateWarning", "constant_rate", "default_timing",
-    "load_state", "open_driver", "rehome", "run_calibration", "state_path",
+    "load_state", "open_driver", "rehome", "run_calibration", "run_keys", "state_path",
+    "status_line",
 ]  # fmt: skip
 
 

@@ -20,8 +20,7 @@ from numpy.typing import NDArray
 from ..._clock import Clock
 from ..._errors import ArmkitError, InputError
 from ..._lock import exclusive
-from ...model import ArmModel
-from ...model._limits import check_grip, check_joints, move_time
+from ...model import ArmModel, check_grip, check_joints, move_time
 from ._config import OwiConfig, default_timing, owi_config
 from ._estimate import MOVING, after_run, pending_of, recovered
 from ._journal import Until, journaled_run, raise_if_watchdog, warn, write

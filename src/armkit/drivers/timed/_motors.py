@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from typing import Protocol
 
 from ..._clock import Clock
-from ...devices._owi_commands import encode
+from ...devices import owi_encode as encode
 from ._safety import Watchdog
 
 

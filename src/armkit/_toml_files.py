@@ -1,0 +1,45 @@
+"""Data files shipped inside a package (the arm models, the scenes): their names, and a
+name or a path resolved to one file."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from importlib import resources
+from pathlib import Path
+
+
+def shipped(package: str, folder: str) -> list[str]:
+    """Names (without ``.toml``) of the TOML files shipped in ``package``/``folder``, sorted."""
+    root = resources.files(package) / folder
+    return sorted(p.name[:-5] for p in root.iterdir() if p.name.endswith(".toml"))
+
+
+def resolve(
+    name_or_path: str | Path,
+    package: str,
+    folder: str,
+    error: Callable[[str], Exception],
+    *,
+    kind: str,
+    noun: str,
+) -> Path:
+    """The file ``name_or_path`` names: a path (ends in ``.toml`` or has a ``/``) that must
+    exist, or the name of a file shipped in ``package``/``folder``.
+
+    Raises:
+        ``error(message)``: no such file ("no such {kind} file"), or an unknown name
+            ("unknown {noun} ...; shipped {noun}s are ...").
+    """
+    text = str(name_or_path)
+    if text.endswith(".toml") or "/" in text or "\\" in text:
+        path = Path(text).expanduser()
+        if not path.is_file():
+            raise error(f"{path}: no such {kind} file")
+        return path
+    names = shipped(package, folder)
+    if text not in names:
+        raise error(
+            f"unknown {noun} {text!r}; shipped {noun}s are {', '.join(names)} "
+            "(or give a path to a .toml file)"
+        )
+    return Path(str(resources.files(package) / folder / f"{text}.toml"))
