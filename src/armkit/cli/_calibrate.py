@@ -9,9 +9,10 @@ from typing import Any
 from .._closing import closing
 from .._errors import ArmkitError, InputError
 from .._files import config_dir
-from ..connect import auto_operator, open_driver
+from ..connect import auto_operator
 from ..model import load_model
 from ._args import check_folder
+from ._kept import open_kept
 
 # driver name -> the module whose run_calibration(model, driver, ask, say) measures it
 CALIBRATORS = {
@@ -56,7 +57,7 @@ def run_calibrate(args: argparse.Namespace) -> int:
     model = load_model(args.arm)
     check_folder(config_dir(), "the config directory")  # where the calibration goes
     module = importlib.import_module(_module_for(model.name, args.driver))
-    driver = open_driver(model, args.driver, args.port, keep=True)
+    driver = open_kept(model, args)
     ask = _ask
     if args.driver == "sim":  # the simulated OWI is timed by an automatic operator
         operator = auto_operator(driver)

@@ -22,7 +22,6 @@ from numpy.typing import NDArray
 from .._errors import InputError
 from .._files import config_dir
 from ..arm import MAX_MOVE_S, Arm
-from ..connect import open_driver
 from ..drivers.timed import TimedDriver
 from ..model import load_model
 from ..motion import (
@@ -47,6 +46,7 @@ from ._args import (
     number,
 )
 from ._draw import add_file_commands, add_plane_option, in_plane
+from ._kept import open_kept
 from ._watch import add_watch_options, watch_world, watching
 
 F64 = NDArray[np.float64]
@@ -192,7 +192,7 @@ def _open(args: argparse.Namespace) -> Iterator[Arm]:
         check_output(args.port, "--port (the simulated arm's state file)")
     world = watch_world(args)
     try:
-        arm = Arm(model, open_driver(model, args.driver, args.port, world=world, keep=True))
+        arm = Arm(model, open_kept(model, args, world))
         if isinstance(arm.driver, TimedDriver):  # before moving from an uncertain estimate
             rehome = f"armkit --arm {args.arm} --driver {args.driver} rehome"
             arm.driver.warn = lambda text: print(f"armkit: warning: {text}: {rehome}", file=sys.stderr)  # fmt: skip

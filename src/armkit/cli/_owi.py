@@ -52,9 +52,9 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 def _open(args: argparse.Namespace) -> TimedDriver:
     """The OWI driver named by --arm/--driver/--port."""
-    from ..connect import open_driver
     from ..drivers.timed import TimedDriver
     from ..model import load_model
+    from ._kept import open_kept
 
     model = load_model(args.arm)
     check_folder(config_dir(), "the config directory")  # the unit's state file
@@ -62,7 +62,7 @@ def _open(args: argparse.Namespace) -> TimedDriver:
         raise ArmkitError(
             f"'{args.command}' is for the OWI-535; add --arm owi535 (got {model.name})"
         )
-    driver = open_driver(model, args.driver, args.port, keep=True)
+    driver = open_kept(model, args)
     if not isinstance(driver, TimedDriver):
         driver.close()
         raise ArmkitError(f"'{args.command}' needs --driver owi535 or sim, not {args.driver!r}")

@@ -206,11 +206,11 @@ def _serve(view: Any, stop: Any, poses: dict[str, Any]) -> int:
 
 def _open_arm(args: argparse.Namespace, model: Any, scene: Any) -> Any:
     """The Arm of --arm/--driver/--port; a simulated arm keeps its pose between runs in
-    its state file, as for 'move' (``armkit.connect.open_driver(..., keep=True)``)."""
+    its state file, as for 'move' (``cli._kept.open_kept``)."""
     from ..arm import Arm
-    from ..connect import open_driver
+    from ._kept import open_kept
 
-    return Arm(model, open_driver(model, args.driver, args.port, keep=True), scene=scene)
+    return Arm(model, open_kept(model, args), scene=scene)
 
 
 def _poses(given: list[list[float]] | None, model: Any) -> list[Any]:

@@ -86,13 +86,13 @@ def watched_arm(args: argparse.Namespace, scene: Any = None) -> Iterator[Any]:
     """The Arm of ``--arm/--driver/--port`` (with ``scene``), watched as the options say
     (see the module doc); closed, and the GIF written, when the block ends."""
     from ..arm import Arm
-    from ..connect import open_driver
     from ..model import load_model
+    from ._kept import open_kept
 
     model = load_model(args.arm)
     world = watch_world(args)
     try:
-        driver = open_driver(model, args.driver, args.port, world=world, keep=True)
+        driver = open_kept(model, args, world)
         with (
             Arm(model, driver, scene=scene) as arm,
             kept_objects(args, arm, scene),

@@ -69,10 +69,7 @@ def open_driver(
     from ._simulate import simulate
 
     if driver == "sim":
-        state = Path(port) if port not in (None, "emu") else None
-        if state is None and keep and port is None:
-            state = state_file(model)
-        return simulate(model, native_kind(model), world, state)
+        return simulate(model, native_kind(model), world, kept_state_file(model, port, keep))
     if driver not in DRIVERS:
         raise InputError(f"unknown driver {driver!r}; drivers are sim, {', '.join(DRIVERS)}")
     if port == "emu":
@@ -88,6 +85,15 @@ def open_driver(
 def driver_names() -> list[str]:
     """Every name ``driver=`` takes: ``"sim"`` and the drivers of real hardware."""
     return ["sim", *hardware_names()]
+
+
+def kept_state_file(model: ArmModel, port: str | None, keep: bool) -> Path | None:
+    """The state file a simulated ``model`` (``driver="sim"``) keeps its truth in: the
+    ``port`` given as a path, else with ``keep`` and no port ``sim_state_file(model)``,
+    else None (in memory; also for ``port="emu"``)."""
+    if port not in (None, "emu"):
+        return Path(port)
+    return state_file(model) if keep and port is None else None
 
 
 def sim_state_file(model: ArmModel) -> Path:

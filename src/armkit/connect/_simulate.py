@@ -48,11 +48,6 @@ def simulate(model: ArmModel, kind: str, world: World | None, state: Path | None
         if keep is not None:
             keep.release()
         raise
-    if state is not None:  # others may follow it live (armkit view --follow)
-        from ..viz.live import publish_live
-
-        for arm in opened:
-            publish_live(where, arm, state)
     return driver
 
 
