@@ -155,3 +155,29 @@ class Jog:
         if self._moved:
             self.lines.append(joints_line(pose_now(self.arm)))
             self._moved = False
+
+
+def torque(arm: Arm, on: bool) -> None:
+    """Torque on (``on``) or off on every servo of ``arm`` where its driver allows it
+    (the Dynamixel's Torque Enable register): off, the arm can be moved by hand and
+    ``read()`` still gives its true angles. ArmkitError, nothing sent, where it cannot."""
+    driver = arm.driver
+    method = getattr(driver, "stiffen" if on else "relax", None)
+    if callable(method) and callable(getattr(driver, "relax", None)):
+        method()
+        return
+    raise ArmkitError(f"limp: {arm.model.name}: {_why_no_limp(arm)}; teach it with jog instead")
+
+
+def _why_no_limp(arm: Arm) -> str:
+    if arm.model.gripper.kind == "timed":
+        return (
+            "its DC motors have no torque off and no encoders (armkit only estimates "
+            "its angles from time), so a pose moved by hand could not be read back"
+        )
+    bus = str(getattr(getattr(arm.driver, "bus", None), "name", ""))
+    on = {"ssc32": " on the SSC-32", "maestro": " on the Maestro"}.get(bus, "")
+    return (
+        f"its hobby servos{on} report no position and take no torque-off command, "
+        "so a pose moved by hand could not be read back"
+    )
