@@ -49,11 +49,13 @@ class Teaching:
         arm: the model's name (the script's ``arm`` line).
         start: joint angles when the session began [rad], shape (dof,).
         lines: the statements given, the taught poses and the jogs, in order.
+        origin: where it was taught (the script's first comment).
     """
 
     arm: str
     start: F64
     lines: list[str] = field(default_factory=list)
+    origin: str = "the armkit shell"
 
     def record(self, text: str) -> None:
         """Add statements that ran (a line, or a block of lines)."""
@@ -69,7 +71,7 @@ class Teaching:
         """The session as a script: the arm, where it started, then every line."""
         stamp = datetime.now().strftime("%Y-%m-%d %H:%M")
         head = [
-            f"# taught in the armkit shell on {stamp}; replay with: armkit run FILE",
+            f"# taught in {self.origin} on {stamp}; replay with: armkit run FILE",
             f"arm {self.arm}",
             f"{joints_line(self.start)}   # where the session started",
         ]

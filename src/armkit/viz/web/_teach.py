@@ -4,7 +4,9 @@ The sliders and the target move an ``Arm`` in this process through a
 ``Mover`` (latest goal wins, real-time pace). Dragging the target checks it
 first (``check_target``): the arm follows only when it is reachable and clear;
 otherwise the marker turns red with the reason and the arm stays. "Record"
-keeps the current pose under a name (``Teach.poses``) and prints it.
+keeps the current pose under a name (``Teach.poses``) and prints it, and
+``Teach.script()`` gives the recorded poses and the moves made between them as
+a script ``armkit run`` replays (``armkit view --write FILE.arm``).
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ import numpy as np
 from ..._errors import InputError
 from ...arm import Arm, Position
 from ...kinematics import fk
+from ...script import Teaching, joints_line
 from .._mover import Goal, Mover
 from ._view import View
 
@@ -51,6 +54,7 @@ class Teach:
     Attributes:
         poses: recorded poses by name, in the order recorded.
         status: the last message shown on the page (a refusal or a recording).
+        teaching: the script lines so far (``joints``/``grip`` moves, ``pose`` lines).
     """
 
     def __init__(self, view: View, arm: Arm, *, echo: bool = True) -> None:
@@ -59,6 +63,9 @@ class Teach:
         self.echo = echo
         self.poses: dict[str, TaughtPose] = {}
         self.status = ""
+        start = view.source.state()
+        self.teaching = Teaching(arm.model.name, start.q.copy(), origin="the armkit 3D view")
+        self._written = (joints_line(start.q), round(start.grip * 1000.0, 1))
         self._following_target = False
         self.mover = Mover(arm, on_error=self._refused)
         gui = view.server.gui
@@ -85,9 +92,29 @@ class Teach:
         }
         pose = TaughtPose(name, angles, self.arm.position(), state.grip * 1000.0)
         self.poses[name] = pose
+        self._moves()
+        self.teaching.save(name, np.clip(state.q, self.arm.model.lower, self.arm.model.upper))
         self._say(f"recorded {pose.line()}")
         self._name.value = f"pose_{len(self.poses) + 1}"  # type: ignore[misc]
         return pose
+
+    def script(self) -> str:
+        """The recorded poses and the moves made, as a script ``armkit run`` replays (the
+        arm's start pose first, its pose now last)."""
+        self._moves()
+        return self.teaching.script()
+
+    def _moves(self) -> None:
+        """Add the move to where the arm is now (a ``joints`` line, a ``grip`` line) if it
+        moved since the last line written."""
+        state, model = self.view.source.state(), self.arm.model
+        joints = joints_line(np.clip(state.q, model.lower, model.upper))
+        width = round(state.grip * 1000.0, 1)
+        if joints != self._written[0]:
+            self.teaching.lines.append(joints)
+        if width != self._written[1] and model.gripper.width_max > model.gripper.width_min:
+            self.teaching.lines.append(f"grip {width:.1f}")
+        self._written = (joints, width)
 
     def _record_clicked(self) -> None:
         try:
