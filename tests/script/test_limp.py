@@ -86,3 +86,21 @@ def test_no_hand_turns_the_owi_gears() -> None:
         world.arm().push(before + 0.2)
     assert _deg(world.arm().q(), before) == 0.0
     a.close()
+
+
+def test_shell_help_lists_limp_hold_and_the_prompt_says_limp(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    import io
+
+    from armkit.cli import main
+    from armkit.script._shell import Shell
+
+    assert main(["shell", "--help"]) == 0
+    text = capsys.readouterr().out
+    assert "\n  limp " in text and "\n  hold " in text and "torque" in text
+    a, _ = counting_arm()
+    out = io.StringIO()
+    Shell(Session(a, base_dir=tmp_path), stdin=io.StringIO("limp\nquit\n"), stdout=out).loop()
+    assert " limp> " in out.getvalue() and "hold: torque on" in out.getvalue()  # quit holds
+    a.close()

@@ -61,5 +61,7 @@ from ._plan import Plan as Plan
 from ._plan import PlanStep as PlanStep
 from ._run import run_checked as run_checked
 from ._run import run_source as run_source
+from ._session import Reply as Reply
+from ._session import Session as Session
 from ._teach import Teaching as Teaching
 from ._teach import joints_line as joints_line
