@@ -70,3 +70,29 @@ def test_view_write_gives_a_script_that_checks_and_replays(
     for want in taught:  # every pose taught on the page is reached again
         assert min(_deg(got, want) for got in replayed) < 0.1
     assert _deg(replayed[-1], taught[-1]) < 0.1
+
+
+def test_torque_off_on_the_page_lets_the_sliders_move_the_simulated_arm_by_hand(
+    tmp_path: Path,
+) -> None:
+    hand_q = np.radians([-35.0, -10.0, 25.0, 15.0])
+    arm = armkit.Arm("openmanipulator_x")
+    with arm, View(DriverSource(arm.model, arm.driver), port=0) as view:
+        teach = Teach(view, arm, echo=False)
+        try:
+            assert not teach.push_joints(hand_q)  # torque on: no hand moves it
+            assert _deg(arm.driver.read(), arm.model.home) < 0.1
+            assert teach.set_limp(True)
+            assert not teach.drag_target((0.2, 0.0, 0.08), -90.0)  # nothing commanded
+            assert teach.push_joints(hand_q)
+            teach.record("by_hand")  # read over the bus: the true angles
+            assert teach.set_limp(False)
+            assert _deg(arm.driver.read(), hand_q) < 0.1  # it holds there
+            text = teach.script()
+        finally:
+            teach.close()
+    path = tmp_path / "hand.arm"
+    path.write_text(text, encoding="utf-8")
+    with armkit.Arm("openmanipulator_x") as b:
+        run_source(b, Source(str(path), text))
+        assert _deg(b.driver.read(), hand_q) < 0.1
