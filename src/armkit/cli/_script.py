@@ -42,15 +42,15 @@ the shell's own words (besides the language):
                    no position
   hold             torque on where the arm is (the hand-moved pose is recorded)
   save NAME        keep the pose now (while limp: the servos' true angles)
-  write FILE       the session as a script 'armkit run FILE' replays
+  write FILE       the session as a script that armkit run replays
 
-example:
-  armkit shell
-  > limp
-  > save grab          (after moving the arm by hand)
-  > hold
-  > write taught.arm
-  armkit run taught.arm
+example (typed at the shell's prompt, the arm moved by hand after limp):
+  $ armkit shell
+  ... p 0> limp
+  ... p 0 limp> save grab
+  ... p -30 limp> hold
+  ... p -30> write taught.arm
+  $ armkit run taught.arm
 
 """
     + UNITS_NOTE
