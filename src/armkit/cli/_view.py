@@ -73,17 +73,17 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         metavar="DEG",
         help="joint angles [deg], one per joint; repeat for a path (moves the arm)",
     )
+    _picture_options(p)
+    p.set_defaults(func=run_view)
+
+
+def _picture_options(p: argparse.ArgumentParser) -> None:
     p.add_argument(
         "--write",
         metavar="FILE.arm",
         help="when the view stops, write the recorded poses and the moves made as a script "
         "'armkit run' replays (joint angles in deg, gripper in mm)",
     )
-    _picture_options(p)
-    p.set_defaults(func=run_view)
-
-
-def _picture_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--screenshot", metavar="FILE.png", help="write a picture of the view and exit")
     p.add_argument(
         "--size", nargs=2, type=int, default=(1024, 768), metavar=("W", "H"), help="picture [px]"
