@@ -30,6 +30,9 @@ def config(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
         (["--size", "10", "10", "--screenshot", "{tmp}/p.png"], "--size must be"),
         (["--follow", "--pose", "0", "0", "0", "0"], "--follow only watches"),
         (["--follow", "--gif", "{tmp}/a.gif"], "--follow only watches"),
+        (["--write", "{tmp}/taught.txt"], "must end in .arm"),
+        (["--write", "{tmp}/missing/taught.arm"], "does not exist"),
+        (["--follow", "--write", "{tmp}/taught.arm"], "drop --follow"),
     ],
 )
 def test_refusals_are_one_line_and_touch_nothing(
@@ -39,7 +42,7 @@ def test_refusals_are_one_line_and_touch_nothing(
     err = capsys.readouterr().err
     assert code == 2
     assert err.startswith("armkit: error: ") and words in err and err.count("\n") == 1
-    assert not any(p.suffix in (".png", ".gif") for p in tmp_path.rglob("*"))
+    assert not any(p.suffix in (".png", ".gif", ".arm") for p in tmp_path.rglob("*"))
     assert not config.exists()  # no simulated arm was opened
 
 
@@ -85,6 +88,8 @@ def test_view_serves_the_page_on_loopback_until_ctrl_c(config: Path) -> None:
         "view",
         "--port",
         "0",
+        "--write",
+        str(config.parent / "page.arm"),
     ]
     env = dict(os.environ, ARMKIT_CONFIG_DIR=str(config))
     proc = subprocess.Popen(
@@ -105,3 +110,5 @@ def test_view_serves_the_page_on_loopback_until_ctrl_c(config: Path) -> None:
             proc.wait()
     assert proc.returncode == 0
     assert "stopped" in out
+    assert f"wrote 0 poses to {config.parent / 'page.arm'}" in out
+    assert main(["check", str(config.parent / "page.arm")]) == 0

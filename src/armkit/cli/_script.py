@@ -27,6 +27,30 @@ UNITS_NOTE = (
     "Scripts are in mm, degrees and seconds unless a unit is written (cm, m, in, rad, ms, "
     "min, %, mm/s). The grammar: 'armkit shell' then 'help', or the README's section."
 )
+SHELL_EPILOG = (
+    """\
+the shell's own words (besides the language):
+  where | poses | help [WORD] | run FILE | quit
+  jog [STEP_DEG]   jog with keys, one step a key (i/k j/u f/r d/e g/t h/y joints 1-6,
+                   w/s close/open, v save, q leaves); the OWI runs 250 ms a key
+  limp             torque off: move the arm by hand (Dynamixel arms; support it first);
+                   refused on hobby servos (SSC-32, Maestro) and the OWI, which report
+                   no position
+  hold             torque on where the arm is (the hand-moved pose is recorded)
+  save NAME        keep the pose now (while limp: the servos' true angles)
+  write FILE       the session as a script that armkit run replays
+
+example (typed at the shell's prompt, the arm moved by hand after limp):
+  $ armkit shell
+  ... p 0> limp
+  ... p 0 limp> save grab
+  ... p -30 limp> hold
+  ... p -30> write taught.arm
+  $ armkit run taught.arm
+
+"""
+    + UNITS_NOTE
+)
 
 
 def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
@@ -60,8 +84,8 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     )
     p.set_defaults(func=_check)
     p = sub.add_parser(
-        "shell", help="the script language interactively: history, Tab completion, jog, teach",
-        epilog=UNITS_NOTE,
+        "shell", help="the script language interactively: history, Tab completion, jog, "
+        "limp/hold, teach", epilog=SHELL_EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter,
     )  # fmt: skip
     p.add_argument(
         "--no-history", action="store_true", help="do not read or write the history file"

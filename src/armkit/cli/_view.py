@@ -31,6 +31,7 @@ examples:
   armkit view                                   # the simulated OpenManipulator-X, teach from the page
   armkit --scene board_001 view --target 265 0 20 --pitch -90
   armkit --scene board_001 view --pose 0 20 10 -40 --screenshot view.png
+  armkit view --write taught.arm               # 'Record pose' on the page, Ctrl-C writes the script
   armkit --scene board_001 view --follow        # then, in another terminal:
   armkit --scene board_001 stack red green blue
   armkit --arm lynx6 view --gif tour.gif --pose 90 90 90 90 90 --pose 60 110 70 80 90
@@ -79,6 +80,12 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 
 def _picture_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument(
+        "--write",
+        metavar="FILE.arm",
+        help="when the view stops, write the recorded poses and the moves made as a script "
+        "'armkit run' replays (joint angles in deg, gripper in mm)",
+    )
     p.add_argument("--screenshot", metavar="FILE.png", help="write a picture of the view and exit")
     p.add_argument(
         "--size", nargs=2, type=int, default=(1024, 768), metavar=("W", "H"), help="picture [px]"
@@ -97,6 +104,7 @@ def run_view(args: argparse.Namespace) -> int:
     model = load_model(args.arm)
     poses = _poses(args.pose, model)
     outputs = _outputs(args)
+    script = _script_output(args)
     target = _target(args)
     scene = scene_of(args, required=False)
     if args.follow:
@@ -116,7 +124,10 @@ def run_view(args: argparse.Namespace) -> int:
         if target is not None:
             teach.drag_target(target[0], target[1])
             teach.mover.wait_idle()
-        return _finish(args, web, view, outputs, target, teach.close, teach.poses)
+        done = _finish(args, web, view, outputs, target, teach.close, teach.poses)
+        if script is not None:
+            _write_script(script, teach)
+        return done
     finally:
         view.close()
         arm.close()
@@ -263,6 +274,22 @@ def _outputs(args: argparse.Namespace) -> list[Path]:
         if given:
             out.append(check_output(Path(given), suffix, flag))
     return out
+
+
+def _script_output(args: argparse.Namespace) -> Path | None:
+    """The --write file, checked before anything starts (None: not asked)."""
+    if not args.write:
+        return None
+    if args.follow or args.gif:
+        raise InputError("--write keeps what is taught on the page; drop --follow and --gif")
+    return check_output(Path(args.write), ".arm", "--write")
+
+
+def _write_script(path: Path, teach: Any) -> None:
+    from .._files import write_atomic
+
+    write_atomic(path, teach.script(), durable=False)
+    print(f"armkit view: wrote {len(teach.poses)} poses to {path}; replay with: armkit run {path}")
 
 
 def check_output(path: Path, suffix: str, flag: str) -> Path:

@@ -42,3 +42,11 @@ def describe(held: list[int], silent: list[int]) -> str:
     """Which servos hold, in words."""
     words = f"servos {held} hold where they were" if held else "no servo confirmed a hold"
     return words + (f"; servos {silent} did not confirm that they hold" if silent else "")
+
+
+def hold_here(bus: DynamixelBus, ids: list[int]) -> None:
+    """Torque on in ``ids`` where each servo is now (after being moved by hand): Goal
+    Position set to Present Position first, so no servo jumps back to an old goal."""
+    present = bus.sync_read("Present Position", ids)
+    bus.sync_write("Goal Position", present)
+    bus.set_torque(ids, True)

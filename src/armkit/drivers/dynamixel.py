@@ -50,7 +50,7 @@ from ..model import (
     ramp_time,
 )
 from ._driver import pieces
-from ._dxl_hold import describe, hold
+from ._dxl_hold import describe, hold, hold_here
 from ._dxl_points import calibration_points as calibration_points
 from ._sent import SentProfile
 
@@ -304,7 +304,15 @@ class DynamixelDriver:
 
     def relax(self) -> None:
         """Torque off on every servo: the arm goes limp (support it first)."""
+        self._alive()
+        self._sent = None
         self.bus.set_torque([*self.ids, self.gripper_id], False)
+
+    def stiffen(self) -> None:
+        """Torque on where every servo is now (after ``relax``): the arm holds that pose."""
+        self._alive()
+        self._sent = None
+        hold_here(self.bus, [*self.ids, self.gripper_id])
 
     def close(self) -> None:
         """Hold position (torque stays on, see the module notes), release the port. Safe twice."""

@@ -69,5 +69,8 @@ from ._plan import PlanStep as PlanStep
 from ._resolve import SceneInfo as SceneInfo
 from ._run import run_checked as run_checked
 from ._run import run_source as run_source
+from ._session import Reply as Reply
 from ._session import Session as Session
 from ._shell import Shell as Shell
+from ._teach import Teaching as Teaching
+from ._teach import joints_line as joints_line

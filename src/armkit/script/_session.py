@@ -23,15 +23,17 @@ from ._grammar import RESERVED, usage_of
 from ._lexer import LexError, Token, tokenize
 from ._resolve import JointPose, Resolver, SceneInfo
 from ._run import ArmBackend, run_source
-from ._teach import Jog, Teaching, joints_line, pose_now
+from ._teach import Jog, Teaching, joints_line, pose_now, torque
 from ._walk import Walker
 
-SHELL_WORDS = ("where", "poses", "save", "write", "jog", "help", "quit", "exit")
+SHELL_WORDS = ("where", "poses", "save", "write", "jog", "limp", "hold", "help", "quit", "exit")
 HELP = """\
 the language: move, line, joints, turn, grip, home, wait, speed, light, run, pose,
   repeat N ... end, define NAME(P, ...) ... end, and the jobs (help WORD for one)
 the shell: where | poses | save NAME | write FILE | jog [STEP_DEG] | run FILE |
-  help [WORD] | quit      (Tab completes; history with the arrow keys)"""
+  limp (torque off: move the arm by hand, save reads its true angles; Dynamixel) |
+  hold (torque on where it is) | help [WORD] | quit  (Tab completes; arrows: history)"""
+LIMP = "error: the arm is limp (torque off); type hold before moving it"
 
 
 @dataclass
@@ -56,6 +58,7 @@ class Session:
         self.walker.redefine = True
         self.teaching = Teaching(arm.model.name, pose_now(arm))
         self.next_line = 1
+        self.limp = False  # torque off (``limp``) until ``hold``
         self._pending: list[str] = []
         self._depth = 0
 
@@ -70,13 +73,15 @@ class Session:
         if not self._pending and words and words[0] in SHELL_WORDS:
             return self._shell_word(words)
         if not self._pending and len(words) == 2 and words[0] == "run":
-            return self._run_file(words[1])
+            return Reply(LIMP) if self.limp else self._run_file(words[1])
         self._pending.append(line)
         self._depth += _depth_change(line)
         if self._depth > 0:
             return Reply(more=True)
         text = "\n".join(self._pending)
         self._pending, self._depth = [], 0
+        if self.limp and text.strip():
+            return Reply(LIMP)
         return self.execute(text) if text.strip() else Reply()
 
     def cancel(self) -> None:
@@ -143,7 +148,9 @@ class Session:
     def _shell_word(self, words: list[str]) -> Reply:
         word, args = words[0], words[1:]
         if word in ("quit", "exit"):
-            return Reply(quit=True)
+            return Reply(self._torque(True).text if self.limp else "", quit=True)
+        if word in ("limp", "hold"):
+            return self._torque(word == "hold") if not args else Reply(f"error: usage: {word}")
         if word == "where":
             return Reply(self.where())
         if word == "poses":
@@ -155,7 +162,7 @@ class Session:
                 return Reply(HELP)
             return Reply(usage_of(args[0]) or f"no command {args[0]!r}; type help")
         if word == "jog":
-            return self._jog_word(args)
+            return Reply(LIMP) if self.limp else self._jog_word(args)
         if len(args) != 1:
             return Reply(f"error: usage: {word} {'NAME' if word == 'save' else 'FILE'}")
         return self._save(args[0]) if word == "save" else self._write(args[0])
@@ -168,6 +175,22 @@ class Session:
         if not 0.1 <= step <= 45.0:
             return Reply(f"error: the jog step must be in 0.1..45 deg, got {step:g}")
         return Reply(jog=step)
+
+    def _torque(self, on: bool) -> Reply:
+        """``limp`` (``on`` False) or ``hold``; ``hold`` records where the hand left the arm."""
+        if on != self.limp:
+            return Reply("the arm holds already" if on else "the arm is limp already")
+        try:
+            torque(self.arm, on)
+        except ArmkitError as exc:
+            return Reply(f"error: {exc}")
+        self.limp = not on
+        if not on:
+            return Reply(
+                "limp: torque off, move the arm by hand (support it); save NAME, then hold"
+            )
+        self.teaching.lines.append(f"{joints_line(pose_now(self.arm))}   # moved by hand")
+        return Reply("hold: torque on, the arm holds where it is")
 
     def _save(self, name: str) -> Reply:
         if not Token("word", name, 1).is_name or name in RESERVED:

@@ -44,9 +44,11 @@ class Shell:
         self._matches: list[str] = []
 
     def prompt(self) -> str:
-        """``armkit x 180 y 0 z 80 p -90> ``: where the gripper is [mm, deg]."""
+        """``armkit x 180 y 0 z 80 p -90> ``: where the gripper is [mm, deg] (``limp>``
+        while the torque is off)."""
         x, y, z, pitch = self.session.arm.position()
-        return f"armkit x {round(x)} y {round(y)} z {round(z)} p {round(pitch)}> "
+        limp = " limp" if self.session.limp else ""
+        return f"armkit x {round(x)} y {round(y)} z {round(z)} p {round(pitch)}{limp}> "
 
     def loop(self) -> int:
         """Read, check, run, until ``quit`` or end of input."""

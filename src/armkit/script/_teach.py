@@ -49,11 +49,13 @@ class Teaching:
         arm: the model's name (the script's ``arm`` line).
         start: joint angles when the session began [rad], shape (dof,).
         lines: the statements given, the taught poses and the jogs, in order.
+        origin: where it was taught (the script's first comment).
     """
 
     arm: str
     start: F64
     lines: list[str] = field(default_factory=list)
+    origin: str = "the armkit shell"
 
     def record(self, text: str) -> None:
         """Add statements that ran (a line, or a block of lines)."""
@@ -69,7 +71,7 @@ class Teaching:
         """The session as a script: the arm, where it started, then every line."""
         stamp = datetime.now().strftime("%Y-%m-%d %H:%M")
         head = [
-            f"# taught in the armkit shell on {stamp}; replay with: armkit run FILE",
+            f"# taught in {self.origin} on {stamp}; replay with: armkit run FILE",
             f"arm {self.arm}",
             f"{joints_line(self.start)}   # where the session started",
         ]
@@ -155,3 +157,29 @@ class Jog:
         if self._moved:
             self.lines.append(joints_line(pose_now(self.arm)))
             self._moved = False
+
+
+def torque(arm: Arm, on: bool) -> None:
+    """Torque on (``on``) or off on every servo of ``arm`` where its driver allows it
+    (the Dynamixel's Torque Enable register): off, the arm can be moved by hand and
+    ``read()`` still gives its true angles. ArmkitError, nothing sent, where it cannot."""
+    driver = arm.driver
+    method = getattr(driver, "stiffen" if on else "relax", None)
+    if callable(method) and callable(getattr(driver, "relax", None)):
+        method()
+        return
+    raise ArmkitError(f"limp: {arm.model.name}: {_why_no_limp(arm)}; teach it with jog instead")
+
+
+def _why_no_limp(arm: Arm) -> str:
+    if arm.model.gripper.kind == "timed":
+        return (
+            "its DC motors have no torque off and no encoders (armkit only estimates "
+            "its angles from time), so a pose moved by hand could not be read back"
+        )
+    bus = str(getattr(getattr(arm.driver, "bus", None), "name", ""))
+    on = {"ssc32": " on the SSC-32", "maestro": " on the Maestro"}.get(bus, "")
+    return (
+        f"its hobby servos{on} report no position and take no torque-off command, "
+        "so a pose moved by hand could not be read back"
+    )

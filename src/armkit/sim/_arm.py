@@ -103,6 +103,18 @@ class SimArm:
         with self._lock:
             self.body.grip_stop(width)
 
+    def push(self, q: F64) -> None:
+        """Move the arm by hand to joint angles ``q`` [rad], shape (dof,), as a person does
+        with the torque off: only the joints whose servo holds nothing (a Dynamixel with
+        Torque Enable 0) may move; the mechanical limits stop them. The drivers read the
+        new angles through their real protocol. ValueError, nothing moved, if a joint that
+        would move is held (torque on) or the arm cannot be moved by hand (the OWI's gears)."""
+        push = getattr(self.body, "push", None)
+        if not callable(push):
+            raise ValueError(f"{self.name}: its gears cannot be turned by hand")
+        with self._lock:
+            push(np.asarray(q, dtype=np.float64))
+
     def at_rest(self) -> bool:
         """True when every joint and the gripper have settled."""
         with self._lock:

@@ -131,10 +131,11 @@ class ServoBody:
         self._last_setpoint: dict[int, tuple[float, float]] = {}  # channel -> (unit, si)
         self._busy = False
         self._moving = False
+        self._t = 0.0  # the end of the last step [s]
 
     def step(self, t: float, dt: float) -> None:
         """Integrate one step of ``dt`` [s] ending at ``t``."""
-        outputs = self.outputs
+        outputs, self._t = self.outputs, t
         if outputs is not None:
             for mount in self.mounts:
                 si = self._target(outputs, mount, t)
@@ -204,6 +205,28 @@ class ServoBody:
             self.grip_width = self.grip_goal = value
             return
         self.motor[joint] = self.joint[joint] = self.setpoint[joint] = value
+
+    def limp(self) -> tuple[int, ...]:
+        """Indices of the joints whose servo holds nothing (torque off, no pulses)."""
+        outputs = self.outputs
+        if outputs is None:
+            return tuple(range(len(self.joint)))
+        return tuple(m.joint for m in self.mounts if outputs.setpoint(m.channel, self._t) is None)
+
+    def push(self, q: F64) -> None:
+        """A hand moves the joints to ``q`` [rad], shape (dof,), stopped by the mechanical
+        limits. ValueError (nothing moved) if a joint that would move is held by its servo."""
+        q = np.minimum(np.maximum(np.asarray(q, dtype=np.float64), self.lower), self.upper)
+        if q.shape != self.joint.shape:
+            raise ValueError(f"push takes {len(self.joint)} joint angles [rad], got {q.shape}")
+        free = self.limp()
+        held = [j for j in np.flatnonzero(np.abs(q - self.joint) > 1e-9) if j not in free]
+        if held:
+            names = ", ".join(self.model.joint_names[j] for j in held)
+            raise ValueError(f"{names}: the servo holds it (torque on); turn the torque off first")
+        for j in free:
+            self.place(j, float(q[j]))
+            self.velocity[j] = 0.0
 
     def speed(self, joint: int) -> float:
         """How fast ``joint``'s motor turns [rad/s] (GRIPPER: the opening changes [m/s])."""

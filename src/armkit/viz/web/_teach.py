@@ -4,7 +4,11 @@ The sliders and the target move an ``Arm`` in this process through a
 ``Mover`` (latest goal wins, real-time pace). Dragging the target checks it
 first (``check_target``): the arm follows only when it is reachable and clear;
 otherwise the marker turns red with the reason and the arm stays. "Record"
-keeps the current pose under a name (``Teach.poses``) and prints it.
+keeps the current pose under a name (``Teach.poses``) and prints it, and
+``Teach.script()`` gives the recorded poses and the moves made between them as
+a script ``armkit run`` replays (``armkit view --write FILE.arm``). Where the
+driver can switch the torque off (Dynamixel), "torque off" lets the arm be moved
+by hand; on the simulator the joint sliders are then that hand (``SimArm.push``).
 """
 
 from __future__ import annotations
@@ -16,9 +20,10 @@ from typing import Any
 
 import numpy as np
 
-from ..._errors import InputError
+from ..._errors import ArmkitError, InputError
 from ...arm import Arm, Position
 from ...kinematics import fk
+from ...script import Teaching, joints_line
 from .._mover import Goal, Mover
 from ._view import View
 
@@ -51,6 +56,7 @@ class Teach:
     Attributes:
         poses: recorded poses by name, in the order recorded.
         status: the last message shown on the page (a refusal or a recording).
+        teaching: the script lines so far (``joints``/``grip`` moves, ``pose`` lines).
     """
 
     def __init__(self, view: View, arm: Arm, *, echo: bool = True) -> None:
@@ -59,6 +65,10 @@ class Teach:
         self.echo = echo
         self.poses: dict[str, TaughtPose] = {}
         self.status = ""
+        self.limp = False  # torque off: the sliders push the simulated arm by hand
+        start = view.source.state()
+        self.teaching = Teaching(arm.model.name, start.q.copy(), origin="the armkit 3D view")
+        self._written = (joints_line(start.q), round(start.grip * 1000.0, 1))
         self._following_target = False
         self.mover = Mover(arm, on_error=self._refused)
         gui = view.server.gui
@@ -67,6 +77,7 @@ class Teach:
         self._grip = self._add_grip()
         self._pitch, self._any_pitch = self._add_target_options()
         self._gizmo = self._add_gizmo()
+        self._add_limp_box()
         self._name = gui.add_text("pose name", "pose_1")
         gui.add_button("Record pose").on_click(lambda _: self._record_clicked())
         gui.add_button("Home").on_click(lambda _: self.move_joints(arm.model.home))
@@ -85,9 +96,58 @@ class Teach:
         }
         pose = TaughtPose(name, angles, self.arm.position(), state.grip * 1000.0)
         self.poses[name] = pose
+        self._moves()
+        self.teaching.save(name, np.clip(state.q, self.arm.model.lower, self.arm.model.upper))
         self._say(f"recorded {pose.line()}")
         self._name.value = f"pose_{len(self.poses) + 1}"  # type: ignore[misc]
         return pose
+
+    def set_limp(self, on: bool) -> bool:
+        """Torque off (``on``) or on again where the arm is; False if the driver refused."""
+        if on == self.limp:
+            return True
+        self.mover.wait_idle()
+        try:
+            getattr(self.arm.driver, "relax" if on else "stiffen")()
+        except ArmkitError as exc:
+            self._say(f"torque: {exc}")
+            return False
+        self.limp = on
+        self._say("torque off: move the arm by hand" if on else "torque on: the arm holds")
+        return True
+
+    def push_joints(self, q: Any) -> bool:
+        """While limp, a hand puts the simulated arm at ``q`` [rad], shape (dof,) (on a
+        real arm the person moves it and the sliders follow); False with the reason."""
+        world = self.arm.world
+        if not self.limp or world is None:
+            self._say("the torque is on: it moves by the sliders" if not self.limp
+                      else "torque off: move the arm itself")  # fmt: skip
+            return False
+        try:
+            world.arm().push(np.asarray(q, dtype=np.float64))
+        except ValueError as exc:
+            self._say(f"refused: {exc}")
+            return False
+        return True
+
+    def script(self) -> str:
+        """The recorded poses and the moves made, as a script ``armkit run`` replays (the
+        arm's start pose first, its pose now last)."""
+        self._moves()
+        return self.teaching.script()
+
+    def _moves(self) -> None:
+        """Add the move to where the arm is now (a ``joints`` line, a ``grip`` line) if it
+        moved since the last line written."""
+        state, model = self.view.source.state(), self.arm.model
+        joints = joints_line(np.clip(state.q, model.lower, model.upper))
+        width = round(state.grip * 1000.0, 1)
+        if joints != self._written[0]:
+            self.teaching.lines.append(joints)
+        if width != self._written[1] and model.gripper.width_max > model.gripper.width_min:
+            self.teaching.lines.append(f"grip {width:.1f}")
+        self._written = (joints, width)
 
     def _record_clicked(self) -> None:
         try:
@@ -99,6 +159,9 @@ class Teach:
         """Put the target at ``position`` [m], shape (3,), pitch [deg] (None: any); the
         arm follows when it can (True), else the marker says why not (False)."""
         pitch = None if pitch_deg is None else math.radians(pitch_deg)
+        if self.limp:
+            self._say("torque off: move the arm by hand, or switch the torque on")
+            return False
         check = self.view.set_target(position, pitch)
         self._following_target = True
         self._gizmo.position = check.position
@@ -110,12 +173,30 @@ class Teach:
 
     def move_joints(self, q: Any) -> None:
         """Move the arm to joint angles ``q`` [rad], shape (dof,), as the sliders do."""
+        if self.limp:
+            self._say("torque off: switch the torque on to move the arm from the page")
+            return
         self._following_target = False
         self.mover.request(Goal(q=np.asarray(q, dtype=np.float64), speed=1.0))
 
     def close(self) -> None:
         """Stop moving the arm."""
         self.mover.close()
+
+    def _add_limp_box(self) -> None:
+        """ "torque off (move by hand)", where the driver can (``relax``/``stiffen``)."""
+        driver = self.arm.driver
+        if not (
+            callable(getattr(driver, "relax", None)) and callable(getattr(driver, "stiffen", None))
+        ):
+            return
+        box = self.view.server.gui.add_checkbox("torque off (move by hand)", False)
+
+        def clicked(_: Any) -> None:
+            if not self.set_limp(bool(box.value)):
+                box.value = self.limp  # type: ignore[misc]
+
+        box.on_update(clicked)
 
     def _add_sliders(self) -> list[Any]:
         gui, model = self.view.server.gui, self.arm.model
@@ -167,10 +248,13 @@ class Teach:
             return
         self._following_target = False
         q = np.radians([float(s.value) for s in self._sliders])
-        self.mover.request(Goal(q=q))
+        if self.limp:
+            self.push_joints(q)
+        else:
+            self.mover.request(Goal(q=q))
 
     def _grip_moved(self, event: Any) -> None:
-        if event.client is not None:
+        if event.client is not None and not self.limp:
             self.mover.request(Goal(grip=float(self._grip.value) / 1000.0))
 
     def _sync(self) -> None:
