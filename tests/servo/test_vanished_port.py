@@ -78,7 +78,7 @@ def test_the_cli_shows_the_first_error_in_one_line(
         move(*args, **kwargs)
 
     monkeypatch.setattr(driver, "move", unplugged_move)
-    monkeypatch.setattr("armkit.cli._motion.open_driver", lambda *a, **k: driver)
+    monkeypatch.setattr("armkit.connect.open_driver", lambda *a, **k: driver)
     code = main(["--arm", "lynx6", "joints", "100", "90", "90", "90", "90"])
     err = capsys.readouterr().err.strip()
     assert code != 0 and len(err.splitlines()) == 1
