@@ -28,6 +28,7 @@ _OWI = {
     "gravity_joints": list, "load_weights": dict, "down_up_ratio": dict, "overshoot_deg": dict,
     "battery_drain_per_hour": NUM, "base_reversed": bool, "watchdog_margin_s": NUM,
     "rehome_order": list, "rehome_to": dict, "calibration_order": list, "calibration_pose": dict,
+    "task_waypoints": int, "task_tolerance_mm": NUM, "task_turn_tolerance_deg": NUM,
 }  # fmt: skip
 _DXL = {
     "ids": list, "gripper_id": int, "baudrate": int, "ticks_per_turn": int, "center_tick": NUM,
@@ -58,6 +59,10 @@ class OwiSection:
         rehome_order, rehome_to: joints re-homing drives, and the limit ("lower"/"upper") of each.
         calibration_order: joints in the order calibration times them.
         calibration_pose: {joint: poses, each {other joint: "lower" | "upper" | angle [deg]}}.
+        task_waypoints: moves a task makes from its clearance height down to a grasp or
+            release point (001: 3; fewer on an arm whose every run adds slip and coast).
+        task_tolerance_mm, task_turn_tolerance_deg: how far [mm] and how much turned [deg]
+            an object a task put down may end from where the plan puts it (open loop).
     """
 
     traverse_s: Mapping[str, float]
@@ -75,6 +80,9 @@ class OwiSection:
     rehome_to: Mapping[str, str]
     calibration_order: tuple[str, ...]
     calibration_pose: Mapping[str, tuple[Mapping[str, str | float], ...]]
+    task_waypoints: int = 3
+    task_tolerance_mm: float = 1.0
+    task_turn_tolerance_deg: float = 1.0
 
 
 @dataclass(frozen=True)
@@ -182,6 +190,13 @@ def _owi(check: Checker, data: Any, model: ArmModel) -> OwiSection:
             check, get("calibration_order", OWI_JOINTS), f"{w}.calibration_order"
         ),
         calibration_pose=_poses(check, get("calibration_pose", {}), f"{w}.calibration_pose"),
+        task_waypoints=check.integer(get("task_waypoints", 3), f"{w}.task_waypoints", 1, 10),
+        task_tolerance_mm=check.within(
+            get("task_tolerance_mm", 1.0), f"{w}.task_tolerance_mm", 0.1, 50.0, "mm"
+        ),
+        task_turn_tolerance_deg=check.within(
+            get("task_turn_tolerance_deg", 1.0), f"{w}.task_turn_tolerance_deg", 0.1, 20.0, "deg"
+        ),
     )
 
 

@@ -85,6 +85,8 @@ class Mount:
 def _interp(x: float, xs: Sequence[float], ys: Sequence[float]) -> float:
     i = min(max(bisect.bisect_right(xs, x), 1), len(xs) - 1)
     x0, x1, y0, y1 = xs[i - 1], xs[i], ys[i - 1], ys[i]
+    if x1 == x0:  # a degenerate table (a gripper 0..0 mm wide, that never opens): its start
+        return y0
     return y0 + (y1 - y0) * (x - x0) / (x1 - x0)
 
 

@@ -22,6 +22,7 @@ from ._choose import pick_any, place_any, rotate
 from ._live import live_scene, run_checked
 from ._plan import Plan
 from ._points import move_point
+from ._precision import precision_of
 from ._state import Context, Options, State
 from ._targets import resolve
 
@@ -46,7 +47,8 @@ def plan_task(
 
     Args:
         clearance: height of the first waypoint above each grasp and release [mm],
-            30..500 (001: at least 30), then three waypoints down.
+            30..500 (001: at least 30), then three waypoints down (an open-loop arm:
+            its model file's ``task_waypoints``, the OWI one move).
         calibration: the unit's offsets, a calibration file, or None: the arm's
             default file if there is one (``armkit.tasks.default_calibration_file``).
         held: a cube already in the gripper (picked by ``pick`` from where the scene has it).
@@ -61,7 +63,9 @@ def plan_task(
         cal = calibration
     else:
         cal = calibration_for(arm.model.name, calibration)
-    ctx = Context(arm.model, Options(clearance=clearance / 1000.0, calibration=cal), task)
+    waypoints = precision_of(arm.model).waypoints  # the OWI: fewer, longer runs down
+    options = Options(clearance=clearance / 1000.0, waypoints=waypoints, calibration=cal)
+    ctx = Context(arm.model, options, task)
     start = time.perf_counter()
     q0 = arm.driver.read()
     st = State(q0, scene, None, None)

@@ -1,7 +1,8 @@
 """Tasks on a simulated arm: the scene's physics attached to the arm's World so the
 objects move with the gripper, planning from where they really are, and every run
 checked against its plan (a miss, a drop or a tip stops the task and names the step;
-each cube must end within 1 mm and 1 deg of where the plan puts it).
+each cube must end within 1 mm and 1 deg of where the plan puts it, or within the
+tolerance an open-loop arm's model file gives: ``armkit.tasks._precision``).
 
 On real hardware (``arm.world`` is None) nothing is attached and nothing checked.
 """
@@ -16,12 +17,11 @@ from typing import TYPE_CHECKING
 from .._errors import ArmkitError
 from ..scene import Scene, ScenePhysics, rest_scene
 from ._plan import Plan, Step, TaskError, cube_text, pose_error
+from ._precision import Precision, precision_of
 from ._run import run_plan
 
 if TYPE_CHECKING:
     from ..arm import Arm
-POSE_TOLERANCE = 1e-3  # [m]: a cube this far from where the plan puts it is a failure
-TURN_TOLERANCE = math.radians(1.0)
 BAD = ("missed", "dropped", "tipped")
 _ATTACHED: weakref.WeakKeyDictionary[object, tuple[ScenePhysics, Callable[[], None]]] = (
     weakref.WeakKeyDictionary()
@@ -99,7 +99,8 @@ def run_checked(
 
     Raises:
         TaskFailed: the jaws missed, a cube fell or tipped (the task stops after that
-            step), or a cube ended more than 1 mm or 1 deg from its planned pose.
+            step), or a cube ended farther from its planned pose than the arm's
+            precision allows (1 mm and 1 deg; the OWI's from its model file).
     """
     physics = attached(arm)
     if physics is None:
@@ -119,7 +120,7 @@ def run_checked(
     if last:
         _events(plan, physics, seen, last[-1], allow)
     if poses:
-        _poses(plan, physics)
+        _poses(plan, physics, precision_of(arm.model))
 
 
 def _events(
@@ -135,11 +136,11 @@ def _events(
         )  # fmt: skip
 
 
-def _poses(plan: Plan, physics: ScenePhysics) -> None:
+def _poses(plan: Plan, physics: ScenePhysics, precision: Precision) -> None:
     for want in plan.after.cubes:
         got = physics.cube(want.name)
         distance, turn = pose_error(got, want)
-        if distance > POSE_TOLERANCE or turn > TURN_TOLERANCE:
+        if distance > precision.tolerance or turn > precision.turn:
             raise TaskFailed(
                 f"{plan.task}: {cube_text(got)}, {distance * 1000:.1f} mm and "
                 f"{math.degrees(turn):.1f} deg from where planned ({cube_text(want)})",
