@@ -10,7 +10,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError
 from ..model import ArmModel
-from ._chain import Chain, chain_of
+from ._chain import _CHAINS, Chain, chain_of
 from ._closed import best, reasons, solve
 from ._closed_scalar import free, refusal, too_far
 from ._forward import CHUNK
@@ -62,7 +62,7 @@ def ik(
         UnreachableError: no solution inside the limits (``reason`` says why).
         InputError: malformed input (a ValueError), naming the argument.
     """
-    chain = chain_of(model)
+    chain = _CHAINS.get(id(model)) or chain_of(model)
     if isinstance(position, tuple) and len(position) == 3:  # the common case, without a call
         x, y, z = position
         ok = type(x) is float and type(y) is float and type(z) is float
