@@ -38,13 +38,6 @@ Ways = Callable[[float, float, float, Q], "tuple[tuple[float, float], ...] | Rea
 NearestPitch = Callable[[float, float, float, float, float], "float | None"]
 
 
-def fit(v: float, lo: float, hi: float) -> float | None:
-    """v [rad] moved by whole turns into [lo, hi] and clamped to it (within ``_SLACK``), or
-    None. ``solve`` has it inline."""
-    w = v - _TWO_PI * math.floor((v - lo + _SLACK) / _TWO_PI)
-    return (lo if w < lo else (hi if w > hi else w)) if w <= hi + _SLACK else None
-
-
 def miss(v: float, lo: float, hi: float, j: int, misses: Misses) -> None:
     """Record in ``misses`` that joint j's angle v [rad] cannot turn into [lo, hi]: its
     excess and its value at the turn nearest the range."""
