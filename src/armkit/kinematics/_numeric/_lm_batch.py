@@ -20,7 +20,7 @@ from .._chain import Chain
 from .._forward import sweep
 from ._lm import CANDIDATES, LMSettings
 from ._residual_batch import BatchResidual, BatchTask, residual_batch, task_cost
-from ._turn_batch import turn_first_joint
+from ._turn import turn_first_joint
 
 F64 = NDArray[np.float64]
 IDX = NDArray[np.intp]
