@@ -1,11 +1,8 @@
 """The closed form for one target in plain floats: the scalar fast path of ``_closed``.
 
-``fixed_solver`` binds a family arm's constants (link lengths, limits, signs)
-as locals of a closure and returns a function of the target alone: the same
-math as the vectorised reference, a few microseconds a call. ``nearest_solver``
-does the same for the first step of the position-only form (``_pitch_range``):
-the pitch nearest a wanted one at which the wrist point is within reach.
-Tests pin both to the vectorised forms.
+Each solver binds a family arm's constants as locals of a closure: the math of
+``_closed`` and ``_pitch_range.nearest_reachable`` for one target, a few
+microseconds a call. Tests pin both to the vectorised forms.
 """
 
 from __future__ import annotations
@@ -202,14 +199,9 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
 def nearest_solver(
     fam: PlanarFamily, reach: tuple[float, float], base_range: tuple[float, float]
 ) -> NearestPitch | None:
-    """nearest(x, y, z, want, seed0): the pitch [rad] nearest ``want`` at which the wrist point
-    is within ``reach`` = (d_min, d_max) [m] of the first planar joint (None: nowhere), for a
-    base yaw + 3 planar joints with no lateral offset (else None: use the general path).
-
-    There the pitch is the plane turn plus a constant (minus it, reaching back), and the wrist
-    point's distance d from the shoulder follows d^2 = D^2 + L3^2 - 2 D L3 cos(turn - shift):
-    the turns within reach are |turn - shift| in [u_in, u_out], so the nearest is a clamp.
-    """
+    """nearest(x, y, z, want, seed0): ``_pitch_range.nearest_reachable`` for one target
+    (pitch [rad], or None: out of reach), wrist ``reach`` = (d_min, d_max) [m]; for a base yaw
+    + 3 planar joints with no lateral offset (else None: use the general path)."""
     if fam.base is None or len(fam.planar) != 3 or fam.lateral != 0.0:
         return None
     (c1x, c1z), (v3x, v3z) = fam.c1, fam.links[2]

@@ -79,11 +79,8 @@ def preferred(chain: Chain, seed: F64) -> F64:
 def nearest_reachable(chain: Chain, fam: PlanarFamily, b: Planes, want: F64) -> tuple[F64, Bool]:
     """Per target the pitch [rad] nearest ``want`` at which the wrist point is within reach
     of the first two links (and the base inside its limits), and whether there is one.
-
-    With u the turn from the one at which the wrist point is nearest the shoulder, its
-    distance d follows d^2 = D^2 + L3^2 - 2 D L3 cos u: within reach where cos u lies in
-    [c_lo, c_hi], so the nearest u is a clamp of cos u (the sign of sin u kept).
-    """
+    With u the turn from where the wrist point is nearest the shoulder, d^2 = D^2 + L3^2 -
+    2 D L3 cos u: within reach for cos u in [c_lo, c_hi], so the nearest u is a clamp."""
     lo_d, hi_d = chain.wrist_reach
     (v3x, v3z), (c1x, c1z) = fam.links[2], fam.c1
     l3, ang3 = math.hypot(v3x, v3z), math.atan2(v3z, v3x)
