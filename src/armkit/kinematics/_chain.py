@@ -20,7 +20,7 @@ from numpy.typing import NDArray
 
 from .._errors import ModelError
 from ..model import ArmModel, JointFrame
-from ._closed_fast import FixedSolver, NearestPitch, Ways, fixed_solver, nearest_solver
+from ._closed_fast import FixedSolver, FreeSolver, Ways, fixed_solver, free_solver, nearest_solver
 from ._family import PlanarFamily, detect, wrist_range
 from ._pose import pitch_scalar
 from ._scalar import State, compile_state
@@ -51,10 +51,8 @@ class Chain:
             link 2 that the elbow's limits allow (family arms; else (0, 0)).
         fixed: the closed form at one pitch with this chain's constants bound, and
             ways: the base branches of a target (``_closed_fast``); None off the family.
-        nearest: the pitch nearest a wanted one at which the wrist is within reach
-            (``_closed_fast``), or None where the general path is used.
-        free_pitch: a family arm with 3 planar joints: without a pitch, the closed form
-            chooses one (with 2 the pitch follows from the position).
+        free: on a family arm with 3 planar joints, the closed form without a pitch (it
+            chooses one; with 2 the pitch follows from the position), else None.
     """
 
     name: str
@@ -81,8 +79,7 @@ class Chain:
     wrist_reach: tuple[float, float]
     fixed: FixedSolver | None
     ways: Ways | None
-    nearest: NearestPitch | None
-    free_pitch: bool
+    free: FreeSolver | None
 
 
 _CHAINS: dict[int, Chain] = {}
@@ -134,6 +131,13 @@ def compile_chain(model: ArmModel) -> Chain:
     fam = family if isinstance(family, PlanarFamily) else None
     j2 = fam.planar[1] if fam is not None else 0
     solvers = fixed_solver(fam, lower, upper) if fam is not None else None
+    home_pitch = pitch_scalar(at_home.R[0], at_home.p)
+    free = None
+    if fam is not None and solvers is not None and len(fam.planar) == 3:
+        base = (lower[0], upper[0])  # the family's base is joint 0
+        wrist = wrist_range(fam, lower[j2], upper[j2])
+        nearest = None if fam.base is None else nearest_solver(fam, wrist, base)
+        free = free_solver(solvers[0], nearest, home, home_pitch, state)
     return Chain(
         name=model.name,
         dof=model.dof,
@@ -155,14 +159,9 @@ def compile_chain(model: ArmModel) -> Chain:
         weight=0.5 * reach,
         family=fam,
         why_not="" if isinstance(family, PlanarFamily) else f"{model.name} {family}",
-        home_pitch=pitch_scalar(at_home.R[0], at_home.p),
+        home_pitch=home_pitch,
         wrist_reach=wrist_range(fam, lower[j2], upper[j2]) if fam is not None else (0.0, 0.0),
         fixed=solvers[0] if solvers else None,
         ways=solvers[1] if solvers else None,
-        nearest=None
-        if fam is None or fam.base is None
-        else nearest_solver(
-            fam, wrist_range(fam, lower[j2], upper[j2]), (lower[fam.base], upper[fam.base])
-        ),
-        free_pitch=fam is not None and len(fam.planar) == 3,
+        free=free,
     )

@@ -10,16 +10,16 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from operator import itemgetter
 
 from .._errors import Reason
 from ._family import PlanarFamily
+from ._pose import pitch_scalar
+from ._scalar import State
 
 Q = tuple[float, ...]
 Found = list[tuple[float, Q]]  # (squared joint distance to the seed, solution)
 _TWO_PI = 2.0 * math.pi
 _SLACK = 1e-9
-_first = itemgetter(0)
 
 
 @dataclass
@@ -33,6 +33,7 @@ class Misses:
 FixedSolver = Callable[[float, float, float, "float | None", Q, "Misses | None"], Found]
 Ways = Callable[[float, float, float, Q], "tuple[tuple[float, float], ...] | Reason"]
 NearestPitch = Callable[[float, float, float, float, float], "float | None"]
+FreeSolver = Callable[[float, float, float, Q], "Found | None"]
 
 
 def miss(v: float, lo: float, hi: float, j: int, misses: Misses) -> None:
@@ -214,7 +215,14 @@ def nearest_solver(
     )
     lo2, hi2 = reach[0] ** 2, reach[1] ** 2
     lo0, hi0 = base_range
-    pi, tp, atan2, acos, rem = math.pi, _TWO_PI, math.atan2, math.acos, math.remainder
+    pi, tp, atan2, acos, rem, inf = (
+        math.pi,
+        _TWO_PI,
+        math.atan2,
+        math.acos,
+        math.remainder,
+        math.inf,
+    )
     sqrt, cos, sin, mid, l3sq = math.sqrt, math.cos, math.sin, 0.5 * (lo0 + hi0), l3 * l3
     full = hi0 - lo0 >= tp - 1e-9  # the base turns all the way: both branches always face
     c_k, s_k = math.cos(phi0 - ang3), math.sin(phi0 - ang3)
@@ -230,14 +238,14 @@ def nearest_solver(
             return want  # on the base axis: the solvers decide
         cw, sw = cos(want), sin(want)
         tz = z - c1z
-        todo = []
+        best, sign, tx, u = inf, 0.0, 0.0, 0.0  # the nearest turn within reach: a clamp
         # per way: cos and sin of want's turn less the wrist link's angle, facing (+) and back (-)
-        for sign, ca, sa in ((1.0, cw * c_k + sw * s_k, sw * c_k - cw * s_k),
+        for way, ca, sa in ((1.0, cw * c_k + sw * s_k, sw * c_k - cw * s_k),
                              (-1.0, sw * s_k - cw * c_k, sw * c_k + cw * s_k)):  # fmt: skip
-            if not full and not faces(x, y, sign):
+            if not full and not faces(x, y, way):
                 continue
-            tx = sign * r - c1x
-            big2 = tx * tx + tz * tz
+            wx = way * r - c1x
+            big2 = wx * wx + tz * tz
             big = sqrt(big2)
             k = 2.0 * big * l3
             if k < 1e-15:
@@ -247,16 +255,36 @@ def nearest_solver(
             c_lo, c_hi = (big2 + l3sq - hi2) / k, (big2 + l3sq - lo2) / k
             if c_lo > 1.0 + 1e-12 or c_hi < -1.0 - 1e-12:
                 continue
-            c = (ca * tx + sa * tz) / big  # cos u at want (u: the turn from W's nearest)
+            c = (ca * wx + sa * tz) / big  # cos u at want (u: the turn from W's nearest)
             if c_lo <= c <= c_hi:  # the wrist within reach at want
                 return want
-            u = acos(min(1.0, c_hi)) if c > c_hi else acos(max(-1.0, c_lo))  # |u| clamped
-            gap = abs(u - acos(max(-1.0, min(1.0, c))))
-            todo.append((gap, sign, tx, u if sa * tx - ca * tz >= 0.0 else -u))
-        if not todo:
+            wu = acos(min(1.0, c_hi)) if c > c_hi else acos(max(-1.0, c_lo))  # |u| clamped
+            gap = abs(wu - acos(max(-1.0, min(1.0, c))))
+            if gap < best:
+                best, sign, tx, u = gap, way, wx, (wu if sa * wx - ca * tz >= 0.0 else -wu)
+        if best == inf:
             return None
-        _, sign, tx, u = min(todo, key=_first)  # the nearest turn within reach: a clamp
         turn = u + atan2(tz, tx) - ang3 + phi0
         return rem(turn if sign > 0 else pi - turn, tp)
 
     return nearest
+
+
+def free_solver(
+    solve: FixedSolver, nearest: NearestPitch | None, home: Q, home_pitch: float, state: State
+) -> FreeSolver:
+    """free(x, y, z, seed): position only (3 planar joints), every solution at the pitch
+    nearest the seed's at which the wrist point is within reach (``nearest``; without it
+    the seed's), unsorted: [] where a joint limit refuses that pitch, None where none is
+    within reach."""
+
+    def free(x: float, y: float, z: float, seed: Q) -> Found | None:
+        if seed is home or seed == home:
+            want = home_pitch
+        else:
+            st = state(list(seed))
+            want = pitch_scalar(st.R[0], st.p)
+        at = want if nearest is None else nearest(x, y, z, want, seed[0])
+        return None if at is None else solve(x, y, z, at, seed, None)
+
+    return free

@@ -21,21 +21,12 @@ from ._pitch_range import limited_pitch
 from ._pose import pitch_scalar
 
 
-def free(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
-    """Position only (3 planar joints): every solution at the pitch nearest the seed's at
-    which the arm fits, unsorted; [] if none."""
+def limited(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
+    """Position only, where a joint limit refuses ``chain.free``'s pitch: every solution at
+    the boundary pitch nearest the seed's at which the arm fits, unsorted; [] if none."""
     want = chain.home_pitch if seed == chain.home else preferred(chain, seed)
-    solve, nearest = chain.fixed, chain.nearest
-    assert solve is not None
-    at: float | None = want
-    if nearest is not None:  # the nearest pitch with the wrist point within reach
-        at = nearest(x, y, z, want, seed[0])
-        if at is None:  # out of reach at every pitch
-            return []
-    found = solve(x, y, z, at, seed, None)
-    if found:
-        return found
-    assert chain.family is not None  # a joint limit is in the way: the nearest boundary point
+    solve = chain.fixed
+    assert solve is not None and chain.family is not None
     pitch, ok = limited_pitch(
         chain, chain.family, np.array([[x, y, z]]), np.array([seed]), np.array([want])
     )

@@ -12,7 +12,7 @@ from .._errors import InputError
 from ..model import ArmModel
 from ._chain import _CHAINS, Chain, chain_of
 from ._closed import best, reasons, solve
-from ._closed_scalar import free, refusal, too_far
+from ._closed_scalar import limited, refusal, too_far
 from ._forward import CHUNK
 from ._numeric import solve_many, solve_one
 from ._pitch_range import free_batch, preferred
@@ -85,10 +85,11 @@ def ik(
     if solve is not None and orientation is None and (method == "auto" or method == "analytic"):
         if pitch is None:
             pitch = chain.default_pitch
-        if pitch is not None or not chain.free_pitch:
+        free = chain.free
+        if pitch is not None or free is None:
             found = solve(p[0], p[1], p[2], pitch, seed, None)
-        else:  # (a far target finds nothing and is refused as such below)
-            found = free(chain, p[0], p[1], p[2], seed)
+        elif not (found := free(p[0], p[1], p[2], seed)):  # type: ignore[assignment]
+            found = [] if found is None else limited(chain, p[0], p[1], p[2], seed)
         if not found:
             if not p[0] * p[0] + p[1] * p[1] + p[2] * p[2] <= chain.reach2:
                 raise too_far(chain, p, pitch)
