@@ -109,7 +109,8 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
             if misses is not None:
                 misses.reasons.append(branches)
             return found
-        sp, cp = (sin(pitch), cos(pitch)) if three and pitch is not None else (0.0, 1.0)
+        pv = pitch if three and pitch is not None else 0.0
+        sp, cp = sin(pv), cos(pv)
         given = not three and pitch is not None  # 2 planar joints: check the pitch they give
         for r, q0 in branches:
             if base is not None and not lo0 <= q0 <= hi0:  # by whole turns into the limits
@@ -119,18 +120,18 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
                         miss(q0, lo0, hi0, base, misses)
                     continue
                 q0 = lo0 if w < lo0 else (hi0 if w > hi0 else w)
-            wx, wz, c, s = r - c1x, z - c1z, 1.0, 0.0
+            wx, wz, turn = r - c1x, z - c1z, 0.0
             if three:  # the wrist point, from the plane turn that gives the pitch
-                if plain:
+                if plain or not (lat or rho < 1e-12 or -1e-12 < r < 1e-12):
                     ca, sa = (cp if r > 0.0 else -cp), sp
-                elif rho < 1e-12 or -1e-12 < r < 1e-12:
-                    ca, sa = cp, sp
-                elif lat:
-                    sa = sp * abs(r) / rho
-                    n = sqrt(sa * sa + cp * cp)
-                    ca, sa = (cp if r > 0.0 else -cp) / n, sa / n
+                    turn = (pv if r > 0.0 else pi - pv) - phi0  # as ``_closed.turn_of``
                 else:
-                    ca, sa = (cp if r > 0.0 else -cp), sp
+                    ca, sa = cp, sp
+                    if lat and rho >= 1e-12 and not -1e-12 < r < 1e-12:
+                        sa = sp * abs(r) / rho
+                        n = sqrt(sa * sa + cp * cp)
+                        ca, sa = (cp if r > 0.0 else -cp) / n, sa / n
+                    turn = atan2(sa, ca) - phi0
                 c, s = ca * c0 + sa * s0, sa * c0 - ca * s0
                 wx, wz = wx - (c * v3x - s * v3z), wz - (s * v3x + c * v3z)
             cg = (wx * wx + wz * wz - k0) / k1
@@ -139,7 +140,7 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
                     misses.reasons.append("too_far" if cg > 0 else "too_close")
                 continue
             cg = 1.0 if cg > 1.0 else (-1.0 if cg < -1.0 else cg)
-            g, turn = acos(cg), atan2(s, c) if three else 0.0
+            g = acos(cg)
             t = atan2(l2 * sqrt(1.0 - cg * cg), l1 + l2 * cg)
             aim = atan2(wz, wx) - ang1
             for gg, tt in ((g, t), (-g, -t)) if g > 1e-12 else ((g, t),):
