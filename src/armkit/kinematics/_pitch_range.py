@@ -62,7 +62,8 @@ def limited_pitch(
     fits, over every base branch the base allows, and whether there is one (N,)."""
     b = planes(fam, P, seed)
     count = len(b.r) // len(P)
-    gap, at = boundary_pitch(chain, fam, b.r, b.z, b.rho, np.tile(want, count))
+    with np.errstate(invalid="ignore", divide="ignore"):  # NaN: no boundary point there
+        gap, at = boundary_pitch(chain, fam, b.r, b.z, b.rho, np.tile(want, count))
     gap = b.per_target(np.where(_base_fits(chain, fam, b.q0) & ~np.tile(b.bad, count), gap, np.inf))
     k = np.argmin(gap, axis=0)
     cols = np.arange(len(P))
