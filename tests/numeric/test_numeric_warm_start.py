@@ -16,8 +16,7 @@ from armkit.kinematics._numeric import _lm
 from armkit.kinematics._numeric._residual import Task, residual
 from armkit.kinematics._numeric._residual_batch import BatchTask, task_cost
 from armkit.kinematics._numeric._sampling import clamp
-from armkit.kinematics._numeric._turn import best_turn
-from armkit.kinematics._numeric._turn_batch import turn_first_joint
+from armkit.kinematics._numeric._turn import best_turn, turn_first_joint
 from armkit.model import load_model
 
 

@@ -20,7 +20,15 @@ from numpy.typing import NDArray
 
 from .._errors import ModelError
 from ..model import ArmModel, JointFrame
-from ._closed_fast import FixedSolver, NearestPitch, Ways, fixed_solver, nearest_solver
+from ._closed_fast import (
+    FixedSolver,
+    FreeSolver,
+    Q,
+    Ways,
+    fixed_solver,
+    free_solver,
+    nearest_solver,
+)
 from ._family import PlanarFamily, detect, wrist_range
 from ._pose import pitch_scalar
 from ._scalar import State, compile_state
@@ -51,10 +59,8 @@ class Chain:
             link 2 that the elbow's limits allow (family arms; else (0, 0)).
         fixed: the closed form at one pitch with this chain's constants bound, and
             ways: the base branches of a target (``_closed_fast``); None off the family.
-        nearest: the pitch nearest a wanted one at which the wrist is within reach
-            (``_closed_fast``), or None where the general path is used.
-        free_pitch: a family arm with 3 planar joints: without a pitch, the closed form
-            chooses one (with 2 the pitch follows from the position).
+        free: on a family arm with 3 planar joints, the closed form without a pitch (it
+            chooses one; with 2 the pitch follows from the position), else None.
     """
 
     name: str
@@ -81,8 +87,7 @@ class Chain:
     wrist_reach: tuple[float, float]
     fixed: FixedSolver | None
     ways: Ways | None
-    nearest: NearestPitch | None
-    free_pitch: bool
+    free: FreeSolver | None
 
 
 _CHAINS: dict[int, Chain] = {}
@@ -127,13 +132,14 @@ def compile_chain(model: ArmModel) -> Chain:
     T0[:3, :3] = np.array(at_zero.R).T
     T0[:3, 3] = at_zero.p
     family = detect(at_zero.jw, at_zero.origins, T0)
+    fam = family if isinstance(family, PlanarFamily) else None
     lower = tuple(float(j.lower) for j in model.joints)
     upper = tuple(float(j.upper) for j in model.joints)
     home = tuple(float(j.home) for j in model.joints)
     at_home = state(list(home))
-    fam = family if isinstance(family, PlanarFamily) else None
-    j2 = fam.planar[1] if fam is not None else 0
-    solvers = fixed_solver(fam, lower, upper) if fam is not None else None
+    home_pitch = pitch_scalar(at_home.R[0], at_home.p)
+    wrist = wrist_range(fam, lower[fam.planar[1]], upper[fam.planar[1]]) if fam else (0.0, 0.0)
+    fixed, ways, free = _solvers(fam, lower, upper, wrist, (home, home_pitch, state))
     return Chain(
         name=model.name,
         dof=model.dof,
@@ -155,14 +161,24 @@ def compile_chain(model: ArmModel) -> Chain:
         weight=0.5 * reach,
         family=fam,
         why_not="" if isinstance(family, PlanarFamily) else f"{model.name} {family}",
-        home_pitch=pitch_scalar(at_home.R[0], at_home.p),
-        wrist_reach=wrist_range(fam, lower[j2], upper[j2]) if fam is not None else (0.0, 0.0),
-        fixed=solvers[0] if solvers else None,
-        ways=solvers[1] if solvers else None,
-        nearest=None
-        if fam is None or fam.base is None
-        else nearest_solver(
-            fam, wrist_range(fam, lower[j2], upper[j2]), (lower[fam.base], upper[fam.base])
-        ),
-        free_pitch=fam is not None and len(fam.planar) == 3,
+        home_pitch=home_pitch,
+        wrist_reach=wrist,
+        fixed=fixed,
+        ways=ways,
+        free=free,
     )
+
+
+def _solvers(
+    fam: PlanarFamily | None, lower: Q, upper: Q, wrist: tuple[float, float],
+    at_home: tuple[Q, float, State],
+) -> tuple[FixedSolver | None, Ways | None, FreeSolver | None]:  # fmt: skip
+    """The closed-form solvers of a family arm (``_closed_fast``), None off the family;
+    ``at_home``: home [rad], the pitch there [rad] and the chain's scalar state."""
+    if fam is None:
+        return None, None, None
+    solve, ways = fixed_solver(fam, lower, upper)
+    if len(fam.planar) != 3:
+        return solve, ways, None
+    nearest = None if fam.base is None else nearest_solver(fam, wrist, (lower[0], upper[0]))
+    return solve, ways, free_solver(solve, nearest, *at_home)

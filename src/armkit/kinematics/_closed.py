@@ -3,10 +3,8 @@
 Base branches: the arm faces the target (plane radius r > 0) or reaches over
 its shoulder (r < 0). Elbow branches: the law of cosines' two signs. For each
 base branch the plane target is computed once on (N,) arrays and both elbows
-share its trigonometry; the 4 candidates per target land in an (N, 4, dof)
-array, every joint moved by whole turns into its limits where it can be, and
-the valid one nearest the seed wins. The scalar fast path (``_closed_fast``)
-is pinned to this by tests.
+share its trigonometry; every joint is moved by whole turns into its limits
+where it can be, and the valid candidate nearest the seed wins.
 """
 
 from __future__ import annotations

@@ -1,11 +1,8 @@
 """The closed form for one target in plain floats: the scalar fast path of ``_closed``.
 
-``fixed_solver`` binds a family arm's constants (link lengths, limits, signs)
-as locals of a closure and returns a function of the target alone: the same
-math as the vectorised reference, a few microseconds a call. ``nearest_solver``
-does the same for the first step of the position-only form (``_pitch_range``):
-the pitch nearest a wanted one at which the wrist point is within reach.
-Tests pin both to the vectorised forms.
+Each solver binds a family arm's constants as locals of a closure: the math of
+``_closed`` and ``_pitch_range.nearest_reachable`` for one target, a few
+microseconds a call. Tests pin both to the vectorised forms.
 """
 
 from __future__ import annotations
@@ -13,16 +10,16 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from operator import itemgetter
 
 from .._errors import Reason
 from ._family import PlanarFamily
+from ._pose import pitch_scalar
+from ._scalar import State
 
 Q = tuple[float, ...]
 Found = list[tuple[float, Q]]  # (squared joint distance to the seed, solution)
 _TWO_PI = 2.0 * math.pi
 _SLACK = 1e-9
-_first = itemgetter(0)
 
 
 @dataclass
@@ -36,13 +33,7 @@ class Misses:
 FixedSolver = Callable[[float, float, float, "float | None", Q, "Misses | None"], Found]
 Ways = Callable[[float, float, float, Q], "tuple[tuple[float, float], ...] | Reason"]
 NearestPitch = Callable[[float, float, float, float, float], "float | None"]
-
-
-def fit(v: float, lo: float, hi: float) -> float | None:
-    """v [rad] moved by whole turns into [lo, hi] and clamped to it (within ``_SLACK``), or
-    None. ``solve`` has it inline."""
-    w = v - _TWO_PI * math.floor((v - lo + _SLACK) / _TWO_PI)
-    return (lo if w < lo else (hi if w > hi else w)) if w <= hi + _SLACK else None
+FreeSolver = Callable[[float, float, float, Q], "Found | None"]
 
 
 def miss(v: float, lo: float, hi: float, j: int, misses: Misses) -> None:
@@ -118,7 +109,8 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
             if misses is not None:
                 misses.reasons.append(branches)
             return found
-        sp, cp = (sin(pitch), cos(pitch)) if three and pitch is not None else (0.0, 1.0)
+        pv = pitch if three and pitch is not None else 0.0
+        sp, cp = sin(pv), cos(pv)
         given = not three and pitch is not None  # 2 planar joints: check the pitch they give
         for r, q0 in branches:
             if base is not None and not lo0 <= q0 <= hi0:  # by whole turns into the limits
@@ -128,18 +120,18 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
                         miss(q0, lo0, hi0, base, misses)
                     continue
                 q0 = lo0 if w < lo0 else (hi0 if w > hi0 else w)
-            wx, wz, c, s = r - c1x, z - c1z, 1.0, 0.0
+            wx, wz, turn = r - c1x, z - c1z, 0.0
             if three:  # the wrist point, from the plane turn that gives the pitch
-                if plain:
+                if plain or not (lat or rho < 1e-12 or -1e-12 < r < 1e-12):
                     ca, sa = (cp if r > 0.0 else -cp), sp
-                elif rho < 1e-12 or -1e-12 < r < 1e-12:
-                    ca, sa = cp, sp
-                elif lat:
-                    sa = sp * abs(r) / rho
-                    n = sqrt(sa * sa + cp * cp)
-                    ca, sa = (cp if r > 0.0 else -cp) / n, sa / n
+                    turn = (pv if r > 0.0 else pi - pv) - phi0  # as ``_closed.turn_of``
                 else:
-                    ca, sa = (cp if r > 0.0 else -cp), sp
+                    ca, sa = cp, sp
+                    if lat and rho >= 1e-12 and not -1e-12 < r < 1e-12:
+                        sa = sp * abs(r) / rho
+                        n = sqrt(sa * sa + cp * cp)
+                        ca, sa = (cp if r > 0.0 else -cp) / n, sa / n
+                    turn = atan2(sa, ca) - phi0
                 c, s = ca * c0 + sa * s0, sa * c0 - ca * s0
                 wx, wz = wx - (c * v3x - s * v3z), wz - (s * v3x + c * v3z)
             cg = (wx * wx + wz * wz - k0) / k1
@@ -148,7 +140,7 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
                     misses.reasons.append("too_far" if cg > 0 else "too_close")
                 continue
             cg = 1.0 if cg > 1.0 else (-1.0 if cg < -1.0 else cg)
-            g, turn = acos(cg), atan2(s, c) if three else 0.0
+            g = acos(cg)
             t = atan2(l2 * sqrt(1.0 - cg * cg), l1 + l2 * cg)
             aim = atan2(wz, wx) - ang1
             for gg, tt in ((g, t), (-g, -t)) if g > 1e-12 else ((g, t),):
@@ -209,14 +201,9 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
 def nearest_solver(
     fam: PlanarFamily, reach: tuple[float, float], base_range: tuple[float, float]
 ) -> NearestPitch | None:
-    """nearest(x, y, z, want, seed0): the pitch [rad] nearest ``want`` at which the wrist point
-    is within ``reach`` = (d_min, d_max) [m] of the first planar joint (None: nowhere), for a
-    base yaw + 3 planar joints with no lateral offset (else None: use the general path).
-
-    There the pitch is the plane turn plus a constant (minus it, reaching back), and the wrist
-    point's distance d from the shoulder follows d^2 = D^2 + L3^2 - 2 D L3 cos(turn - shift):
-    the turns within reach are |turn - shift| in [u_in, u_out], so the nearest is a clamp.
-    """
+    """nearest(x, y, z, want, seed0): ``_pitch_range.nearest_reachable`` for one target
+    (pitch [rad], or None: out of reach), wrist ``reach`` = (d_min, d_max) [m]; for a base yaw
+    + 3 planar joints with no lateral offset (else None: use the general path)."""
     if fam.base is None or len(fam.planar) != 3 or fam.lateral != 0.0:
         return None
     (c1x, c1z), (v3x, v3z) = fam.c1, fam.links[2]
@@ -229,7 +216,14 @@ def nearest_solver(
     )
     lo2, hi2 = reach[0] ** 2, reach[1] ** 2
     lo0, hi0 = base_range
-    pi, tp, atan2, acos, rem = math.pi, _TWO_PI, math.atan2, math.acos, math.remainder
+    pi, tp, atan2, acos, rem, inf = (
+        math.pi,
+        _TWO_PI,
+        math.atan2,
+        math.acos,
+        math.remainder,
+        math.inf,
+    )
     sqrt, cos, sin, mid, l3sq = math.sqrt, math.cos, math.sin, 0.5 * (lo0 + hi0), l3 * l3
     full = hi0 - lo0 >= tp - 1e-9  # the base turns all the way: both branches always face
     c_k, s_k = math.cos(phi0 - ang3), math.sin(phi0 - ang3)
@@ -245,14 +239,14 @@ def nearest_solver(
             return want  # on the base axis: the solvers decide
         cw, sw = cos(want), sin(want)
         tz = z - c1z
-        todo = []
+        best, sign, tx, u = inf, 0.0, 0.0, 0.0  # the nearest turn within reach: a clamp
         # per way: cos and sin of want's turn less the wrist link's angle, facing (+) and back (-)
-        for sign, ca, sa in ((1.0, cw * c_k + sw * s_k, sw * c_k - cw * s_k),
+        for way, ca, sa in ((1.0, cw * c_k + sw * s_k, sw * c_k - cw * s_k),
                              (-1.0, sw * s_k - cw * c_k, sw * c_k + cw * s_k)):  # fmt: skip
-            if not full and not faces(x, y, sign):
+            if not full and not faces(x, y, way):
                 continue
-            tx = sign * r - c1x
-            big2 = tx * tx + tz * tz
+            wx = way * r - c1x
+            big2 = wx * wx + tz * tz
             big = sqrt(big2)
             k = 2.0 * big * l3
             if k < 1e-15:
@@ -262,16 +256,36 @@ def nearest_solver(
             c_lo, c_hi = (big2 + l3sq - hi2) / k, (big2 + l3sq - lo2) / k
             if c_lo > 1.0 + 1e-12 or c_hi < -1.0 - 1e-12:
                 continue
-            c = (ca * tx + sa * tz) / big  # cos u at want (u: the turn from W's nearest)
+            c = (ca * wx + sa * tz) / big  # cos u at want (u: the turn from W's nearest)
             if c_lo <= c <= c_hi:  # the wrist within reach at want
                 return want
-            u = acos(min(1.0, c_hi)) if c > c_hi else acos(max(-1.0, c_lo))  # |u| clamped
-            gap = abs(u - acos(max(-1.0, min(1.0, c))))
-            todo.append((gap, sign, tx, u if sa * tx - ca * tz >= 0.0 else -u))
-        if not todo:
+            wu = acos(min(1.0, c_hi)) if c > c_hi else acos(max(-1.0, c_lo))  # |u| clamped
+            gap = abs(wu - acos(max(-1.0, min(1.0, c))))
+            if gap < best:
+                best, sign, tx, u = gap, way, wx, (wu if sa * wx - ca * tz >= 0.0 else -wu)
+        if best == inf:
             return None
-        _, sign, tx, u = min(todo, key=_first)  # the nearest turn within reach: a clamp
         turn = u + atan2(tz, tx) - ang3 + phi0
         return rem(turn if sign > 0 else pi - turn, tp)
 
     return nearest
+
+
+def free_solver(
+    solve: FixedSolver, nearest: NearestPitch | None, home: Q, home_pitch: float, state: State
+) -> FreeSolver:
+    """free(x, y, z, seed): position only (3 planar joints), every solution at the pitch
+    nearest the seed's at which the wrist point is within reach (``nearest``; without it
+    the seed's), unsorted: [] where a joint limit refuses that pitch, None where none is
+    within reach."""
+
+    def free(x: float, y: float, z: float, seed: Q) -> Found | None:
+        if seed is home or seed == home:
+            want = home_pitch
+        else:
+            st = state(list(seed))
+            want = pitch_scalar(st.R[0], st.p)
+        at = want if nearest is None else nearest(x, y, z, want, seed[0])
+        return None if at is None else solve(x, y, z, at, seed, None)
+
+    return free

@@ -3,7 +3,7 @@
 Without a pitch (3 planar joints) the pitch is the one nearest the seed's at
 which the arm fits (see ``_pitch_range``): first the nearest at which the wrist
 point is within the links' reach, by the chain's scalar ``nearest``; where a
-joint limit refuses that one, the vectorised ``boundary_pitch`` on this one
+joint limit refuses that one, the vectorised ``limited_pitch`` on this one
 target.
 """
 
@@ -11,37 +11,26 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from .._errors import Reason, UnreachableError
 from ._chain import Chain
-from ._closed_fast import Found, Misses, Q, fit
+from ._closed_fast import Found, Misses, Q
 from ._family import PlanarFamily
-from ._pitch_range import Floats, boundary_pitch
+from ._pitch_range import limited_pitch
 from ._pose import pitch_scalar
 
 
-def free(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
-    """Position only (3 planar joints): every solution at the pitch nearest the seed's at
-    which the arm fits, unsorted; [] if none."""
+def limited(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
+    """Position only, where a joint limit refuses ``chain.free``'s pitch: every solution at
+    the boundary pitch nearest the seed's at which the arm fits, unsorted; [] if none."""
     want = chain.home_pitch if seed == chain.home else preferred(chain, seed)
-    solve, nearest = chain.fixed, chain.nearest
-    assert solve is not None
-    at: float | None = want
-    if nearest is not None:  # the nearest pitch with the wrist point within reach
-        at = nearest(x, y, z, want, seed[0])
-        if at is None:  # out of reach at every pitch
-            return []
-    found = solve(x, y, z, at, seed, None)
-    if found:
-        return found
-    assert chain.ways is not None and chain.family is not None
-    if isinstance(ways := chain.ways(x, y, z, seed), str):
-        return found
-    gap, base = math.inf, chain.family.base
-    for r, q0 in ways:  # a joint limit is in the way: the nearest boundary point that fits
-        if base is None or fit(q0, chain.lower[base], chain.upper[base]) is not None:
-            d, pitch = boundary_pitch(chain, chain.family, r, z, math.hypot(x, y), want, Floats)
-            gap, at = (d, pitch) if d < gap else (gap, at)
-    return solve(x, y, z, at, seed, None) if gap < math.inf else []
+    solve = chain.fixed
+    assert solve is not None and chain.family is not None
+    pitch, ok = limited_pitch(
+        chain, chain.family, np.array([[x, y, z]]), np.array([seed]), np.array([want])
+    )
+    return solve(x, y, z, float(pitch[0]), seed, None) if ok[0] else []
 
 
 def preferred(chain: Chain, seed: Q) -> float:

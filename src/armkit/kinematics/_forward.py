@@ -1,10 +1,7 @@
 """Forward kinematics, frames and the geometric Jacobian: one vectorised sweep.
 
-``sweep`` walks the chain's steps once over N joint vectors, the rotation
-columns and origin kept as (3, N) arrays, and returns the tool poses and, on
-request, every frame and the Jacobian. It is the reference; a single pose
-for ``fk`` and the solvers' inner loops use the scalar fast path
-(``_scalar``), which tests pin to it.
+``sweep`` walks the chain's steps once over N joint vectors ((3, N) columns and
+origin): the reference, which a single pose's scalar fast path (``_scalar``) is pinned to.
 """
 
 from __future__ import annotations

@@ -10,9 +10,9 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError
 from ..model import ArmModel
-from ._chain import Chain, chain_of
+from ._chain import _CHAINS, Chain, chain_of
 from ._closed import best, reasons, solve
-from ._closed_scalar import free, refusal, too_far
+from ._closed_scalar import limited, refusal, too_far
 from ._forward import CHUNK
 from ._numeric import solve_many, solve_one
 from ._pitch_range import free_batch, preferred
@@ -62,15 +62,16 @@ def ik(
         UnreachableError: no solution inside the limits (``reason`` says why).
         InputError: malformed input (a ValueError), naming the argument.
     """
-    chain = chain_of(model)
+    chain = _CHAINS.get(id(model)) or chain_of(model)
     if isinstance(position, tuple) and len(position) == 3:  # the common case, without a call
-        x, y, z = position
-        ok = type(x) is float and type(y) is float and type(z) is float
-        p = position if ok and x - x == 0.0 and y - y == 0.0 and z - z == 0.0 else point(position)
+        p = x, y, z = position
+        floats = type(x) is float and type(y) is float and type(z) is float
+        if not (floats and x - x == 0.0 and y - y == 0.0 and z - z == 0.0):
+            p = x, y, z = point(position)
     else:
         if isinstance(position, Target):
             position, pitch, orientation = _unpack(position, pitch, orientation)
-        p = point(position)
+        p = x, y, z = point(position)
     if pitch is not None and not (type(pitch) is float and pitch - pitch == 0.0):
         pitch = angle(pitch, "pitch")  # else: None or a finite float already
     if q_seed is None:
@@ -85,17 +86,18 @@ def ik(
     if solve is not None and orientation is None and (method == "auto" or method == "analytic"):
         if pitch is None:
             pitch = chain.default_pitch
-        if pitch is not None or not chain.free_pitch:
-            found = solve(p[0], p[1], p[2], pitch, seed, None)
-        else:  # (a far target finds nothing and is refused as such below)
-            found = free(chain, p[0], p[1], p[2], seed)
+        free = chain.free
+        if pitch is not None or free is None:
+            found = solve(x, y, z, pitch, seed, None)
+        elif not (found := free(x, y, z, seed)):  # type: ignore[assignment]
+            found = [] if found is None else limited(chain, x, y, z, seed)
         if not found:
-            if not p[0] * p[0] + p[1] * p[1] + p[2] * p[2] <= chain.reach2:
+            if not x * x + y * y + z * z <= chain.reach2:
                 raise too_far(chain, p, pitch)
             assert chain.family is not None
             raise refusal(chain, chain.family, p, pitch, seed)
         return IKResult.of(found, (p, pitch, None), chain)
-    if p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > chain.reach2:
+    if x * x + y * y + z * z > chain.reach2:
         raise too_far(chain, p, pitch)
     if orientation is None and pitch is None:
         pitch = chain.default_pitch

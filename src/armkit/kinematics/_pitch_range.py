@@ -13,8 +13,7 @@ form. First taken, and enough for most targets: the nearest pitch at which W
 is within the annulus (``nearest_reachable``, and the chain's scalar
 ``nearest``). Where a joint limit refuses it, every boundary point is checked
 by dot products of the links (no angle computed) and the nearest that fits is
-taken (``boundary_pitch``): written once for lanes that are Python floats (one
-target's base branch) or arrays (many at once).
+taken (``boundary_pitch``, ``limited_pitch``).
 """
 
 from __future__ import annotations
@@ -34,21 +33,8 @@ from ._pose import pitch_of
 
 F64 = NDArray[np.float64]
 Bool = NDArray[np.bool_]
-Lane = Any  # a float, or an array of floats: one value per lane
+Lane = Any  # an array of floats: one value per lane
 _CHECK = 0.5e-9  # [rad]: a boundary point fits within half the solvers' slack
-
-
-class Floats:
-    """numpy's names for the functions ``boundary_pitch`` uses, on Python floats."""
-
-    sqrt = staticmethod(math.sqrt)
-    cos = staticmethod(math.cos)
-    sin = staticmethod(math.sin)
-    arctan2 = staticmethod(math.atan2)
-
-    @staticmethod
-    def where(c: bool, a: float, b: float) -> float:
-        return a if c else b
 
 
 def free_batch(chain: Chain, fam: PlanarFamily, P: F64, seed: F64) -> tuple[F64, Bool]:
@@ -63,16 +49,25 @@ def free_batch(chain: Chain, fam: PlanarFamily, P: F64, seed: F64) -> tuple[F64,
     hard = np.flatnonzero(~ok & has)
     for s in range(0, len(hard), 4 * CHUNK):  # large lanes: boundary_pitch loops per point
         i = hard[s : s + 4 * CHUNK]
-        b = planes(fam, P[i], seed[i])
-        gap, at = boundary_pitch(chain, fam, b.r, b.z, b.rho, np.tile(want[i], len(b.r) // len(i)))
-        gap = np.where(
-            _base_fits(chain, fam, b.q0) & ~np.tile(b.bad, len(b.r) // len(i)), gap, np.inf
-        )
-        k = np.argmin(b.per_target(gap), axis=0)
-        at = b.per_target(at)[k, np.arange(len(i))]
-        q[i], ok[i] = best(solve(chain, fam, P[i], at, seed[i], b), seed[i])
-        ok[i] &= np.isfinite(b.per_target(gap).min(axis=0))
+        at, found = limited_pitch(chain, fam, P[i], seed[i], want[i])
+        q[i], ok[i] = best(solve(chain, fam, P[i], at, seed[i]), seed[i])
+        ok[i] &= found
     return q, ok
+
+
+def limited_pitch(
+    chain: Chain, fam: PlanarFamily, P: F64, seed: F64, want: F64
+) -> tuple[F64, Bool]:
+    """Per target (N, 3) [m] the boundary pitch [rad] nearest ``want`` (N,) at which the arm
+    fits, over every base branch the base allows, and whether there is one (N,)."""
+    b = planes(fam, P, seed)
+    count = len(b.r) // len(P)
+    with np.errstate(invalid="ignore", divide="ignore"):  # NaN: no boundary point there
+        gap, at = boundary_pitch(chain, fam, b.r, b.z, b.rho, np.tile(want, count))
+    gap = b.per_target(np.where(_base_fits(chain, fam, b.q0) & ~np.tile(b.bad, count), gap, np.inf))
+    k = np.argmin(gap, axis=0)
+    cols = np.arange(len(P))
+    return b.per_target(at)[k, cols], np.isfinite(gap[k, cols])
 
 
 def preferred(chain: Chain, seed: F64) -> F64:
@@ -85,11 +80,8 @@ def preferred(chain: Chain, seed: F64) -> F64:
 def nearest_reachable(chain: Chain, fam: PlanarFamily, b: Planes, want: F64) -> tuple[F64, Bool]:
     """Per target the pitch [rad] nearest ``want`` at which the wrist point is within reach
     of the first two links (and the base inside its limits), and whether there is one.
-
-    With u the turn from the one at which the wrist point is nearest the shoulder, its
-    distance d follows d^2 = D^2 + L3^2 - 2 D L3 cos u: within reach where cos u lies in
-    [c_lo, c_hi], so the nearest u is a clamp of cos u (the sign of sin u kept).
-    """
+    With u the turn from where the wrist point is nearest the shoulder, d^2 = D^2 + L3^2 -
+    2 D L3 cos u: within reach for cos u in [c_lo, c_hi], so the nearest u is a clamp."""
     lo_d, hi_d = chain.wrist_reach
     (v3x, v3z), (c1x, c1z) = fam.links[2], fam.c1
     l3, ang3 = math.hypot(v3x, v3z), math.atan2(v3z, v3x)
@@ -111,7 +103,7 @@ def nearest_reachable(chain: Chain, fam: PlanarFamily, b: Planes, want: F64) -> 
         clamped == cu, wants, pitch_of_phi(ct * cp - st * sp, st * cp + ct * sp, b.r, b.rho)
     )
     gap = b.per_target(
-        np.where(empty | np.tile(b.bad, len(b.r) // len(want)), np.inf, _gap(pitch, wants, np))
+        np.where(empty | np.tile(b.bad, len(b.r) // len(want)), np.inf, _gap(pitch, wants))
     )
     i, cols = np.argmin(gap, axis=0), np.arange(len(want))
     found = np.isfinite(gap[i, cols])
@@ -119,47 +111,46 @@ def nearest_reachable(chain: Chain, fam: PlanarFamily, b: Planes, want: F64) -> 
 
 
 def boundary_pitch(
-    chain: Chain, fam: PlanarFamily, r: Lane, z: Lane, rho: Lane, want: Lane, xp: Any = np
+    chain: Chain, fam: PlanarFamily, r: Lane, z: Lane, rho: Lane, want: Lane
 ) -> tuple[Lane, Lane]:
     """Per lane - one base branch of a target: plane radius r (signed), height z and
     horizontal distance rho [m] - the boundary point that fits nearest ``want`` [rad]: how
-    far (a number that grows with the distance; inf where none fits) and its pitch [rad].
-    Lanes are floats (``xp = Floats``) or arrays (``xp = numpy``)."""
+    far (a number that grows with the distance; inf where none fits) and its pitch [rad]."""
     tx, tz = r - fam.c1[0], z - fam.c1[1]
     (v3x, v3z), l3 = fam.links[2], math.hypot(*fam.links[2])
     k = fam.phi0 - math.atan2(v3z, v3x)  # the approach's angle in the plane less link 3's
-    ranges, r_rho = _ranges(chain, fam), r / xp.where(rho < 1e-12, 1.0, rho)
+    ranges, r_rho = _ranges(chain, fam), r / np.where(rho < 1e-12, 1.0, rho)
     on_axis = (rho < 1e-12) | (abs(r) < 1e-12)
     if fam.lateral or np.any(on_axis):  # the pitch's own distance from want
         wx3 = wz3 = None
     else:  # pitch = +-(approach angle) + a constant: nearest where link 3 is nearest want's
-        c, s = xp.where(r > 0, 1.0, -1.0) * xp.cos(want), xp.sin(want)  # the approach at want
+        c, s = np.where(r > 0, 1.0, -1.0) * np.cos(want), np.sin(want)  # the approach at want
         wx3, wz3 = c * math.cos(k) + s * math.sin(k), s * math.cos(k) - c * math.sin(k)
     gap, bx, bz = math.inf + 0.0 * tx, 0.0 * tx, 0.0 * tx
-    for wx, wz, ex, ez in _boundaries(chain, fam, tx, tz, xp):
+    for wx, wz, ex, ez in _boundaries(chain, fam, tx, tz):
         l3x, l3z = tx - wx, tz - wz
         if wx3 is None:
-            d = _gap(_pitch(l3x, l3z, k, l3, on_axis, r_rho, xp), want, xp)
+            d = _gap(_pitch(l3x, l3z, k, l3, on_axis, r_rho), want)
         else:
             d = -(l3x * wx3 + l3z * wz3)
         better = _fits(ranges, (ex, ez), (wx - ex, wz - ez), (l3x, l3z)) & (d < gap)
-        gap, bx, bz = xp.where(better, d, gap), xp.where(better, l3x, bx), xp.where(better, l3z, bz)
-    return gap, _pitch(bx, bz, k, l3, on_axis, r_rho, xp)
+        gap, bx, bz = np.where(better, d, gap), np.where(better, l3x, bx), np.where(better, l3z, bz)
+    return gap, _pitch(bx, bz, k, l3, on_axis, r_rho)
 
 
-def _pitch(l3x: Lane, l3z: Lane, k: float, l3: float, on_axis: Lane, r_rho: Lane, xp: Any) -> Lane:
+def _pitch(l3x: Lane, l3z: Lane, k: float, l3: float, on_axis: Lane, r_rho: Lane) -> Lane:
     """The pitch [rad] at which link 3 is (l3x, l3z) [m] in the plane (see ``pitch_of_phi``)."""
     c, s = (
         (l3x * math.cos(k) - l3z * math.sin(k)) / l3,
         (l3x * math.sin(k) + l3z * math.cos(k)) / l3,
     )
-    return xp.arctan2(s, xp.where(on_axis, abs(c), c * r_rho))
+    return np.arctan2(s, np.where(on_axis, abs(c), c * r_rho))
 
 
-def _gap(pitch: Lane, want: Lane, xp: Any) -> Lane:
+def _gap(pitch: Lane, want: Lane) -> Lane:
     """|pitch - want| [rad] round the circle, for pitches and ``want`` in [-pi, pi]."""
     d = abs(pitch - want)
-    return xp.where(d > math.pi, TWO_PI - d, d)
+    return np.where(d > math.pi, TWO_PI - d, d)
 
 
 def _base_fits(chain: Chain, fam: PlanarFamily, q0: F64) -> Bool:
@@ -170,7 +161,10 @@ def _base_fits(chain: Chain, fam: PlanarFamily, q0: F64) -> Bool:
 
 
 def _boundaries(
-    chain: Chain, fam: PlanarFamily, tx: Lane, tz: Lane, xp: Any
+    chain: Chain,
+    fam: PlanarFamily,
+    tx: Lane,
+    tz: Lane,
 ) -> Iterator[tuple[Lane, Lane, Lane, Lane]]:
     """Where the fit can change along the wrist circle about T = (tx, tz) [m]: per boundary
     point the wrist point W and the elbow point E, x and z each [m] (NaN where none)."""
@@ -182,26 +176,31 @@ def _boundaries(
         x, y = l1 + l2 * math.cos(b), l2 * math.sin(b)  # elbow at a limit, straight or folded:
         d = math.hypot(x, y)  # W at distance d, E turned from W by a constant
         if d > 1e-12:
-            for wx, wz in _meet(0.0, 0.0, d, tx, tz, l3, xp):
+            for wx, wz in _meet(0.0, 0.0, d, tx, tz, l3):
                 yield wx, wz, (x * wx + y * wz) * (l1 / d / d), (x * wz - y * wx) * (l1 / d / d)
     for a in (chain.lower[j1], chain.upper[j1]):  # shoulder at a limit: E fixed
         ex, ez = (
             math.cos(s1 * a) * v1x - math.sin(s1 * a) * v1z,
             math.sin(s1 * a) * v1x + math.cos(s1 * a) * v1z,
         )
-        for wx, wz in _meet(ex, ez, l2, tx, tz, l3, xp):
+        for wx, wz in _meet(ex, ez, l2, tx, tz, l3):
             yield wx, wz, ex + 0.0 * wx, ez + 0.0 * wz
     for a in (chain.lower[j3], chain.upper[j3]):  # wrist at a limit: links 2 and 3 make one
         c, s = math.cos(s3 * a), math.sin(s3 * a)  # rigid link U; R U = T - E, R turns link 2
         ux, uz = v2x + c * v3x - s * v3z, v2z + s * v3x + c * v3z
         u2 = ux * ux + uz * uz
-        for ex, ez in _meet(0.0, 0.0, l1, tx, tz, math.sqrt(u2), xp):
+        for ex, ez in _meet(0.0, 0.0, l1, tx, tz, math.sqrt(u2)):
             rc, rs = (ux * (tx - ex) + uz * (tz - ez)) / u2, (ux * (tz - ez) - uz * (tx - ex)) / u2
             yield ex + rc * v2x - rs * v2z, ez + rs * v2x + rc * v2z, ex, ez
 
 
 def _meet(
-    ax: float, az: float, ra: float, bx: Lane, bz: Lane, rb: float, xp: Any
+    ax: float,
+    az: float,
+    ra: float,
+    bx: Lane,
+    bz: Lane,
+    rb: float,
 ) -> tuple[tuple[Lane, Lane], tuple[Lane, Lane]]:
     """Both points where the circle about (ax, az) of radius ra meets the circle about
     (bx, bz) of radius rb [m] (NaN where they do not)."""
@@ -209,7 +208,7 @@ def _meet(
     d2 = dx * dx + dz * dz + 1e-300
     along = (d2 + ra * ra - rb * rb) / (2.0 * d2)  # along the centre line, per its length
     h2 = ra * ra / d2 - along * along
-    h = xp.where(h2 >= -1e-12, xp.sqrt(abs(h2)), math.nan)
+    h = np.where(h2 >= -1e-12, np.sqrt(abs(h2)), math.nan)
     mx, mz = ax + along * dx, az + along * dz
     return (mx - h * dz, mz + h * dx), (mx + h * dz, mz - h * dx)
 

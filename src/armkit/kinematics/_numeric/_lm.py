@@ -6,12 +6,9 @@ and the step recomputed without them (an active-set projection), then the
 new q is clamped into the box. lam = mu |e|^2 (Sugihara's choice) with mu
 adapted Marquardt-style: accepted steps shrink it, rejected ones grow it.
 Every run starts by turning the first joint alone to its exact best angle
-(``_turn_first_joint``). A run that stops improving is restarted from a
-seeded random q inside the limits (alternately the best of a few samples and
-a plain one). Plain-float arithmetic on the chain's scalar fast path
-(``_scalar``): 60-75 microseconds per call on the 4-5 joint arms from their
-home pose, a Jacobian only where a step is taken. The batch form
-(``_lm_batch``) runs the same method with the same settings on arrays.
+(``_turn_first_joint``); a run that stops improving restarts from a seeded
+random q inside the limits. Plain floats on the chain's scalar fast path; the
+batch form (``_lm_batch``) runs the same method on arrays.
 """
 
 from __future__ import annotations

@@ -1,12 +1,8 @@
 """Levenberg-Marquardt for N targets at once: all iterate together in numpy.
 
-The same method as ``_lm`` (damped step with outward-pushing joints at a limit
-frozen, clamping, lam = mu |e|^2 with Marquardt's mu, seeded restarts inside
-the limits) on arrays of runs: one run per target to begin with, from its
-seed. A target is done when any of its runs converges, and its runs drop
-out; a stalled run restarts from a new point inside the limits. Once few
-targets remain, each gets several runs side by side: numpy's per-call cost
-does not grow with a few more rows, so parallel restarts are nearly free.
+The method of ``_lm`` on arrays of runs, one per target from its seed to begin
+with; a target is done when any of its runs converges. Once few targets
+remain, each gets several runs side by side (nearly free in numpy).
 """
 
 from __future__ import annotations
@@ -20,7 +16,7 @@ from .._chain import Chain
 from .._forward import sweep
 from ._lm import CANDIDATES, LMSettings
 from ._residual_batch import BatchResidual, BatchTask, residual_batch, task_cost
-from ._turn_batch import turn_first_joint
+from ._turn import turn_first_joint
 
 F64 = NDArray[np.float64]
 IDX = NDArray[np.intp]

@@ -1,8 +1,4 @@
-"""The task residual and masked Jacobian for N joint vectors at once (numpy).
-
-Same definitions as ``_residual`` (see there): position rows, then a weighted
-pitch row or three weighted rotation-vector rows.
-"""
+"""The task residual and masked Jacobian of ``_residual`` for N joint vectors at once."""
 
 from __future__ import annotations
 

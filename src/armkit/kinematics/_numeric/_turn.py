@@ -1,37 +1,76 @@
-"""The best turn of one joint alone: the step of CCD, and LM's warm start.
+"""The best turn of one joint alone: the step of CCD, and the LM solvers' warm start.
 
 For a joint with unit axis z, rotating by t moves a vector u to R(t) u, and
 sum_k w_k |R(t) u_k - v_k|^2 is smallest at t = atan2(sum w_k z.(u_k x v_k),
 sum w_k u_k.v_k) with u, v projected onto the plane normal to z. The pairs
 are (tool point, target point) about the joint, plus the tool's approach axis
 and the target approach (pitch), or all three tool axes (pose), weighted by
-w^2 [m^2/rad^2]. Exact for any angle: no linearisation.
+w^2 [m^2/rad^2]. Exact for any angle: no linearisation. ``turn_angle`` is
+written once over lanes: vectors are 3-tuples of floats (one target,
+``best_turn``) or of arrays of shape (k,) (k targets, ``turn_first_joint``).
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from typing import Any
 
+import numpy as np
+from numpy.typing import NDArray
+
+from .._chain import Chain
+from .._forward import sweep
 from .._scalar import ChainState, Vec3
 from ._residual import Task
+from ._residual_batch import BatchTask, task_cost
+
+F64 = NDArray[np.float64]
+V = tuple[Any, Any, Any]  # a vector: three floats, or three arrays (k,) of one component each
 
 
 def best_turn(task: Task, st: ChainState, i: int) -> float:
     """The turn of joint i [rad] that best aligns the tool with the task."""
-    z, o, p = st.jw[i], st.origins[i], st.p
-    u = _reject((p[0] - o[0], p[1] - o[1], p[2] - o[2]), z)  # tool point about the axis
-    d = (task.p[0] - p[0], task.p[1] - p[1], task.p[2] - p[2])
-    v = _add(u, _reject(d, z))
+    pairs = _axis_pairs(task, st)
+    return float(turn_angle(st.jw[i], st.origins[i], st.p, task.p, task.weight, pairs, math.atan2))
+
+
+def turn_first_joint(chain: Chain, task: BatchTask, q: F64) -> F64:
+    """q (k, dof) [rad] with joint 0 turned to its best angle where that helps (as
+    ``_lm._turn_first_joint``: where the best angle is outside the limits, the joint faces
+    the opposite way instead, if that is inside them)."""
+    T = sweep(chain, q).T
+    st = chain.state(list(chain.home))  # joint 0's axis never moves
+    p, goal = _lanes(T[:, :3, 3]), _lanes(task.P)
+    pairs = _batch_axis_pairs(task, T)
+    lo, hi = chain.lower[0], chain.upper[0]
+    turned = q.copy()
+    turned[:, 0] += turn_angle(st.jw[0], st.origins[0], p, goal, task.weight, pairs, np.arctan2)
+    flip = (turned[:, 0] < lo) | (turned[:, 0] > hi)
+    turned[flip, 0] += np.where(turned[flip, 0] > hi, -np.pi, np.pi)
+    inside = (turned[:, 0] >= lo) & (turned[:, 0] <= hi)
+    better = task_cost(task, sweep(chain, turned).T) < task_cost(task, T)
+    return np.where((inside & (flip | better))[:, None], turned, q)
+
+
+def turn_angle(
+    z: Vec3, o: Vec3, p: V, goal: V, weight: float, pairs: list[tuple[V, V]],
+    atan2: Callable[[Any, Any], Any],
+) -> Any:  # fmt: skip
+    """The best turn [rad] about the axis z through o of tool point p towards ``goal`` [m],
+    with the (tool axis, target axis) ``pairs`` weighted by weight^2 [m^2/rad^2]."""
+    u = _reject(_sub(p, o), z)  # tool point about the axis
+    v = _add(u, _reject(_sub(goal, p), z))
     num, den = _dot(z, _cross(u, v)), _dot(u, v)
-    w2 = task.weight * task.weight
-    for a, b in _axis_pairs(task, st):
+    w2 = weight * weight
+    for a, b in pairs:
         a, b = _reject(a, z), _reject(b, z)
-        num += w2 * _dot(z, _cross(a, b))
-        den += w2 * _dot(a, b)
-    return math.atan2(num, den)
+        num = num + w2 * _dot(z, _cross(a, b))
+        den = den + w2 * _dot(a, b)
+    return atan2(num, den)
 
 
-def _axis_pairs(task: Task, st: ChainState) -> list[tuple[Vec3, Vec3]]:
+def _axis_pairs(task: Task, st: ChainState) -> list[tuple[V, V]]:
     """(tool axis, target axis) pairs for the angular part of the task."""
     if task.R is not None:
         R = task.R
@@ -46,19 +85,43 @@ def _axis_pairs(task: Task, st: ChainState) -> list[tuple[Vec3, Vec3]]:
     return [(st.R[0], (c * px / rho, c * py / rho, s))]
 
 
-def _dot(a: Vec3, b: Vec3) -> float:
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+def _batch_axis_pairs(task: BatchTask, T: F64) -> list[tuple[V, V]]:
+    """``_axis_pairs`` for k targets and tool poses T (k, 4, 4), as lanes."""
+    if task.R is not None:
+        return [(_lanes(T[:, :3, k]), _lanes(task.R[:, :, k])) for k in range(3)]
+    if task.pitch is None:
+        return []
+    a = T[:, :3, 0]
+    horizontal = task.P[:, :2].copy()
+    on_axis = np.hypot(horizontal[:, 0], horizontal[:, 1]) < 1e-9
+    horizontal[on_axis] = a[on_axis, :2]
+    rho = np.maximum(np.hypot(horizontal[:, 0], horizontal[:, 1]), 1e-12)
+    c, s = np.cos(task.pitch), np.sin(task.pitch)
+    return [(_lanes(a), (c * horizontal[:, 0] / rho, c * horizontal[:, 1] / rho, s))]
 
 
-def _cross(a: Vec3, b: Vec3) -> Vec3:
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+def _lanes(M: F64) -> V:
+    """Rows of M (k, 3) as a vector of three arrays (k,)."""
+    return M[:, 0], M[:, 1], M[:, 2]
 
 
-def _add(a: Vec3, b: Vec3) -> Vec3:
+def _sub(a: V, b: V) -> V:
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def _add(a: V, b: V) -> V:
     return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
 
 
-def _reject(a: Vec3, z: Vec3) -> Vec3:
+def _dot(a: V, b: V) -> Any:
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def _cross(a: V, b: V) -> V:
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def _reject(a: V, z: Vec3) -> V:
     """a minus its component along the unit vector z."""
     k = _dot(a, z)
     return (a[0] - k * z[0], a[1] - k * z[1], a[2] - k * z[2])
