@@ -19,8 +19,8 @@ def test_example_checks(path: Path) -> None:
     assert result.ok, "\n".join(d.format(result.program.source) for d in result.diagnostics)
 
 
-@pytest.mark.parametrize("path", [p for p in SCRIPTS if p.name[0] == "0"], ids=lambda p: p.name)
-def test_motion_example_runs_on_the_simulator(
+@pytest.mark.parametrize("path", SCRIPTS, ids=lambda p: p.name)
+def test_every_example_runs_on_the_simulator(
     path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     assert main(["run", str(path)]) == 0

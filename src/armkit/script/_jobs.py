@@ -7,7 +7,8 @@ checked) and ``call``, ``"module:function"``, imported only when the job runs.
 The function is called as ``function(arm, scene, **arguments)`` with
 
 - ``where`` arguments: a scene object's or place's name (str), or a gripper
-  point [m], shape (3,) (a pose or ``xyz`` target; joint poses through FK);
+  point (x, y, z) [mm], as the tasks take it (a pose or ``xyz`` target; joint
+  poses through FK);
 - ``object``: a scene name (str); ``objects``: a tuple of them;
 - ``file``: a ``pathlib.Path`` (relative paths are relative to the script);
 - ``choice``: the word; ``angle`` [rad]; ``length`` [m]; ``percent`` as a

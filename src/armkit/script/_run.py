@@ -16,6 +16,7 @@ from .._errors import DeviceError, ScriptError
 from ..arm import Arm
 from ..kinematics import fk
 from ..motion import TimedStreaming, line
+from ..scene import Scene
 from ._ast import Loc, Source, Statement
 from ._backend import Frame
 from ._check import CheckResult, check_source, looped
@@ -91,8 +92,15 @@ class ArmBackend:
 
     def job(self, command: str, args: dict[str, object]) -> None:
         func = job_function(command)
-        scene = None if self.scene is None else self.scene.scene
-        func(self.arm, scene, **args)
+        func(self.arm, self._scene(), **{k: _in_mm(v) for k, v in args.items()})
+
+    def _scene(self) -> Scene:
+        """The script's scene; a script that names none works on the empty table."""
+        if self.scene is not None and isinstance(self.scene.scene, Scene):
+            return self.scene.scene
+        from ..scene import load_scene
+
+        return load_scene("empty")
 
     def snapshot(self) -> Hashable | None:
         return None
@@ -190,3 +198,10 @@ def run_checked(
     except BaseException:
         arm.stop()
         raise
+
+
+def _in_mm(value: object) -> object:
+    """A ``where`` point [m], shape (3,), as the tasks take it: (x, y, z) [mm]."""
+    if isinstance(value, np.ndarray) and value.shape == (3,):
+        return tuple(float(v) * 1000.0 for v in value)
+    return value
