@@ -231,6 +231,14 @@ class Maestro:
                 )
             self.clock.sleep(poll_s)
 
+    def pulses_off(self, channels: Iterable[int]) -> None:
+        """Stop sending pulses on ``channels`` (Set Target 0, Maestro User's Guide,
+        "Command Reference": a target of 0 tells the Maestro to stop sending pulses):
+        the servos stop holding. Get Position then reads 0."""
+        data = b"".join(bytes([SET_TARGET, ch, 0, 0]) for ch in channels)
+        if data:
+            self._link.write(data)
+
     def stop(self, channels: Iterable[int], at: Mapping[int, float] | None = None) -> None:
         """Hold each servo in ``channels`` where it is now (target := position): at the
         pulse ``at`` gives for it [µs] (the host's own estimate: no reply needed; a

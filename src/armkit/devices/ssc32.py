@@ -216,6 +216,17 @@ class SSC32:
         )
         return reply[0] * 5.0 / 255.0
 
+    def pulses_off(self, channels: Iterable[int]) -> None:
+        """Stop sending pulses on ``channels`` (``#<ch>P0`` each, one line; SSC-32U user
+        guide, "Servo Move or Group Move": a pulse width of 0 turns the output off): the
+        servos stop holding. QP then reads 0."""
+        channels = list(channels)
+        for ch in channels:
+            check_channel(ch)
+        clauses = "".join(f"#{ch}P0" for ch in channels)
+        if clauses:
+            self._link.write(clauses.encode("ascii") + CR)
+
     def stop(self, channels: Iterable[int]) -> None:
         """Stop each servo in ``channels`` where it is now."""
         for ch in channels:

@@ -242,6 +242,16 @@ class ServoArmDriver:
             raise DeviceError(f"{self.model.name} has no gripper channel on the {self.bus.name}")
         self._send({self.grip_table.channel: self.grip_table.to_pulse(width)}, 0, True)
 
+    def relax(self) -> None:
+        """Pulses off on every channel of the arm: the servos stop holding (002's end,
+        where the uM-PWM1 disables every channel). Support the arm first. Until the next
+        move, ``stop`` leaves them off and ``read`` reports home angles (no pulse)."""
+        self._alive()
+        self.bus.off(self._channels())
+        self._commanded.clear()
+        self._last.clear()
+        self._busy_until = self.clock.now()
+
     def stop(self) -> None:
         """Hold every servo where it is now, by what was sent (no reply needed). Safe to
         call at any time, repeatedly."""

@@ -46,6 +46,10 @@ class ServoBus(Protocol):
         """After a move has ended: DeviceError if a channel is not sending its pulse [µs]."""
         ...
 
+    def off(self, channels: list[int]) -> None:
+        """Stop sending pulses on ``channels``: the servos stop holding."""
+        ...
+
     def close(self) -> None:
         """Release the port."""
         ...
@@ -75,6 +79,9 @@ class SSC32Bus:
 
     def check_reached(self, pulses: Mapping[int, float]) -> None:
         """Nothing to check: the SSC-32 sends every pulse of 500..2500 µs it is given."""
+
+    def off(self, channels: list[int]) -> None:
+        self.device.pulses_off(channels)
 
     def close(self) -> None:
         self.device.close()
@@ -114,6 +121,9 @@ class MaestroBus:
                     f"992..2000 µs); widen channel {ch}'s Min/Max in the Maestro Control "
                     "Center (Channel Settings) to cover the servo's table, then Apply Settings"
                 )
+
+    def off(self, channels: list[int]) -> None:
+        self.device.pulses_off(channels)
 
     def close(self) -> None:
         self.device.close()
