@@ -114,8 +114,8 @@ def test_a_job_runs_through_its_table_entry(
     monkeypatch.setattr(armkit.tasks, "pick", pick, raising=False)
     _run(a, "pose spot = xyz 150 0 30 pitch -90\npick spot\nturn waist by 10\n")
     ((who, scene, kwargs),) = calls
-    assert who is a and scene is None
-    assert kwargs["item"] == pytest.approx([0.150, 0.0, 0.030])
+    assert who is a and scene.name == "empty"  # a script without a scene: the empty table
+    assert kwargs["item"] == pytest.approx([150.0, 0.0, 30.0])  # tasks take points in mm
     assert a.angles()["waist"] == pytest.approx(10, abs=0.1)
 
 

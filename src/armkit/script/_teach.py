@@ -165,7 +165,9 @@ def torque(arm: Arm, on: bool) -> None:
     ``read()`` still gives its true angles. ArmkitError, nothing sent, where it cannot."""
     driver = arm.driver
     method = getattr(driver, "stiffen" if on else "relax", None)
-    if callable(method) and callable(getattr(driver, "relax", None)):
+    # ``stiffen`` (torque on where the servo is) exists only where positions can be read
+    # while limp; hobby servos can ``relax`` (no pulses) but never report where they are
+    if callable(method) and callable(getattr(driver, "stiffen", None)):
         method()
         return
     raise ArmkitError(f"limp: {arm.model.name}: {_why_no_limp(arm)}; teach it with jog instead")
