@@ -10,12 +10,13 @@ import usb.core
 import armkit.devices.owi535 as owi_usb
 from armkit._errors import DeviceError
 from armkit.devices.owi535 import open_device
+from armkit.sim.owi535 import SimOwiUsb
 from armkit.sim.owi_usb import OwiUsbBackend
 
 
 @pytest.mark.parametrize("product", [0, 1])
 def test_found_by_vendor_and_product_0_or_1(product: int) -> None:
-    backend = OwiUsbBackend(product_id=product)
+    backend = OwiUsbBackend(SimOwiUsb(product_id=product))
     dev = open_device(backend)
     dev.send(b"\x80\x00\x00")
     assert backend.configuration == 1
@@ -24,17 +25,17 @@ def test_found_by_vendor_and_product_0_or_1(product: int) -> None:
 
 def test_other_product_is_not_the_arm() -> None:
     with pytest.raises(DeviceError, match="no OWI-535 USB interface found"):
-        open_device(OwiUsbBackend(product_id=5))
+        open_device(OwiUsbBackend(SimOwiUsb(product_id=5)))
 
 
 def test_not_plugged_in() -> None:
     with pytest.raises(DeviceError, match="plug it in"):
-        open_device(OwiUsbBackend(present=False))
+        open_device(OwiUsbBackend(SimOwiUsb(present=False)))
 
 
 def test_permission_denied_gives_the_udev_rule() -> None:
     with pytest.raises(DeviceError) as info:
-        open_device(OwiUsbBackend(deny_access=True))
+        open_device(OwiUsbBackend(SimOwiUsb(deny_access=True)))
     message = str(info.value)
     assert 'ATTR{idVendor}=="1267"' in message and "/etc/udev/rules.d" in message
 
@@ -67,7 +68,7 @@ def test_default_backend_comes_from_libusb_package(monkeypatch: pytest.MonkeyPat
 
 
 def test_unplugged_mid_session_is_a_device_error() -> None:
-    dev = open_device(OwiUsbBackend(fail_after=1))
+    dev = open_device(OwiUsbBackend(SimOwiUsb(fail_after=1)))
     dev.send(b"\x00\x00\x00")
     with pytest.raises(DeviceError, match="check the USB cable"):
         dev.send(b"\x40\x00\x00")

@@ -7,7 +7,6 @@ unchanged on top of it. Imported only where pyusb is installed.
 from __future__ import annotations
 
 import errno
-from pathlib import Path
 from types import SimpleNamespace
 from typing import Any
 
@@ -16,34 +15,16 @@ import usb.core
 
 from ..devices.owi535 import VENDOR_ID
 from .owi535 import SimOwiUsb, Transfer, UsbFault
-from .owi_physics import OwiPhysics
 
 __all__ = ["OwiUsbBackend", "Transfer"]
 
 
 class OwiUsbBackend(usb.backend.IBackend):  # type: ignore[misc]
-    """A simulated board (``board``, or one made from the other arguments, see
-    ``SimOwiUsb``) behind a pyusb backend: one device on bus 1."""
+    """A simulated board (``board``, default a plain ``SimOwiUsb()``: no physics, just
+    the transfers logged) behind a pyusb backend: one device on bus 1."""
 
-    def __init__(
-        self,
-        physics: OwiPhysics | None = None,
-        *,
-        product_id: int = 0,
-        present: bool = True,
-        deny_access: bool = False,
-        fail_after: int | None = None,
-        log_path: Path | None = None,
-        board: SimOwiUsb | None = None,
-    ) -> None:
-        self.board = board or SimOwiUsb(
-            physics,
-            product_id=product_id,
-            present=present,
-            deny_access=deny_access,
-            fail_after=fail_after,
-            log_path=log_path,
-        )
+    def __init__(self, board: SimOwiUsb | None = None) -> None:
+        self.board = board or SimOwiUsb()
         self.configuration = 0
 
     @property
