@@ -27,7 +27,6 @@ from ._closed_fast import (
     Ways,
     fixed_solver,
     free_solver,
-    nearest_solver,
 )
 from ._family import PlanarFamily, detect, wrist_range
 from ._pose import pitch_scalar
@@ -177,8 +176,8 @@ def _solvers(
     ``at_home``: home [rad], the pitch there [rad] and the chain's scalar state."""
     if fam is None:
         return None, None, None
-    solve, ways = fixed_solver(fam, lower, upper)
+    solve, ways, elbows = fixed_solver(fam, lower, upper)
     if len(fam.planar) != 3:
         return solve, ways, None
-    nearest = None if fam.base is None else nearest_solver(fam, wrist, (lower[0], upper[0]))
-    return solve, ways, free_solver(solve, nearest, *at_home)
+    base = (0.0, 0.0) if fam.base is None else (lower[fam.base], upper[fam.base])
+    return solve, ways, free_solver(fam, (solve, elbows), wrist, base, at_home)

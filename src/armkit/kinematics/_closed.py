@@ -22,6 +22,7 @@ F64 = NDArray[np.float64]
 Bool = NDArray[np.bool_]
 TWO_PI = 2.0 * np.pi
 SLACK = 1e-9  # [rad] a joint this far beyond a limit counts as at it
+STRAIGHT = 1.0 - 1e-12  # cos of the elbow beyond it: straight or folded (1e-13 m)
 
 
 @dataclass(frozen=True)
@@ -172,7 +173,7 @@ def _branches(
         wx, wz = wx - (c * v3x - s * v3z), wz - (s * v3x + c * v3z)
     l1, l2 = fam.l1, fam.l2
     cos_g = (wx * wx + wz * wz - l1 * l1 - l2 * l2) / (2.0 * l1 * l2)
-    cg = np.clip(cos_g, -1.0, 1.0)
+    cg = np.where(np.abs(cos_g) > STRAIGHT, np.sign(cos_g), cos_g)  # as ``_closed_fast``
     g = np.arccos(cg)
     t = np.arctan2(l2 * np.sqrt(1.0 - cg * cg), l1 + l2 * cg)
     aim = np.arctan2(wz, wx) - fam.ang1

@@ -20,6 +20,9 @@ Q = tuple[float, ...]
 Found = list[tuple[float, Q]]  # (squared joint distance to the seed, solution)
 _TWO_PI = 2.0 * math.pi
 _SLACK = 1e-9
+_STRAIGHT = 1.0 - 1e-12  # cos of the elbow nearer 1 than this: straight (or folded); the
+# tool point moves by 1e-13 m, and one elbow is found where rounding would make two
+_NEAR = 1e-8  # cos u this far outside the wrist's reach may still fit within _SLACK
 
 
 @dataclass
@@ -32,8 +35,11 @@ class Misses:
 
 FixedSolver = Callable[[float, float, float, "float | None", Q, "Misses | None"], Found]
 Ways = Callable[[float, float, float, Q], "tuple[tuple[float, float], ...] | Reason"]
-NearestPitch = Callable[[float, float, float, float, float], "float | None"]
+Elbows = Callable[
+    [float, float, float, float, float, "float | None", float, Q, Found, "Misses | None"], None
+]
 FreeSolver = Callable[[float, float, float, Q], "Found | None"]
+Way = tuple[float, float, float, float, float, float, float]  # way, q0, tx, a, d, cos, sin
 
 
 def miss(v: float, lo: float, hi: float, j: int, misses: Misses) -> None:
@@ -52,10 +58,11 @@ def pitch_for_phi(phi: float, r: float, rho: float) -> float:
     return math.atan2(math.sin(phi), c * r / rho)
 
 
-def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Ways]:
+def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Ways, Elbows]:
     """solve(x, y, z, pitch, seed, misses): every solution at ``pitch`` [rad] (None: 2
     planar joints, the pitch follows) for the tool point (x, y, z) [m], unsorted; and
-    ways(x, y, z, seed): the base branches (plane radius r [m], base angle [rad]), or why none."""
+    ways(x, y, z, seed): the base branches (plane radius r [m], base angle [rad]), or why none;
+    and elbows(...): both elbows of one base branch from its wrist point, as ``solve`` uses."""
     base, three, dof = fam.base, len(fam.planar) == 3, len(lower)
     (j1, j2, j3), (s1, s2, s3) = (*fam.planar, 0)[:3], (*fam.sigma, 0.0)[:3]
     lo1, hi1, lo2, hi2, lo3, hi3 = lower[j1], upper[j1], lower[j2], upper[j2], lower[j3], upper[j3]
@@ -89,6 +96,88 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
             facing, back = bs * heading, bs * (heading + pi)
         return ((r, facing), (-r, back)) if r > 1e-12 else ((r, facing),)
 
+    def elbows(
+        r: float,
+        q0: float,
+        wx: float,
+        wz: float,
+        turn: float,
+        pitch: float | None,
+        rho: float,
+        seed: Q,
+        found: Found,
+        misses: Misses | None,
+    ) -> None:
+        """Add to ``found`` both elbows of one base branch: plane radius r (signed) and
+        distance rho [m], base angle q0 [rad], the wrist point (wx, wz) from the first
+        planar joint [m], the plane turn [rad] (3 planar joints) or the ``pitch`` [rad]
+        that 2 planar joints must give; each joint moved by whole turns into its limits."""
+        given = not three and pitch is not None  # 2 planar joints: check the pitch they give
+        if base is not None and not lo0 <= q0 <= hi0:  # by whole turns into the limits
+            w = q0 - tp * floor((q0 - lo0 + _SLACK) / tp)
+            if w > hi0 + _SLACK:
+                if misses is not None:
+                    miss(q0, lo0, hi0, base, misses)
+                return
+            q0 = lo0 if w < lo0 else (hi0 if w > hi0 else w)
+        cg = (wx * wx + wz * wz - k0) / k1
+        if not -1.0 - 1e-12 <= cg <= 1.0 + 1e-12:
+            if misses is not None:
+                misses.reasons.append("too_far" if cg > 0 else "too_close")
+            return
+        cg = 1.0 if cg > _STRAIGHT else (-1.0 if cg < -_STRAIGHT else cg)  # see _STRAIGHT
+        g = acos(cg)
+        t = atan2(l2 * sqrt(1.0 - cg * cg), l1 + l2 * cg)
+        aim = atan2(wz, wx) - ang1
+        for gg, tt in ((g, t), (-g, -t)) if g > 1e-12 else ((g, t),):
+            a1, a2 = aim - tt, gg - bend
+            if given:
+                got = pitch_for_phi(phi0 + a1 + a2, r, rho)
+                if abs(rem(got - pitch, tp)) > 1e-7:  # type: ignore[operator]
+                    if misses is not None:
+                        misses.reasons.append("pitch")
+                    continue
+            v1, v2 = s1 * a1, s2 * a2
+            if not lo1 <= v1 <= hi1:  # as the base: inline, a call costs more than this
+                w = v1 - tp * floor((v1 - lo1 + _SLACK) / tp)
+                if w > hi1 + _SLACK:
+                    if misses is not None:
+                        miss(v1, lo1, hi1, j1, misses)
+                    continue
+                v1 = lo1 if w < lo1 else (hi1 if w > hi1 else w)
+            if not lo2 <= v2 <= hi2:
+                w = v2 - tp * floor((v2 - lo2 + _SLACK) / tp)
+                if w > hi2 + _SLACK:
+                    if misses is not None:
+                        miss(v2, lo2, hi2, j2, misses)
+                    continue
+                v2 = lo2 if w < lo2 else (hi2 if w > hi2 else w)
+            if three:
+                v3 = s3 * (turn - a1 - a2)
+                if not lo3 <= v3 <= hi3:
+                    w = v3 - tp * floor((v3 - lo3 + _SLACK) / tp)
+                    if w > hi3 + _SLACK:
+                        if misses is not None:
+                            miss(v3, lo3, hi3, j3, misses)
+                        continue
+                    v3 = lo3 if w < lo3 else (hi3 if w > hi3 else w)
+                if yaw3:
+                    d0, d1, d2, d3 = q0 - seed[0], v1 - seed[1], v2 - seed[2], v3 - seed[3]
+                    sol = (q0, v1, v2, v3, *seed[4:]) if dof > 4 else (q0, v1, v2, v3)
+                    found.append((d0 * d0 + d1 * d1 + d2 * d2 + d3 * d3, sol))
+                    continue
+            elif pair:
+                d1, d2 = v1 - seed[0], v2 - seed[1]
+                found.append((d1 * d1 + d2 * d2, (v1, v2)))
+                continue
+            q = list(seed)
+            q[j1], q[j2] = v1, v2
+            if three:
+                q[j3] = v3
+            if base is not None:
+                q[base] = q0
+            found.append((sum((a - b) * (a - b) for a, b in zip(q, seed, strict=True)), tuple(q)))
+
     def solve(
         x: float, y: float, z: float, pitch: float | None, seed: Q, misses: Misses | None
     ) -> Found:
@@ -111,15 +200,7 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
             return found
         pv = pitch if three and pitch is not None else 0.0
         sp, cp = sin(pv), cos(pv)
-        given = not three and pitch is not None  # 2 planar joints: check the pitch they give
         for r, q0 in branches:
-            if base is not None and not lo0 <= q0 <= hi0:  # by whole turns into the limits
-                w = q0 - tp * floor((q0 - lo0 + _SLACK) / tp)
-                if w > hi0 + _SLACK:
-                    if misses is not None:
-                        miss(q0, lo0, hi0, base, misses)
-                    continue
-                q0 = lo0 if w < lo0 else (hi0 if w > hi0 else w)
             wx, wz, turn = r - c1x, z - c1z, 0.0
             if three:  # the wrist point, from the plane turn that gives the pitch
                 if plain or not (lat or rho < 1e-12 or -1e-12 < r < 1e-12):
@@ -134,158 +215,111 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
                     turn = atan2(sa, ca) - phi0
                 c, s = ca * c0 + sa * s0, sa * c0 - ca * s0
                 wx, wz = wx - (c * v3x - s * v3z), wz - (s * v3x + c * v3z)
-            cg = (wx * wx + wz * wz - k0) / k1
-            if not -1.0 - 1e-12 <= cg <= 1.0 + 1e-12:
-                if misses is not None:
-                    misses.reasons.append("too_far" if cg > 0 else "too_close")
-                continue
-            cg = 1.0 if cg > 1.0 else (-1.0 if cg < -1.0 else cg)
-            g = acos(cg)
-            t = atan2(l2 * sqrt(1.0 - cg * cg), l1 + l2 * cg)
-            aim = atan2(wz, wx) - ang1
-            for gg, tt in ((g, t), (-g, -t)) if g > 1e-12 else ((g, t),):
-                a1, a2 = aim - tt, gg - bend
-                if given:
-                    got = pitch_for_phi(phi0 + a1 + a2, r, rho)
-                    if abs(rem(got - pitch, tp)) > 1e-7:  # type: ignore[operator]
-                        if misses is not None:
-                            misses.reasons.append("pitch")
-                        continue
-                v1, v2 = s1 * a1, s2 * a2
-                if not lo1 <= v1 <= hi1:  # as the base: inline, a call costs more than this
-                    w = v1 - tp * floor((v1 - lo1 + _SLACK) / tp)
-                    if w > hi1 + _SLACK:
-                        if misses is not None:
-                            miss(v1, lo1, hi1, j1, misses)
-                        continue
-                    v1 = lo1 if w < lo1 else (hi1 if w > hi1 else w)
-                if not lo2 <= v2 <= hi2:
-                    w = v2 - tp * floor((v2 - lo2 + _SLACK) / tp)
-                    if w > hi2 + _SLACK:
-                        if misses is not None:
-                            miss(v2, lo2, hi2, j2, misses)
-                        continue
-                    v2 = lo2 if w < lo2 else (hi2 if w > hi2 else w)
-                if three:
-                    v3 = s3 * (turn - a1 - a2)
-                    if not lo3 <= v3 <= hi3:
-                        w = v3 - tp * floor((v3 - lo3 + _SLACK) / tp)
-                        if w > hi3 + _SLACK:
-                            if misses is not None:
-                                miss(v3, lo3, hi3, j3, misses)
-                            continue
-                        v3 = lo3 if w < lo3 else (hi3 if w > hi3 else w)
-                    if yaw3:
-                        d0, d1, d2, d3 = q0 - seed[0], v1 - seed[1], v2 - seed[2], v3 - seed[3]
-                        sol = (q0, v1, v2, v3, *seed[4:]) if dof > 4 else (q0, v1, v2, v3)
-                        found.append((d0 * d0 + d1 * d1 + d2 * d2 + d3 * d3, sol))
-                        continue
-                elif pair:
-                    d1, d2 = v1 - seed[0], v2 - seed[1]
-                    found.append((d1 * d1 + d2 * d2, (v1, v2)))
-                    continue
-                q = list(seed)
-                q[j1], q[j2] = v1, v2
-                if three:
-                    q[j3] = v3
-                if base is not None:
-                    q[base] = q0
-                found.append(
-                    (sum((a - b) * (a - b) for a, b in zip(q, seed, strict=True)), tuple(q))
-                )
+            elbows(r, q0, wx, wz, turn, pitch, rho, seed, found, misses)
         return found
 
-    return solve, ways
-
-
-def nearest_solver(
-    fam: PlanarFamily, reach: tuple[float, float], base_range: tuple[float, float]
-) -> NearestPitch | None:
-    """nearest(x, y, z, want, seed0): ``_pitch_range.nearest_reachable`` for one target
-    (pitch [rad], or None: out of reach), wrist ``reach`` = (d_min, d_max) [m]; for a base yaw
-    + 3 planar joints with no lateral offset (else None: use the general path)."""
-    if fam.base is None or len(fam.planar) != 3 or fam.lateral != 0.0:
-        return None
-    (c1x, c1z), (v3x, v3z) = fam.c1, fam.links[2]
-    l3, ang3, phi0, az, bs = (
-        math.hypot(v3x, v3z),
-        math.atan2(v3z, v3x),
-        fam.phi0,
-        fam.azimuth_r,
-        fam.base_sign,
-    )
-    lo2, hi2 = reach[0] ** 2, reach[1] ** 2
-    lo0, hi0 = base_range
-    pi, tp, atan2, acos, rem, inf = (
-        math.pi,
-        _TWO_PI,
-        math.atan2,
-        math.acos,
-        math.remainder,
-        math.inf,
-    )
-    sqrt, cos, sin, mid, l3sq = math.sqrt, math.cos, math.sin, 0.5 * (lo0 + hi0), l3 * l3
-    full = hi0 - lo0 >= tp - 1e-9  # the base turns all the way: both branches always face
-    c_k, s_k = math.cos(phi0 - ang3), math.sin(phi0 - ang3)
-
-    def faces(x: float, y: float, sign: float) -> bool:
-        """The base can face the target (sign +1) or turn its back to it (-1)."""
-        q0 = bs * (atan2(y, x) - az + (0.0 if sign > 0.0 else pi))
-        return lo0 - 1e-9 <= rem(q0 - mid, tp) + mid <= hi0 + 1e-9
-
-    def nearest(x: float, y: float, z: float, want: float, seed0: float) -> float | None:
-        r = sqrt(x * x + y * y)
-        if r < 1e-9:
-            return want  # on the base axis: the solvers decide
-        cw, sw = cos(want), sin(want)
-        tz = z - c1z
-        best, sign, tx, u = inf, 0.0, 0.0, 0.0  # the nearest turn within reach: a clamp
-        # per way: cos and sin of want's turn less the wrist link's angle, facing (+) and back (-)
-        for way, ca, sa in ((1.0, cw * c_k + sw * s_k, sw * c_k - cw * s_k),
-                             (-1.0, sw * s_k - cw * c_k, sw * c_k + cw * s_k)):  # fmt: skip
-            if not full and not faces(x, y, way):
-                continue
-            wx = way * r - c1x
-            big2 = wx * wx + tz * tz
-            big = sqrt(big2)
-            k = 2.0 * big * l3
-            if k < 1e-15:
-                if lo2 - 1e-12 <= big2 + l3sq <= hi2 + 1e-12:
-                    return want
-                continue
-            c_lo, c_hi = (big2 + l3sq - hi2) / k, (big2 + l3sq - lo2) / k
-            if c_lo > 1.0 + 1e-12 or c_hi < -1.0 - 1e-12:
-                continue
-            c = (ca * wx + sa * tz) / big  # cos u at want (u: the turn from W's nearest)
-            if c_lo <= c <= c_hi:  # the wrist within reach at want
-                return want
-            wu = acos(min(1.0, c_hi)) if c > c_hi else acos(max(-1.0, c_lo))  # |u| clamped
-            gap = abs(wu - acos(max(-1.0, min(1.0, c))))
-            if gap < best:
-                best, sign, tx, u = gap, way, wx, (wu if sa * wx - ca * tz >= 0.0 else -wu)
-        if best == inf:
-            return None
-        turn = u + atan2(tz, tx) - ang3 + phi0
-        return rem(turn if sign > 0 else pi - turn, tp)
-
-    return nearest
+    return solve, ways, elbows
 
 
 def free_solver(
-    solve: FixedSolver, nearest: NearestPitch | None, home: Q, home_pitch: float, state: State
-) -> FreeSolver:
-    """free(x, y, z, seed): position only (3 planar joints), every solution at the pitch
-    nearest the seed's at which the wrist point is within reach (``nearest``; without it
-    the seed's), unsorted: [] where a joint limit refuses that pitch, None where none is
-    within reach."""
+    fam: PlanarFamily, solvers: tuple[FixedSolver, Elbows], reach: tuple[float, float],
+    base_range: tuple[float, float], at_home: tuple[Q, float, State],
+) -> FreeSolver:  # fmt: skip
+    """free(x, y, z, seed): position only (base yaw + 3 planar joints), every solution at the
+    pitch nearest the seed's at which the wrist point is within the wrist ``reach`` =
+    (d_min, d_max) [m] of the first planar joint, unsorted: [] where a joint limit refuses
+    that pitch, None where no pitch is within reach. With u the turn of link 3 from the
+    line shoulder-target, d^2 = D^2 + L3^2 - 2 D L3 cos u: within reach for cos u in
+    [c_lo, c_hi], so the nearest pitch is a clamp (``_pitch_range.nearest_reachable``
+    for one target); the wrist point then follows from u without the pitch's sine."""
+    (solve, elbows), (home, home_pitch, _) = solvers, at_home
+    if fam.base is None or len(fam.planar) != 3 or fam.lateral != 0.0:
+        return lambda x, y, z, seed: solve(x, y, z, _seed_pitch(seed, at_home), seed, None)
+    (c1x, c1z), (v3x, v3z), phi0 = fam.c1, fam.links[2], fam.phi0
+    l3, ang3, az, bs = math.hypot(v3x, v3z), math.atan2(v3z, v3x), fam.azimuth_r, fam.base_sign
+    lo2, hi2, l3sq = reach[0] ** 2, reach[1] ** 2, l3 * l3
+    (lo0, hi0), pi, tp, inf = base_range, math.pi, _TWO_PI, math.inf
+    atan2, acos, rem, sqrt, cos, sin = (
+        math.atan2,
+        math.acos,
+        math.remainder,
+        math.sqrt,
+        math.cos,
+        math.sin,
+    )
+    mid, full = 0.5 * (lo0 + hi0), hi0 - lo0 >= _TWO_PI - 1e-9  # full: both ways always face
+    c_k, s_k, l3_2 = math.cos(phi0 - ang3), math.sin(phi0 - ang3), 2.0 * l3
+    c2k, s2k = math.cos(2.0 * (phi0 - ang3)), math.sin(2.0 * (phi0 - ang3))
+    home_cs = math.cos(home_pitch), math.sin(home_pitch)
 
     def free(x: float, y: float, z: float, seed: Q) -> Found | None:
         if seed is home or seed == home:
-            want = home_pitch
+            want, (cw, sw) = home_pitch, home_cs
         else:
-            st = state(list(seed))
-            want = pitch_scalar(st.R[0], st.p)
-        at = want if nearest is None else nearest(x, y, z, want, seed[0])
-        return None if at is None else solve(x, y, z, at, seed, None)
+            want = _seed_pitch(seed, at_home)
+            cw, sw = cos(want), sin(want)
+        rho = sqrt(x * x + y * y)
+        if rho < 1e-9:
+            return solve(x, y, z, want, seed, None)  # on the base axis: at the seed's pitch
+        heading, tz = bs * (atan2(y, x) - az), z - c1z
+        found: Found = []
+        out: list[Way] = []
+        tz2, here = tz * tz + l3sq, False
+        # per way, facing the target (+) and turned back (-): link 3's direction and the
+        # plane turn at want; within reach where 2 L3 D cos u lies in [D^2 + L3^2 - hi^2, ...]
+        for way, ca, sa, turn in (
+            (1.0, cw * c_k + sw * s_k, sw * c_k - cw * s_k, want - phi0),
+            (-1.0, sw * s_k - cw * c_k, sw * c_k + cw * s_k, pi - want - phi0),
+        ):
+            q0 = heading if way > 0.0 else heading + bs * pi
+            if not full and not lo0 - 1e-9 <= rem(q0 - mid, tp) + mid <= hi0 + 1e-9:
+                continue
+            tx = way * rho - c1x
+            a, d = tx * tx + tz2, l3_2 * (ca * tx + sa * tz)
+            if a - hi2 <= d <= a - lo2:
+                here = True
+                elbows(
+                    way * rho, q0, tx - l3 * ca, tz - l3 * sa, turn, None, rho, seed, found, None
+                )
+            elif not here:
+                out.append((way, q0, tx, a, d, ca, sa))
+        return found if here else _clamped(out, rho, tz, seed, found)
+
+    def _clamped(out: list[Way], rho: float, tz: float, seed: Q, found: Found) -> Found | None:
+        """Where no way reaches at want: the nearest turn u within reach (a clamp of cos u),
+        solved in that way and, if it reaches there too, in the other (link 3 mirrored)."""
+        best, pick = inf, (0.0, 0.0, 0.0)
+        for way, _, tx, a, d, ca, sa in out:
+            big = sqrt(a - l3sq)
+            k = l3_2 * big
+            if k < 1e-15 or (a - hi2) > k * (1.0 + 1e-12) or (a - lo2) < -k * (1.0 + 1e-12):
+                continue
+            c_lo, c_hi, c = (a - hi2) / k, (a - lo2) / k, d / k
+            cu = min(1.0, c_hi) if c > c_hi else max(-1.0, c_lo)  # cos u clamped
+            gap = abs(acos(cu) - acos(max(-1.0, min(1.0, c))))
+            if gap < best:
+                su = sqrt(1.0 - cu * cu) if sa * tx - ca * tz >= 0.0 else -sqrt(1.0 - cu * cu)
+                best, pick = gap, (way, (cu * tx - su * tz) / big, (su * tx + cu * tz) / big)
+        if best == inf:
+            return None
+        way_p, px, pz = pick  # at its pitch the other way's link 3 is mirrored: pi - 2k - angle
+        for way, q0, tx, a, _, _, _ in out:
+            dx, dz = (px, pz) if way == way_p else (pz * s2k - px * c2k, pz * c2k + px * s2k)
+            d = l3_2 * (dx * tx + dz * tz)
+            if way == way_p or a - hi2 - _NEAR <= d <= a - lo2 + _NEAR:
+                turn = atan2(dz, dx) - ang3
+                elbows(
+                    way * rho, q0, tx - l3 * dx, tz - l3 * dz, turn, None, rho, seed, found, None
+                )
+        return found
 
     return free
+
+
+def _seed_pitch(seed: Q, at_home: tuple[Q, float, State]) -> float:
+    """The tool's pitch [rad] at joint angles ``seed`` [rad]."""
+    home, home_pitch, state = at_home
+    if seed is home or seed == home:
+        return home_pitch
+    st = state(list(seed))
+    return pitch_scalar(st.R[0], st.p)

@@ -12,11 +12,11 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError
+from .._inputs import joints
 from ..model import ArmModel
 from ._chain import Chain, chain_of
 from ._scalar import ChainState
 from ._steps import Fixed, Terms
-from ._validate import joints
 
 F64 = NDArray[np.float64]
 Cols = list[F64]

@@ -9,6 +9,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError
+from .._inputs import angle, array, choice, joints, point, rotation, tolerance
 from ..model import ArmModel
 from ._chain import _CHAINS, Chain, chain_of
 from ._closed import best, reasons, solve
@@ -18,7 +19,6 @@ from ._numeric import solve_many, solve_one
 from ._pitch_range import free_batch, preferred
 from ._result import IKBatchResult, IKResult
 from ._target import Goal, Target
-from ._validate import angle, array, choice, joints, point, rotation, tolerance
 
 F64 = NDArray[np.float64]
 MethodName = Literal["auto", "analytic", "lm", "ccd", "jacobian", "random"]

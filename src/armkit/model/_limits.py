@@ -35,6 +35,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError, JointLimitError
+from .._inputs import is_number, shown
 from ._types import ArmModel
 
 F64 = NDArray[np.float64]
@@ -66,7 +67,7 @@ def check_joints(model: ArmModel, q: ArrayLike) -> F64:
     if arr.shape != (model.dof,) or not np.isfinite(arr).all():
         names = ", ".join(model.joint_names)
         raise InputError(
-            f"{model.name} needs {model.dof} finite joint angles [rad] ({names}), got {_shown(q)}"
+            f"{model.name} needs {model.dof} finite joint angles [rad] ({names}), got {shown(q)}"
         )
     for joint, angle in zip(model.joints, arr, strict=True):
         if not joint.lower - SLACK <= angle <= joint.upper + SLACK:
@@ -107,36 +108,22 @@ def check_speed(speed: float | None) -> float:
     (InputError otherwise)."""
     if speed is None:
         return 1.0
-    if not (_is_number(speed) and math.isfinite(speed) and 0.0 < speed <= 1.0):
-        raise InputError(f"speed must be a fraction of the maximum in (0, 1], got {_shown(speed)}")
+    if not (is_number(speed) and math.isfinite(speed) and 0.0 < speed <= 1.0):
+        raise InputError(f"speed must be a fraction of the maximum in (0, 1], got {shown(speed)}")
     return float(speed)
 
 
 def check_duration(duration: float, longest: float | None = None) -> float:
     """``duration`` [s] as a float: a time >= 0, at most ``longest`` [s] if given (InputError)."""
     if longest is not None:
-        if not (_is_number(duration) and 0.0 <= duration <= longest):
+        if not (is_number(duration) and 0.0 <= duration <= longest):
             raise InputError(
-                f"duration must be 0..{longest:g} s, got {_shown(duration)} s; "
+                f"duration must be 0..{longest:g} s, got {shown(duration)} s; "
                 "split a longer motion into several moves"
             )
-    elif not (_is_number(duration) and math.isfinite(duration) and duration >= 0):
-        raise InputError(f"duration must be a time >= 0 s, got {_shown(duration)}")
+    elif not (is_number(duration) and math.isfinite(duration) and duration >= 0):
+        raise InputError(f"duration must be a time >= 0 s, got {shown(duration)}")
     return float(duration)
-
-
-def _is_number(value: object) -> bool:
-    return isinstance(value, int | float | np.integer | np.floating) and not isinstance(value, bool)
-
-
-def _shown(value: object) -> str:
-    """``value`` for a message: numbers as ``%g`` (no ``np.float64(...)``), others as repr."""
-    if _is_number(value):
-        return f"{float(value):g}"  # type: ignore[arg-type]
-    try:
-        return ", ".join(f"{v:g}" for v in np.asarray(value, dtype=np.float64).ravel())
-    except (TypeError, ValueError):
-        return repr(value)
 
 
 def limits(model: ArmModel, speed: float = 1.0) -> tuple[F64, F64]:

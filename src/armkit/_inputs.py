@@ -1,4 +1,4 @@
-"""The one input validator of the kinematics functions.
+"""The one input validator of numbers, angles, arrays and choices, for every package.
 
 Every check raises ``InputError`` (an ``ArmkitError`` and a ``ValueError``) that
 names the argument, what is allowed and what was given, shown briefly: numbers
@@ -14,20 +14,26 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._errors import InputError
+from ._errors import InputError
 
 F64 = NDArray[np.float64]
+
+
+def is_number(value: Any) -> bool:
+    """Whether ``value`` is a real number: an int, a float or a numpy one, not a bool."""
+    return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool)
 
 
 def shown(value: Any) -> str:
     """``value`` as a short string for a message."""
     if isinstance(value, np.ndarray):
-        return f"an array of shape {value.shape}"
+        some = f": {shown(value.tolist())}" if 0 < value.size <= 6 and value.ndim == 1 else ""
+        return f"an array of shape {value.shape}{some}"
     if isinstance(value, (bool, np.bool_)):
         return repr(bool(value))
     if isinstance(value, (int, float, np.integer, np.floating)):
         return f"{float(value):.6g}"
-    if isinstance(value, (tuple, list)) and len(value) <= 6:
+    if isinstance(value, (tuple, list)) and len(value) <= 6 and value != [] and value != ():
         inner = ", ".join(shown(v) for v in value)
         return f"({inner})" if isinstance(value, tuple) else f"[{inner}]"
     if value is None:
@@ -74,8 +80,7 @@ def point(value: Any, name: str = "position") -> tuple[float, float, float]:
         if x - x == 0.0 and y - y == 0.0 and z - z == 0.0:
             return x, y, z
     numbers = isinstance(value, np.ndarray) or (
-        isinstance(value, (tuple, list))
-        and all(isinstance(v, (int, float, np.number)) and not isinstance(v, bool) for v in value)
+        isinstance(value, (tuple, list)) and all(is_number(v) for v in value)
     )
     if not numbers or np.shape(value) != (3,):
         raise InputError(f"{name} must be three numbers (x, y, z) [m], got {shown(value)}")
@@ -87,7 +92,7 @@ def angle(value: Any, name: str) -> float | None:
     """A finite angle [rad] or None."""
     if value is None or (type(value) is float and value - value == 0.0):
         return value  # type: ignore[no-any-return]
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
+    if not is_number(value):
         raise InputError(f"{name} must be a number [rad] or None, got {shown(value)}")
     v = float(value)
     if not math.isfinite(v):
@@ -112,7 +117,7 @@ def rotation(value: ArrayLike, name: str, n: int | None = None) -> F64:
 
 def tolerance(value: Any, name: str) -> float:
     """A finite number > 0."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
+    if not is_number(value):
         raise InputError(f"{name} must be a number > 0, got {shown(value)}")
     v = float(value)
     if not (math.isfinite(v) and v > 0.0):
