@@ -24,7 +24,6 @@ from ._closed_fast import (
     FixedSolver,
     FreeSolver,
     Q,
-    Ways,
     fixed_solver,
     free_solver,
 )
@@ -56,8 +55,8 @@ class Chain:
         home_pitch: the tool's pitch at home [rad].
         wrist_reach: (min, max) distance [m] from the first planar joint to the end of
             link 2 that the elbow's limits allow (family arms; else (0, 0)).
-        fixed: the closed form at one pitch with this chain's constants bound, and
-            ways: the base branches of a target (``_closed_fast``); None off the family.
+        fixed: the closed form at one pitch with this chain's constants bound
+            (``_closed_fast``); None off the family.
         free: on a family arm with 3 planar joints, the closed form without a pitch (it
             chooses one; with 2 the pitch follows from the position), else None.
     """
@@ -85,7 +84,6 @@ class Chain:
     home_pitch: float
     wrist_reach: tuple[float, float]
     fixed: FixedSolver | None
-    ways: Ways | None
     free: FreeSolver | None
 
 
@@ -138,7 +136,7 @@ def compile_chain(model: ArmModel) -> Chain:
     at_home = state(list(home))
     home_pitch = pitch_scalar(at_home.R[0], at_home.p)
     wrist = wrist_range(fam, lower[fam.planar[1]], upper[fam.planar[1]]) if fam else (0.0, 0.0)
-    fixed, ways, free = _solvers(fam, lower, upper, wrist, (home, home_pitch, state))
+    fixed, free = _solvers(fam, lower, upper, wrist, (home, home_pitch, state))
     return Chain(
         name=model.name,
         dof=model.dof,
@@ -163,7 +161,6 @@ def compile_chain(model: ArmModel) -> Chain:
         home_pitch=home_pitch,
         wrist_reach=wrist,
         fixed=fixed,
-        ways=ways,
         free=free,
     )
 
@@ -171,13 +168,13 @@ def compile_chain(model: ArmModel) -> Chain:
 def _solvers(
     fam: PlanarFamily | None, lower: Q, upper: Q, wrist: tuple[float, float],
     at_home: tuple[Q, float, State],
-) -> tuple[FixedSolver | None, Ways | None, FreeSolver | None]:  # fmt: skip
+) -> tuple[FixedSolver | None, FreeSolver | None]:  # fmt: skip
     """The closed-form solvers of a family arm (``_closed_fast``), None off the family;
     ``at_home``: home [rad], the pitch there [rad] and the chain's scalar state."""
     if fam is None:
-        return None, None, None
-    solve, ways, elbows = fixed_solver(fam, lower, upper)
+        return None, None
+    solve, elbows = fixed_solver(fam, lower, upper)
     if len(fam.planar) != 3:
-        return solve, ways, None
+        return solve, None
     base = (0.0, 0.0) if fam.base is None else (lower[fam.base], upper[fam.base])
-    return solve, ways, free_solver(fam, (solve, elbows), wrist, base, at_home)
+    return solve, free_solver(fam, (solve, elbows), wrist, base, at_home)

@@ -11,8 +11,10 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from .._errors import Reason
-from ._family import PlanarFamily
+from ._family import PlanarFamily, planes
 from ._pose import pitch_scalar
 from ._scalar import State
 
@@ -34,7 +36,6 @@ class Misses:
 
 
 FixedSolver = Callable[[float, float, float, "float | None", Q, "Misses | None"], Found]
-Ways = Callable[[float, float, float, Q], "tuple[tuple[float, float], ...] | Reason"]
 Elbows = Callable[
     [float, float, float, float, float, "float | None", float, Q, Found, "Misses | None"], None
 ]
@@ -58,11 +59,10 @@ def pitch_for_phi(phi: float, r: float, rho: float) -> float:
     return math.atan2(math.sin(phi), c * r / rho)
 
 
-def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Ways, Elbows]:
+def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Elbows]:
     """solve(x, y, z, pitch, seed, misses): every solution at ``pitch`` [rad] (None: 2
     planar joints, the pitch follows) for the tool point (x, y, z) [m], unsorted; and
-    ways(x, y, z, seed): the base branches (plane radius r [m], base angle [rad]), or why none;
-    and elbows(...): both elbows of one base branch from its wrist point, as ``solve`` uses."""
+    elbows(...): both elbows of one base branch from its wrist point, as ``solve`` uses."""
     base, three, dof = fam.base, len(fam.planar) == 3, len(lower)
     (j1, j2, j3), (s1, s2, s3) = (*fam.planar, 0)[:3], (*fam.sigma, 0.0)[:3]
     lo1, hi1, lo2, hi2, lo3, hi3 = lower[j1], upper[j1], lower[j2], upper[j2], lower[j3], upper[j3]
@@ -76,25 +76,6 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
     rem, floor = math.remainder, math.floor
     yaw3 = base == 0 and fam.planar == (1, 2, 3)  # the common layout: joints in order
     pair = base is None and fam.planar == (0, 1) and dof == 2
-
-    def ways(x: float, y: float, z: float, seed: Q) -> tuple[tuple[float, float], ...] | Reason:
-        """(plane radius r (signed), base angle q0 [rad]) per base branch, or why none."""
-        if base is None:
-            if abs(x * ux + y * uy + z * uz - lat) > 1e-9:
-                return "off_plane"
-            return ((ux * y - uy * x, 0.0),)
-        r2 = x * x + y * y - lat * lat
-        if r2 < -1e-18:
-            return "too_close"
-        r = sqrt(r2) if r2 > 0.0 else 0.0
-        if x * x + y * y < 1e-24:  # on the base axis the base angle is free: the seed's
-            return ((0.0, seed[base]), (-0.0, seed[base] + pi))
-        heading = atan2(y, x) - az
-        if lat:
-            facing, back = bs * (heading - atan2(-lat, r)), bs * (heading - atan2(-lat, -r))
-        else:
-            facing, back = bs * heading, bs * (heading + pi)
-        return ((r, facing), (-r, back)) if r > 1e-12 else ((r, facing),)
 
     def elbows(
         r: float,
@@ -185,13 +166,13 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
         rho = sqrt(x * x + y * y)
         branches: tuple[tuple[float, float], ...] | Reason
         plain = base is not None and not lat and rho >= 1e-12  # off the axis, no offset
-        if plain:  # ``ways``' common cases, inline
+        if plain:  # the common case, inline
             heading = bs * (atan2(y, x) - az)
             branches = ((rho, heading), (-rho, heading + bs * pi))
         elif base is None and abs(x * ux + y * uy + z * uz - lat) <= 1e-9:
             branches = ((ux * y - uy * x, 0.0),)
-        else:
-            branches = ways(x, y, z, seed)
+        else:  # on the base axis, a lateral offset: the vectorised reference's branches
+            branches = _ways(fam, x, y, z, seed)
         if three and rho < 1e-12 and abs(pitch or 0.0) > pi / 2 + 1e-12:
             branches = "pitch"  # on the base axis the pitch is within -90..90 deg
         if isinstance(branches, str):
@@ -218,7 +199,18 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Wa
             elbows(r, q0, wx, wz, turn, pitch, rho, seed, found, misses)
         return found
 
-    return solve, ways, elbows
+    return solve, elbows
+
+
+def _ways(
+    fam: PlanarFamily, x: float, y: float, z: float, seed: Q
+) -> tuple[tuple[float, float], ...] | Reason:
+    """(plane radius r (signed) [m], base angle q0 [rad]) per base branch of the target
+    (x, y, z) [m] (``_family.planes``), or why there is none."""
+    b = planes(fam, np.array([[x, y, z]]), np.array([seed]))
+    if b.bad[0]:
+        return "off_plane" if fam.base is None else "too_close"
+    return tuple(zip(b.r.tolist(), b.q0.tolist(), strict=True))
 
 
 def free_solver(

@@ -14,11 +14,13 @@ from __future__ import annotations
 import itertools
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 F64 = NDArray[np.float64]
+Bool = NDArray[np.bool_]
 Vec2 = tuple[float, float]
 Vec3 = tuple[float, float, float]
 _EPS = 1e-9
@@ -154,3 +156,42 @@ def wrist_range(fam: PlanarFamily, lower: float, upper: float) -> tuple[float, f
         math.sqrt(max(l1 * l1 + l2 * l2 + 2 * l1 * l2 * c_min, 0.0)),
         math.sqrt(max(l1 * l1 + l2 * l2 + 2 * l1 * l2 * c_max, 0.0)),
     )
+
+
+@dataclass(frozen=True)
+class Planes:
+    """The base branches of N targets, B of them (facing the target, and over the shoulder;
+    one without a base), stacked branch after branch: per branch and target (B * N,) the
+    plane radius r (signed), the base angle q0 [rad], the horizontal distance rho and
+    height z of the target [m]; and the targets with no branch at all (N,)."""
+
+    r: F64
+    q0: F64
+    rho: F64
+    z: F64
+    bad: Bool
+
+    def per_target(self, v: NDArray[Any]) -> NDArray[Any]:
+        """Stacked values (B * N, ...) as (B, N, ...)."""
+        return v.reshape(-1, len(self.bad), *v.shape[1:])
+
+
+def planes(fam: PlanarFamily, P: F64, seed: F64) -> Planes:
+    """The base branches of targets P (N, 3) [m] (seeds (N, dof) [rad] give the base angle
+    on the base axis)."""
+    x, y, z = P[:, 0], P[:, 1], P[:, 2]
+    rho2 = x * x + y * y
+    rho = np.sqrt(rho2)
+    if fam.base is None:
+        ux, uy, uz = fam.u
+        bad = np.abs(x * ux + y * uy + z * uz - fam.lateral) > 1e-9
+        return Planes(ux * y - uy * x, np.zeros(len(P)), rho, z, bad)
+    r2 = rho2 - fam.lateral * fam.lateral
+    r = np.sqrt(np.maximum(r2, 0.0))
+    r = np.concatenate([r, np.where(rho < 1e-12, -0.0, -r)])
+    axis = np.concatenate([rho, rho]) < 1e-12
+    turn = np.repeat([0.0, np.pi], len(P))  # on the axis: the seed's base angle, or turned round
+    lean = np.arctan2(-fam.lateral, r) if fam.lateral else -turn
+    heading = np.tile(np.arctan2(y, x) - fam.azimuth_r, 2)
+    q0 = np.where(axis, np.tile(seed[:, fam.base], 2) + turn, fam.base_sign * (heading - lean))
+    return Planes(r, q0, np.tile(rho, 2), np.tile(z, 2), r2 < -1e-18)

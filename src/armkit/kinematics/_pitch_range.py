@@ -26,8 +26,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ._chain import Chain
-from ._closed import TWO_PI, Planes, best, pitch_of_phi, planes, solve, turn_of, wrap
-from ._family import PlanarFamily
+from ._closed import TWO_PI, best, pitch_of_phi, solve, turn_of, wrap
+from ._family import PlanarFamily, Planes, planes
 from ._forward import CHUNK, sweep
 from ._pose import pitch_of
 
