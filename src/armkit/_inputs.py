@@ -130,3 +130,16 @@ def choice(value: Any, name: str, allowed: tuple[str, ...]) -> str:
     if not isinstance(value, str) or value not in allowed:
         raise InputError(f"{name} must be one of {', '.join(allowed)}, got {shown(value)}")
     return value
+
+
+def mm(p: Any) -> str:
+    """A point [m] for a message in millimetres: ``(x, y, z) mm`` to 0.1 mm, 3 significant
+    digits when huge, in metres when too far for millimetres in a float."""
+    if all(math.isfinite(v * 1000.0) for v in p):
+        return "(" + ", ".join(brief(float(v) * 1000.0) for v in p) + ") mm"
+    return "(" + ", ".join(f"{float(v):.3g}" for v in p) + ") m"
+
+
+def brief(v: float) -> str:
+    """A number for a message: one decimal, or 3 significant digits when huge."""
+    return f"{v:.1f}" if abs(v) < 1e6 else f"{v:.3g}"

@@ -226,7 +226,7 @@ def free_solver(
     for one target); the wrist point then follows from u without the pitch's sine."""
     (solve, elbows), (home, home_pitch, _) = solvers, at_home
     if fam.base is None or len(fam.planar) != 3 or fam.lateral != 0.0:
-        return lambda x, y, z, seed: solve(x, y, z, _seed_pitch(seed, at_home), seed, None)
+        return lambda x, y, z, seed: solve(x, y, z, seed_pitch(seed, at_home), seed, None)
     (c1x, c1z), (v3x, v3z), phi0 = fam.c1, fam.links[2], fam.phi0
     l3, ang3, az, bs = math.hypot(v3x, v3z), math.atan2(v3z, v3x), fam.azimuth_r, fam.base_sign
     lo2, hi2, l3sq = reach[0] ** 2, reach[1] ** 2, l3 * l3
@@ -248,7 +248,7 @@ def free_solver(
         if seed is home or seed == home:
             want, (cw, sw) = home_pitch, home_cs
         else:
-            want = _seed_pitch(seed, at_home)
+            want = seed_pitch(seed, at_home)
             cw, sw = cos(want), sin(want)
         rho = sqrt(x * x + y * y)
         if rho < 1e-9:
@@ -308,7 +308,7 @@ def free_solver(
     return free
 
 
-def _seed_pitch(seed: Q, at_home: tuple[Q, float, State]) -> float:
+def seed_pitch(seed: Q, at_home: tuple[Q, float, State]) -> float:
     """The tool's pitch [rad] at joint angles ``seed`` [rad]."""
     home, home_pitch, state = at_home
     if seed is home or seed == home:

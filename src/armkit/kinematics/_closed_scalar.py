@@ -2,9 +2,8 @@
 
 Without a pitch (3 planar joints) the pitch is the one nearest the seed's at
 which the arm fits (see ``_pitch_range``): first the nearest at which the wrist
-point is within the links' reach, by the chain's scalar ``nearest``; where a
-joint limit refuses that one, the vectorised ``limited_pitch`` on this one
-target.
+point is within the links' reach, by the chain's ``free``; where a joint limit
+refuses that one, the vectorised ``limited_pitch`` on this one target.
 """
 
 from __future__ import annotations
@@ -14,17 +13,17 @@ import math
 import numpy as np
 
 from .._errors import Reason, UnreachableError
+from .._inputs import brief, mm
 from ._chain import Chain
-from ._closed_fast import Found, Misses, Q
+from ._closed_fast import Found, Misses, Q, seed_pitch
 from ._family import PlanarFamily
 from ._pitch_range import limited_pitch
-from ._pose import pitch_scalar
 
 
 def limited(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
     """Position only, where a joint limit refuses ``chain.free``'s pitch: every solution at
     the boundary pitch nearest the seed's at which the arm fits, unsorted; [] if none."""
-    want = chain.home_pitch if seed == chain.home else preferred(chain, seed)
+    want = preferred(chain, seed)
     solve = chain.fixed
     assert solve is not None and chain.family is not None
     pitch, ok = limited_pitch(
@@ -35,8 +34,7 @@ def limited(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
 
 def preferred(chain: Chain, seed: Q) -> float:
     """The pitch [rad] of the tool at joint angles ``seed``."""
-    st = chain.state(list(seed))
-    return pitch_scalar(st.R[0], st.p)
+    return seed_pitch(seed, (chain.home, chain.home_pitch, chain.state))
 
 
 def refusal(
@@ -73,17 +71,7 @@ def too_far(chain: Chain, p: Q, pitch: float | None) -> UnreachableError:
 
 def where(p: Q, pitch: float | None) -> str:
     """The target in the user's units, briefly: '(x, y, z) mm at pitch P deg'."""
-    mm = [v * 1000.0 for v in p]
-    if all(math.isfinite(v) for v in mm):
-        text = "(" + ", ".join(_num(v) for v in mm) + ") mm"
-    else:  # too far for millimetres in a float: metres
-        text = "(" + ", ".join(f"{v:.3g}" for v in p) + ") m"
-    return text if pitch is None else text + f" at pitch {_num(math.degrees(pitch))} deg"
-
-
-def _num(v: float) -> str:
-    """A number for a message: one decimal, or 3 significant digits when huge."""
-    return f"{v:.1f}" if abs(v) < 1e6 else f"{v:.3g}"
+    return mm(p) if pitch is None else f"{mm(p)} at pitch {brief(math.degrees(pitch))} deg"
 
 
 EXPLAIN: dict[Reason, str] = {

@@ -17,6 +17,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError, Reason, UnreachableError
+from .._inputs import mm
 from ..kinematics import fk, ik
 from ..model import ArmModel
 
@@ -79,7 +80,7 @@ def _solve_all(
         try:
             seed = ik(model, point, pitch, seed).q
         except UnreachableError as exc:
-            message = f"point {i} of {p.shape[0]} at {_mm(point)} is unreachable: {exc}"
+            message = f"point {i} of {p.shape[0]} at {mm(point)} is unreachable: {exc}"
             return out[:i], PathError(message, reason=exc.reason or "unreachable", index=i)
         out[i] = seed
     return out, None
@@ -96,7 +97,7 @@ def _check_between(model: ArmModel, p: F64, q: F64, tolerance: float) -> None:
         i = int(bad[0])
         step = math.degrees(float(np.max(np.abs(q[i + 1] - q[i]))))
         raise PathError(
-            f"between point {i} at {_mm(p[i])} and point {i + 1} the arm would leave the path "
+            f"between point {i} at {mm(p[i])} and point {i + 1} the arm would leave the path "
             f"by {off[i] * 1000:.2f} mm (a joint turns {step:.1f} deg: elbow flip or "
             f"singularity); use a smaller spacing or another path",
             reason="discontinuous",
@@ -111,7 +112,3 @@ def _distance_to_segments(x: F64, a: F64, b: F64) -> F64:
     s = np.sum((x - a) * ab, axis=1) / np.where(length2 > 0, length2, 1.0)
     closest = a + np.clip(s, 0.0, 1.0)[:, None] * ab
     return np.asarray(np.linalg.norm(x - closest, axis=1))
-
-
-def _mm(point: F64) -> str:
-    return "(" + ", ".join(f"{v * 1000:.1f}" for v in point) + ") mm"

@@ -7,16 +7,12 @@ import math
 import numpy as np
 from numpy.typing import NDArray
 
+from .._inputs import mm
 from ._instruments import Drum, Xylophone, note_name
 from ._objects import Board, Cube
 from ._scene import Scene
 
 F64 = NDArray[np.float64]
-
-
-def mm(p: F64) -> str:
-    """``(x, y, z) mm`` to 0.1 mm."""
-    return "(" + ", ".join(f"{float(v) * 1000:.1f}" for v in p) + ") mm"
 
 
 def _deg(a: float) -> str:
