@@ -14,12 +14,10 @@ from numpy.typing import NDArray
 from .._chain import Chain
 from .._result import IKBatchResult, IKResult, Method
 from .._target import Goal
-from ._ccd import solve_ccd
-from ._jacobian_iter import solve_jacobian
+from ._baselines import solve_ccd, solve_jacobian, solve_random
 from ._lm import solve_lm
 from ._lm_batch import solve_lm_batch
 from ._outcome import Attempt, finish
-from ._random import solve_random
 from ._residual import Task
 from ._residual_batch import BatchTask
 

@@ -65,6 +65,20 @@ def dls_step_reference(cols: list[tuple[float, ...]], e: list[float], lam: float
     return cholesky_solve(tri, [sum(map(mul, c, e)) for c in cols], lam)
 
 
+def advance(
+    q: list[float], dq: list[float], max_step: float, lo: tuple[float, ...], hi: tuple[float, ...]
+) -> list[float]:
+    """q + dq [rad], dq scaled down so that no joint moves more than ``max_step`` [rad],
+    every joint clamped into [lo, hi]."""
+    biggest = max(map(abs, dq))
+    k = max_step / biggest if biggest > max_step else 1.0
+    out = []
+    for v, d, a, b in zip(q, dq, lo, hi, strict=True):
+        t = v + k * d
+        out.append(a if t < a else (b if t > b else t))
+    return out
+
+
 def damped_steps(J: F64, e: F64, lam: F64, free: NDArray[np.bool_] | None = None) -> F64:
     """Damped least-squares steps dq [rad], shape (k, dof), for J (k, m, dof), e (k, m).
 
