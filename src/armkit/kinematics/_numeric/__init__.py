@@ -59,8 +59,7 @@ def solve_many(
     """
     task = BatchTask(P, pitch, R, chain.weight)
     out = solve_lm_batch(chain, task, seeds, tol_pos, tol_ang, rng_seed)
-    far = np.linalg.norm(P, axis=1) > chain.reach
-    reason = np.where(out.converged, "", np.where(far, "too_far", "no_convergence"))
+    reason = np.where(out.converged, "", np.where(out.far, "too_far", "no_convergence"))
     q = np.where(out.converged[:, None], out.q, np.nan)
     return IKBatchResult(q=q, ok=out.converged.copy(), reason=reason.astype(np.str_), method="lm")
 

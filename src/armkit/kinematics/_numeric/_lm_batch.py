@@ -60,12 +60,13 @@ class _Runs:
 
 @dataclass(frozen=True)
 class BatchOutcome:
-    """q [rad] (N, dof), converged (N,), iterations (N,), restarts (N,)."""
+    """q [rad] (N, dof), converged (N,), restarts (N,), and far (N,): True where the
+    target is beyond the chain's reach."""
 
     q: F64
     converged: NDArray[np.bool_]
-    iterations: NDArray[np.int64]
     restarts: NDArray[np.int64]
+    far: NDArray[np.bool_]
 
 
 def solve_lm_batch(
@@ -74,8 +75,8 @@ def solve_lm_batch(
     """LM on N targets from seeds q0 [rad], shape (N, dof) (clamped into the limits)."""
     st, n = BATCH_SETTINGS, len(task.P)
     rng = np.random.default_rng(rng_seed)
-    out = BatchOutcome(q0.copy(), np.zeros(n, bool), np.zeros(n, np.int64), np.zeros(n, np.int64))
     far = np.linalg.norm(task.P, axis=1) > chain.reach
+    out = BatchOutcome(q0.copy(), np.zeros(n, bool), np.zeros(n, np.int64), far)
     budget = np.where(far, 0, st.max_restarts)
     q = turn_first_joint(chain, task, np.clip(q0, chain.lower_a, chain.upper_a))
     runs = _new_runs(np.arange(n), q, _evaluate(chain, task, q), st)
@@ -87,7 +88,6 @@ def solve_lm_batch(
             runs = runs.keep(~out.converged[runs.owner])
         if not runs.owner.size:
             break
-        out.iterations[:] += np.bincount(runs.owner, minlength=n) > 0
         _iterate(chain, task.take(runs.owner), runs, st)
         runs = _respawn(chain, task, runs, out, budget, rng, st)
     return out
