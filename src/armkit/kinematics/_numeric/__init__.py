@@ -14,12 +14,10 @@ from numpy.typing import NDArray
 from .._chain import Chain
 from .._result import IKBatchResult, IKResult, Method
 from .._target import Goal
-from ._ccd import solve_ccd
-from ._jacobian_iter import solve_jacobian
+from ._baselines import solve_ccd, solve_jacobian, solve_random
 from ._lm import solve_lm
 from ._lm_batch import solve_lm_batch
 from ._outcome import Attempt, finish
-from ._random import solve_random
 from ._residual import Task
 from ._residual_batch import BatchTask
 
@@ -61,8 +59,7 @@ def solve_many(
     """
     task = BatchTask(P, pitch, R, chain.weight)
     out = solve_lm_batch(chain, task, seeds, tol_pos, tol_ang, rng_seed)
-    far = np.linalg.norm(P, axis=1) > chain.reach
-    reason = np.where(out.converged, "", np.where(far, "too_far", "no_convergence"))
+    reason = np.where(out.converged, "", np.where(out.far, "too_far", "no_convergence"))
     q = np.where(out.converged[:, None], out.q, np.nan)
     return IKBatchResult(q=q, ok=out.converged.copy(), reason=reason.astype(np.str_), method="lm")
 

@@ -14,15 +14,16 @@ batch form (``_lm_batch``) runs the same method on arrays.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from operator import ge, le
 
 from .._chain import Chain
 from .._scalar import ChainState, State
-from ._dls import dls_step
+from ._dls import advance, dls_step
 from ._outcome import Attempt, beyond_reach, within
 from ._residual import Residual, Task, residual, task_jacobian
-from ._sampling import JointSampler, clamp
+from ._sampling import clamp, joint_sampler
 from ._turn import best_turn
 
 
@@ -78,10 +79,10 @@ def solve_lm(
     if within(res, tol_pos, tol_ang):
         return Attempt(q, res, total, 0, True)
     best = Attempt(q, res, total, 0, False)
-    sampler = JointSampler(chain, rng_seed)
+    sample = joint_sampler(chain, rng_seed)
     restarts = settings.max_restarts if not beyond_reach(chain, task) else 0
     for k in range(1, restarts + 1):
-        q, res, its = lm_run(prob, _restart_point(prob, sampler, k))
+        q, res, its = lm_run(prob, _restart_point(prob, sample, k))
         total += its
         done = within(res, tol_pos, tol_ang)
         if done or res.cost < best.residual.cost:
@@ -92,15 +93,15 @@ def solve_lm(
     return best
 
 
-def _restart_point(prob: _Problem, sampler: JointSampler, k: int) -> list[float]:
+def _restart_point(prob: _Problem, sample: Callable[[], list[float]], k: int) -> list[float]:
     """Where restart k begins: odd k, the lowest-cost of CANDIDATES random joint
     vectors (finds the right neighbourhood fast); even k, one uniform sample
     (reaches basins that look bad from afar, such as corners of the limits)."""
-    best, cost = sampler.sample(), math.inf
+    best, cost = sample(), math.inf
     if k % 2 == 0:
         return best
     for _ in range(CANDIDATES):
-        q = sampler.sample()
+        q = sample()
         c = residual(prob.task, prob.state(q), jac=False).cost
         if c < cost:
             best, cost = q, c
@@ -177,10 +178,4 @@ def _step(
         ]
         if not all(free):
             dq = dls_step(cols, e, lam, free)
-    biggest = max(map(abs, dq))
-    k = prob.settings.max_step / biggest if biggest > prob.settings.max_step else 1.0
-    trial = []
-    for v, d, a, b in zip(q, dq, lo, hi, strict=True):
-        t = v + k * d
-        trial.append(a if t < a else (b if t > b else t))
-    return trial
+    return advance(q, dq, prob.settings.max_step, lo, hi)

@@ -14,6 +14,7 @@ from numpy.typing import NDArray
 
 from .._chain import Chain
 from .._forward import sweep
+from ._dls import damped_steps
 from ._lm import CANDIDATES, LMSettings
 from ._residual_batch import BatchResidual, BatchTask, residual_batch, task_cost
 from ._turn import turn_first_joint
@@ -59,12 +60,13 @@ class _Runs:
 
 @dataclass(frozen=True)
 class BatchOutcome:
-    """q [rad] (N, dof), converged (N,), iterations (N,), restarts (N,)."""
+    """q [rad] (N, dof), converged (N,), restarts (N,), and far (N,): True where the
+    target is beyond the chain's reach."""
 
     q: F64
     converged: NDArray[np.bool_]
-    iterations: NDArray[np.int64]
     restarts: NDArray[np.int64]
+    far: NDArray[np.bool_]
 
 
 def solve_lm_batch(
@@ -73,8 +75,8 @@ def solve_lm_batch(
     """LM on N targets from seeds q0 [rad], shape (N, dof) (clamped into the limits)."""
     st, n = BATCH_SETTINGS, len(task.P)
     rng = np.random.default_rng(rng_seed)
-    out = BatchOutcome(q0.copy(), np.zeros(n, bool), np.zeros(n, np.int64), np.zeros(n, np.int64))
     far = np.linalg.norm(task.P, axis=1) > chain.reach
+    out = BatchOutcome(q0.copy(), np.zeros(n, bool), np.zeros(n, np.int64), far)
     budget = np.where(far, 0, st.max_restarts)
     q = turn_first_joint(chain, task, np.clip(q0, chain.lower_a, chain.upper_a))
     runs = _new_runs(np.arange(n), q, _evaluate(chain, task, q), st)
@@ -86,7 +88,6 @@ def solve_lm_batch(
             runs = runs.keep(~out.converged[runs.owner])
         if not runs.owner.size:
             break
-        out.iterations[:] += np.bincount(runs.owner, minlength=n) > 0
         _iterate(chain, task.take(runs.owner), runs, st)
         runs = _respawn(chain, task, runs, out, budget, rng, st)
     return out
@@ -105,53 +106,6 @@ def _new_runs(owner: IDX, q: F64, r: BatchResidual, st: LMSettings) -> _Runs:
         owner, q, r.e, r.J, r.cost, r.position_error, r.angle_error,
         np.full(k, st.mu), r.cost.copy(), zeros, zeros.copy(),
     )  # fmt: skip
-
-
-def damped_steps(J: F64, e: F64, lam: F64, free: NDArray[np.bool_] | None = None) -> F64:
-    """Damped least-squares steps dq [rad], shape (k, dof), for J (k, m, dof), e (k, m).
-
-    Joints where ``free`` (k, dof) is False get no motion. The small m x m (or
-    dof x dof) systems are formed and factored entry by entry, each entry a
-    contiguous array over the k targets: far fewer, cheaper numpy calls than
-    batched matmul and ``np.linalg.solve`` on thousands of 4 x 4 matrices.
-    """
-    if free is not None:
-        J = J * free[:, None, :]
-    Jc = np.ascontiguousarray(J.transpose(1, 2, 0))  # (m, dof, k)
-    ec = np.ascontiguousarray(e.T)  # (m, k)
-    m, n = Jc.shape[0], Jc.shape[1]
-    if m <= n:  # dq = J^T (J J^T + lam I)^-1 e
-        gram = [[(Jc[r] * Jc[c]).sum(axis=0) for c in range(r + 1)] for r in range(m)]
-        y = np.stack(cholesky_solve_lanes(gram, list(ec), lam))
-        return np.asarray((Jc * y[:, None, :]).sum(axis=0).T, dtype=np.float64)
-    Jn = Jc.transpose(1, 0, 2)  # (dof, m, k): dq = (J^T J + lam I)^-1 J^T e
-    gram = [[(Jn[r] * Jn[c]).sum(axis=0) for c in range(r + 1)] for r in range(n)]
-    rhs = [(Jn[i] * ec).sum(axis=0) for i in range(n)]
-    return np.asarray(np.stack(cholesky_solve_lanes(gram, rhs, lam)).T, dtype=np.float64)
-
-
-def cholesky_solve_lanes(gram: list[list[F64]], b: list[F64], lam: F64) -> list[F64]:
-    """x with (A + lam I) x = b in every lane: A's lower triangle ``gram[r][c]`` (c <= r)
-    and b are lists of arrays of shape (k,), one lane per target."""
-    size = len(b)
-    L: list[list[F64]] = [[] for _ in range(size)]
-    for i in range(size):
-        for j in range(i + 1):
-            s = gram[i][j] + lam if i == j else gram[i][j].copy()
-            for t in range(j):
-                s -= L[i][t] * L[j][t]
-            L[i].append(np.sqrt(np.maximum(s, 1e-300)) if i == j else s / L[j][j])
-    y: list[F64] = []
-    for i in range(size):
-        s = b[i].copy()
-        for t in range(i):
-            s -= L[i][t] * y[t]
-        y.append(s / L[i][i])
-    for i in reversed(range(size)):
-        for t in range(i + 1, size):
-            y[i] = y[i] - L[t][i] * y[t]
-        y[i] = y[i] / L[i][i]
-    return y
 
 
 def _iterate(chain: Chain, task: BatchTask, s: _Runs, st: LMSettings) -> None:

@@ -14,9 +14,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TypeVar
+
+import numpy as np
+from numpy.typing import NDArray
 
 from .._pose import pitch_scalar
 from .._scalar import ChainState, Vec3
+
+A = TypeVar("A", float, NDArray[np.float64])
 
 
 @dataclass(frozen=True, slots=True)
@@ -84,8 +90,8 @@ def task_jacobian(task: Task, st: ChainState) -> list[tuple[float, ...]]:
     return st.jv  # type: ignore[return-value]
 
 
-def wrap(angle: float) -> float:
-    """angle [rad] wrapped into [-pi, pi)."""
+def wrap(angle: A) -> A:
+    """angle [rad] wrapped into [-pi, pi): a float, or an array of any shape."""
     return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 

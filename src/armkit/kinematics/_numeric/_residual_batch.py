@@ -8,7 +8,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._pose import pitch_of
-from ._residual import rotation_log
+from ._residual import rotation_log, wrap
 
 F64 = NDArray[np.float64]
 
@@ -52,41 +52,40 @@ class BatchResidual:
 
 def residual_batch(task: BatchTask, J: F64, T: F64) -> BatchResidual:
     """Residuals of poses T (k, 4, 4) with geometric Jacobians J (k, 6, dof)."""
-    e_pos = task.P - T[:, :3, 3]
-    pos = np.sqrt(np.einsum("ki,ki->k", e_pos, e_pos))
+    e, pos, ang = _errors(task, T)
     w = task.weight
     if task.pitch is not None:
-        pitch, grad = _pitch_and_gradient(J, T)
-        d = np.remainder(task.pitch - pitch + np.pi, 2.0 * np.pi) - np.pi
-        e = np.concatenate([e_pos, w * d[:, None]], axis=1)
-        return BatchResidual(
-            e, np.concatenate([J[:, :3], w * grad[:, None]], axis=1), pos, np.abs(d)
-        )
-    if task.R is not None:
-        rv = _rotation_log(task.R, T[:, :3, :3])
-        e = np.concatenate([e_pos, w * rv], axis=1)
+        Jm = np.concatenate([J[:, :3], w * _pitch_gradient(J, T)[:, None]], axis=1)
+    elif task.R is not None:
         Jm = np.concatenate([J[:, :3], w * J[:, 3:]], axis=1)
-        return BatchResidual(e, Jm, pos, np.sqrt(np.einsum("ki,ki->k", rv, rv)))
-    return BatchResidual(e_pos, J[:, :3], pos, np.zeros_like(pos))
+    else:
+        Jm = J[:, :3]
+    return BatchResidual(e, Jm, pos, ang)
 
 
 def task_cost(task: BatchTask, T: F64) -> F64:
     """|e|^2 per pose T (k, 4, 4) [m^2], without the Jacobian (to rank candidates)."""
-    d = task.P - T[:, :3, 3]
-    cost = np.einsum("ki,ki->k", d, d)
-    w2 = task.weight * task.weight
+    e = _errors(task, T)[0]
+    return np.asarray(np.einsum("km,km->k", e, e), dtype=np.float64)
+
+
+def _errors(task: BatchTask, T: F64) -> tuple[F64, F64, F64]:
+    """e (k, m) of poses T (k, 4, 4), and the unweighted position [m] and angle [rad]
+    errors, shape (k,) each."""
+    e_pos = task.P - T[:, :3, 3]
+    pos = np.sqrt(np.einsum("ki,ki->k", e_pos, e_pos))
     if task.pitch is not None:
-        a = np.remainder(task.pitch - pitch_of(T) + np.pi, 2.0 * np.pi) - np.pi
-        cost += w2 * a * a
-    elif task.R is not None:
-        E = np.einsum("kij,kjl->kil", task.R, T[:, :3, :3].transpose(0, 2, 1))
-        c = np.clip(0.5 * (np.trace(E, axis1=1, axis2=2) - 1.0), -1.0, 1.0)
-        cost += w2 * np.arccos(c) ** 2
-    return np.asarray(cost, dtype=np.float64)
+        d = wrap(task.pitch - pitch_of(T))
+        return np.concatenate([e_pos, task.weight * d[:, None]], axis=1), pos, np.abs(d)
+    if task.R is not None:
+        rv = _rotation_log(task.R, T[:, :3, :3])
+        ang = np.sqrt(np.einsum("ki,ki->k", rv, rv))
+        return np.concatenate([e_pos, task.weight * rv], axis=1), pos, ang
+    return e_pos, pos, np.zeros_like(pos)
 
 
-def _pitch_and_gradient(J: F64, T: F64) -> tuple[F64, F64]:
-    """Pitch [rad], shape (k,), and d pitch / dq, shape (k, dof) (see ``pitch_gradient``)."""
+def _pitch_gradient(J: F64, T: F64) -> F64:
+    """d pitch / dq [rad/rad], shape (k, dof) (as ``pitch_gradient``)."""
     a, p = T[:, :3, 0], T[:, :3, 3]
     ax, ay, az, px, py = a[:, 0:1], a[:, 1:2], a[:, 2:3], p[:, 0:1], p[:, 1:2]
     rho = np.maximum(np.hypot(px, py), 1e-9)
@@ -96,10 +95,7 @@ def _pitch_and_gradient(J: F64, T: F64) -> tuple[F64, F64]:
     dax, day, daz = wy * az - wz * ay, wz * ax - wx * az, wx * ay - wy * ax  # w x a
     vx, vy = Jv[:, 0], Jv[:, 1]
     dh = (dax * px + ax * vx + day * py + ay * vy) / rho - h * (px * vx + py * vy) / (rho * rho)
-    grad = (h * daz - az * dh) / np.maximum(az * az + h * h, 1e-300)
-    on_axis = np.hypot(p[:, 0], p[:, 1]) < 1e-9
-    h_pitch = np.where(on_axis, np.hypot(a[:, 0], a[:, 1]), h[:, 0])
-    return np.arctan2(a[:, 2], h_pitch), grad
+    return np.asarray((h * daz - az * dh) / np.maximum(az * az + h * h, 1e-300))
 
 
 def _rotation_log(R_goal: F64, R: F64) -> F64:

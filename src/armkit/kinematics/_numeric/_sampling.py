@@ -3,26 +3,16 @@
 from __future__ import annotations
 
 import random
+from collections.abc import Callable
 
 from .._chain import Chain
 
 
-class JointSampler:
-    """Uniform joint vectors inside a model's limits, reproducible from a seed.
-
-    Args:
-        chain: the arm's compiled chain.
-        seed: the random seed; the same seed gives the same sequence.
-    """
-
-    def __init__(self, chain: Chain, seed: int) -> None:
-        self._random = random.Random(seed)
-        self._bounds = list(zip(chain.lower, chain.upper, strict=True))
-
-    def sample(self) -> list[float]:
-        """One joint vector [rad], dof floats, each inside its joint's limits."""
-        uniform = self._random.uniform
-        return [uniform(lo, hi) for lo, hi in self._bounds]
+def joint_sampler(chain: Chain, seed: int) -> Callable[[], list[float]]:
+    """Uniform joint vectors inside the chain's limits, reproducible from ``seed`` (the
+    same seed, the same sequence): each call gives one, dof floats [rad]."""
+    uniform, bounds = random.Random(seed).uniform, list(zip(chain.lower, chain.upper, strict=True))
+    return lambda: [uniform(lo, hi) for lo, hi in bounds]
 
 
 def clamp(q: list[float], lower: tuple[float, ...], upper: tuple[float, ...]) -> list[float]:

@@ -13,7 +13,7 @@ written once over lanes: vectors are 3-tuples of floats (one target,
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import Any
 
 import numpy as np
@@ -31,7 +31,9 @@ V = tuple[Any, Any, Any]  # a vector: three floats, or three arrays (k,) of one 
 
 def best_turn(task: Task, st: ChainState, i: int) -> float:
     """The turn of joint i [rad] that best aligns the tool with the task."""
-    pairs = _axis_pairs(task, st)
+    R = task.R
+    goal_axes = None if R is None else tuple((R[k], R[3 + k], R[6 + k]) for k in range(3))
+    pairs = axis_pairs(st.R, goal_axes, task.pitch, task.p, math)
     return float(turn_angle(st.jw[i], st.origins[i], st.p, task.p, task.weight, pairs, math.atan2))
 
 
@@ -42,7 +44,9 @@ def turn_first_joint(chain: Chain, task: BatchTask, q: F64) -> F64:
     T = sweep(chain, q).T
     st = chain.state(list(chain.home))  # joint 0's axis never moves
     p, goal = _lanes(T[:, :3, 3]), _lanes(task.P)
-    pairs = _batch_axis_pairs(task, T)
+    tool_axes = tuple(_lanes(T[:, :3, k]) for k in range(3))
+    goal_axes = None if task.R is None else tuple(_lanes(task.R[:, :, k]) for k in range(3))
+    pairs = axis_pairs(tool_axes, goal_axes, task.pitch, goal, np)
     lo, hi = chain.lower[0], chain.upper[0]
     turned = q.copy()
     turned[:, 0] += turn_angle(st.jw[0], st.origins[0], p, goal, task.weight, pairs, np.arctan2)
@@ -70,34 +74,26 @@ def turn_angle(
     return atan2(num, den)
 
 
-def _axis_pairs(task: Task, st: ChainState) -> list[tuple[V, V]]:
-    """(tool axis, target axis) pairs for the angular part of the task."""
-    if task.R is not None:
-        R = task.R
-        return [(st.R[k], (R[k], R[3 + k], R[6 + k])) for k in range(3)]
-    if task.pitch is None:
-        return []
-    px, py = task.p[0], task.p[1]
-    rho = math.hypot(px, py)
-    if rho < 1e-9:
-        px, py, rho = st.R[0][0], st.R[0][1], max(math.hypot(st.R[0][0], st.R[0][1]), 1e-12)
-    c, s = math.cos(task.pitch), math.sin(task.pitch)
-    return [(st.R[0], (c * px / rho, c * py / rho, s))]
+def axis_pairs(
+    tool: Sequence[V], goal: Sequence[V] | None, pitch: Any, p: V, xm: Any
+) -> list[tuple[V, V]]:
+    """(tool axis, target axis) pairs for the angular part of the task, over lanes.
 
-
-def _batch_axis_pairs(task: BatchTask, T: F64) -> list[tuple[V, V]]:
-    """``_axis_pairs`` for k targets and tool poses T (k, 4, 4), as lanes."""
-    if task.R is not None:
-        return [(_lanes(T[:, :3, k]), _lanes(task.R[:, :, k])) for k in range(3)]
-    if task.pitch is None:
+    Args:
+        tool: the tool's axes x, y, z (its rotation's columns), as vectors.
+        goal: the target's axes, or None; pitch: the target pitch [rad] or None.
+        p: the target point [m]. xm: ``math`` for floats, ``numpy`` for arrays.
+    """
+    if goal is not None:
+        return list(zip(tool, goal, strict=True))
+    if pitch is None:
         return []
-    a = T[:, :3, 0]
-    horizontal = task.P[:, :2].copy()
-    on_axis = np.hypot(horizontal[:, 0], horizontal[:, 1]) < 1e-9
-    horizontal[on_axis] = a[on_axis, :2]
-    rho = np.maximum(np.hypot(horizontal[:, 0], horizontal[:, 1]), 1e-12)
-    c, s = np.cos(task.pitch), np.sin(task.pitch)
-    return [(_lanes(a), (c * horizontal[:, 0] / rho, c * horizontal[:, 1] / rho, s))]
+    a = tool[0]  # the approach axis; its horizontal part stands in on the base axis
+    on_axis = xm.hypot(p[0], p[1]) < 1e-9
+    hx, hy = p[0] + on_axis * (a[0] - p[0]), p[1] + on_axis * (a[1] - p[1])
+    rho = xm.hypot(hx, hy) + 1e-300  # 0 only with a vertical approach on the base axis
+    c, s = xm.cos(pitch), xm.sin(pitch)
+    return [(a, (c * hx / rho, c * hy / rho, s))]
 
 
 def _lanes(M: F64) -> V:
