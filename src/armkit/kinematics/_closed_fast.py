@@ -275,20 +275,17 @@ def free_solver(
                 )
             elif not here:
                 out.append((way, q0, tx, a, d, ca, sa))
-        return found if here else _clamped(out, rho, tz, seed, found)
-
-    def _clamped(out: list[Way], rho: float, tz: float, seed: Q, found: Found) -> Found | None:
-        """Where no way reaches at want: the nearest turn u within reach (a clamp of cos u),
-        solved in that way and, if it reaches there too, in the other (link 3 mirrored)."""
-        best, pick = inf, (0.0, 0.0, 0.0)
+        if here:
+            return found
+        best, pick = inf, (0.0, 0.0, 0.0)  # else the nearest turn within reach: a clamp
         for way, _, tx, a, d, ca, sa in out:
             big = sqrt(a - l3sq)
-            k = l3_2 * big
-            if k < 1e-15 or (a - hi2) > k * (1.0 + 1e-12) or (a - lo2) < -k * (1.0 + 1e-12):
-                continue
-            c_lo, c_hi, c = (a - hi2) / k, (a - lo2) / k, d / k
-            cu = min(1.0, c_hi) if c > c_hi else max(-1.0, c_lo)  # cos u clamped
-            gap = abs(acos(cu) - acos(max(-1.0, min(1.0, c))))
+            k = l3_2 * big  # cos u = d / k, to be within [a - hi^2, a - lo^2] / k
+            e = a - hi2 if d < a - hi2 else a - lo2
+            if k < 1e-15 or not -k <= e <= k:
+                continue  # no u within reach in this way
+            cu, c = e / k, d / k
+            gap = abs(acos(cu) - acos(c if -1.0 <= c <= 1.0 else (1.0 if c > 0 else -1.0)))
             if gap < best:
                 su = sqrt(1.0 - cu * cu) if sa * tx - ca * tz >= 0.0 else -sqrt(1.0 - cu * cu)
                 best, pick = gap, (way, (cu * tx - su * tz) / big, (su * tx + cu * tz) / big)
