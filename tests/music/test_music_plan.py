@@ -82,7 +82,7 @@ def test_too_fast_a_piece_lists_every_late_note_with_its_times(arm: ArmModel) ->
 
 
 def test_a_lower_hover_buys_time(arm: ArmModel) -> None:
-    score = parse_notelist("tempo 140 ff C5 q C5 q", "t.txt")
+    score = parse_notelist("tempo 180 ff C5 q C5 q", "t.txt")
     perf = plan_performance(score, omx_layout(), arm, time_based_predictor(arm))
     check_performance(perf)
     first, second = perf.strikes

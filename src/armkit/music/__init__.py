@@ -46,7 +46,9 @@ from ._predict import JointProfile as JointProfile
 from ._predict import LinearMove as LinearMove
 from ._predict import Predictor as Predictor
 from ._predict import group_move_predictor as group_move_predictor
+from ._predict import Rebound as Rebound
 from ._predict import time_based_predictor as time_based_predictor
+from ._predict import timed_predictor as timed_predictor
 from ._predict import trapezoid_predictor as trapezoid_predictor
 from ._rtttl import parse_rtttl as parse_rtttl
 from ._score import Note as Note

@@ -29,7 +29,14 @@ from ._load import load_score
 from ._onsets import Contact, LatencyTable, OnsetStats, onset_stats
 from ._performance import Performance, check_performance
 from ._plan import plan_performance
-from ._predict import Predictor, group_move_predictor, time_based_predictor
+from ._predict import (
+    Predictor,
+    Rebound,
+    group_move_predictor,
+    rebound_of,
+    time_based_predictor,
+    timed_predictor,
+)
 from ._strike import StrikeParams
 
 if TYPE_CHECKING:
@@ -40,7 +47,11 @@ if TYPE_CHECKING:
 # [s]. These are the simulated servos' (armkit.sim: smart 10 ms, hobby 25 ms); a
 # calibration run on a real arm (``LatencyTable.from_run``) measures its own.
 SERVO_LAG = {"dynamixel": 0.010, "hobby": 0.025}
-REBOUND_MARGIN = 0.010  # the rebound is sent this long after the lagging contact [s]
+# The rebound is sent this long before the lagging head reaches the top [s]: the servos'
+# position loop carries the head on through the top for a few ms after it (the contact
+# lands as planned), and the sooner it turns the shorter it stays below the top
+# (measured in the simulator: 14-16 ms on the XM430s, 18-22 ms on the SSC-32's servos).
+REBOUND_LEAD = {"dynamixel": 0.002, "hobby": 0.005}
 F64 = NDArray[np.float64]
 MALLET = "mallet"  # the scene's pen that is the mallet (its tip_offset lengthens the tool)
 TAIL_S = 0.3  # time listened after the last command ends [s]
@@ -97,7 +108,7 @@ def play(
         ScoreError, RangeError, PerformanceError, UnreachableError, InputError: the
             piece cannot be played as asked; nothing has moved.
     """
-    table = latency or LatencyTable(default=predictor_for(arm, arm.model)[1])
+    table = latency or LatencyTable(default=predictor_for(arm, arm.model)[2])
     performance = prepare(arm, scene, file, on, tempo, transpose, table, params)
     if dry_run:
         return Played(performance, latency=table)
@@ -120,7 +131,7 @@ def prepare(
     layout = instruments(scene, on)
     score = load_score(file, shift)
     model = mallet_model(arm.model, scene)
-    predictor, lag = predictor_for(arm, model)
+    predictor, rebound, lag, lead = predictor_for(arm, model)
     start = arm.driver.read()
     try:
         perf = plan_performance(
@@ -128,11 +139,12 @@ def prepare(
             layout,
             model,
             predictor,
-            params=params or StrikeParams(rebound_delay=lag + REBOUND_MARGIN),
+            params=params or StrikeParams(rebound_delay=lag - lead),
             latency=latency or LatencyTable(default=lag),
             start=start,
             T_world_base=scene.T_world_base,
             tempo=factor,
+            rebound=rebound,
         )
     except RangeError as err:
         raise _in_all(err, shift) from None
@@ -212,15 +224,23 @@ class _GroupMoveServos(Protocol):
     def move_servo(self, name: str, pulse_us: float, *, speed: float, wait: bool) -> None: ...
 
 
-def predictor_for(arm: Arm, model: ArmModel) -> tuple[Predictor, float]:
+def predictor_for(arm: Arm, model: ArmModel) -> tuple[Predictor, Rebound, float, float]:
     """The motion model of the arm's servos (Dynamixel time-based profiles, or
     hobby-servo group moves, told apart by the driver's methods: music does not
-    import the drivers) and their lag [s]; InputError for a driver that cannot time
-    its moves."""
+    import the drivers), of their rebound (on Dynamixels a profile sent with its
+    duration: Profile Velocity and Acceleration set per strike), their lag [s] and
+    the ``REBOUND_LEAD`` [s]; InputError for a driver that cannot time its moves."""
     if isinstance(arm.driver, _ProfileServos):
-        return time_based_predictor(model), SERVO_LAG["dynamixel"]
+        kind = "dynamixel"
+        return (
+            time_based_predictor(model),
+            timed_predictor(model),
+            SERVO_LAG[kind],
+            REBOUND_LEAD[kind],
+        )
     if isinstance(arm.driver, _GroupMoveServos):
-        return group_move_predictor(model), SERVO_LAG["hobby"]
+        group = group_move_predictor(model)
+        return group, rebound_of(group), SERVO_LAG["hobby"], REBOUND_LEAD["hobby"]
     raise InputError(
         f"playing needs servos that time their moves (Dynamixel, SSC-32 or Maestro); the "
         f"{arm.model.name}'s {type(arm.driver).__name__} cannot land a strike on the beat"
@@ -253,7 +273,7 @@ def perform(arm: Arm, scene: Scene, perf: Performance) -> Played:
     try:
         for move in perf.moves:
             clock.sleep(max(0.0, begin + move.t - clock.now()))
-            if servo:
+            if servo or move.timed:
                 arm.driver.move(move.q, duration=move.profile.duration, wait=False)
             else:
                 arm.driver.move(move.q, speed=move.speed, wait=False)
