@@ -17,6 +17,11 @@ from ._layout import RangeError as RangeError
 from ._layout import Target as Target
 from ._layout import best_transpose as best_transpose
 from ._layout import map_notes as map_notes
+from ._latency import LatencyError as LatencyError
+from ._latency import calibrate as calibrate
+from ._latency import calibration_score as calibration_score
+from ._latency import load_latency as load_latency
+from ._latency import save_latency as save_latency
 from ._listen import Listener as Listener
 from ._listen import Surface as Surface
 from ._load import load_score as load_score
@@ -45,8 +50,8 @@ from ._plot import plot_onsets as plot_onsets
 from ._predict import JointProfile as JointProfile
 from ._predict import LinearMove as LinearMove
 from ._predict import Predictor as Predictor
-from ._predict import group_move_predictor as group_move_predictor
 from ._predict import Rebound as Rebound
+from ._predict import group_move_predictor as group_move_predictor
 from ._predict import time_based_predictor as time_based_predictor
 from ._predict import timed_predictor as timed_predictor
 from ._predict import trapezoid_predictor as trapezoid_predictor

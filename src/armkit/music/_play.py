@@ -26,6 +26,7 @@ from ..model import ArmModel
 from ._layout import Instrument, RangeError
 from ._listen import Listener
 from ._load import load_score
+from ._score import Score
 from ._onsets import Contact, LatencyTable, OnsetStats, onset_stats
 from ._performance import Performance, check_performance
 from ._plan import plan_performance
@@ -81,7 +82,7 @@ class Played:
 def play(
     arm: Arm,
     scene: Scene,
-    file: str | Path,
+    file: str | Path | Score,
     on: str | None = None,
     tempo: float | None = None,
     transpose: int | None = None,
@@ -96,7 +97,7 @@ def play(
         arm: the arm, holding the mallet (the scene's pen ``mallet``, if any, says how
             much longer it makes the tool [m]).
         scene: the instruments (``armkit.scene``), in the scene frame.
-        file: the score.  on: play on this instrument only (its name in the scene).
+        file: the score (a file, or a Score).  on: play on this instrument only.
         tempo: speed factor (0.8 = 80 %, slower), default 1.
         transpose: semitones to move pitched notes by, default 0.
         dry_run: plan and check only; nothing moves.
@@ -118,7 +119,7 @@ def play(
 def prepare(
     arm: Arm,
     scene: Scene,
-    file: str | Path,
+    file: str | Path | Score,
     on: str | None = None,
     tempo: float | None = None,
     transpose: int | None = None,
@@ -129,7 +130,7 @@ def prepare(
     factor = _tempo(tempo)
     shift = _transpose(transpose)
     layout = instruments(scene, on)
-    score = load_score(file, shift)
+    score = file.transposed(shift) if isinstance(file, Score) else load_score(file, shift)
     model = mallet_model(arm.model, scene)
     predictor, rebound, lag, lead = predictor_for(arm, model)
     start = arm.driver.read()
