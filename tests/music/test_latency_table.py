@@ -30,17 +30,17 @@ def test_a_table_reads_back_as_written(tmp_path: Path) -> None:
             "default_ms = 10\n[delays_ms.xylophone]\n72 = 'fast'\n",
             ":3: delays_ms.xylophone.72",
             "number of milliseconds",
-        ),  # fmt: skip
+        ),
         (
             "default_ms = 10\n\n[delays_ms.xylophone]\n72 = 900\n",
             ":4: delays_ms.xylophone.72",
             "outside -500..500 ms",
-        ),  # fmt: skip
+        ),
         (
             "default_ms = 10\n[delays_ms.xylophone]\nC5 = 9\n",
             ":3: delays_ms.xylophone.C5",
             "MIDI note number",
-        ),  # fmt: skip
+        ),
         ("default_ms = 10\ndelay = 3\n", ":2: delay", "unknown key"),
         ("default_ms = nan\n", ":1: default_ms", "number of milliseconds"),
         ("default_ms = \n", ": not a TOML latency table", "line 1"),

@@ -11,17 +11,17 @@ sent at the planned times; in the simulator a ``Listener`` on the arm's World
 hears every contact the mallet makes.
 """
 
+from ._latency import LatencyError as LatencyError
+from ._latency import calibrate as calibrate
+from ._latency import calibration_score as calibration_score
+from ._latency import load_latency as load_latency
+from ._latency import save_latency as save_latency
 from ._layout import Bars as Bars
 from ._layout import DrumLike as DrumLike
 from ._layout import RangeError as RangeError
 from ._layout import Target as Target
 from ._layout import best_transpose as best_transpose
 from ._layout import map_notes as map_notes
-from ._latency import LatencyError as LatencyError
-from ._latency import calibrate as calibrate
-from ._latency import calibration_score as calibration_score
-from ._latency import load_latency as load_latency
-from ._latency import save_latency as save_latency
 from ._listen import Listener as Listener
 from ._listen import Surface as Surface
 from ._load import load_score as load_score

@@ -26,7 +26,6 @@ from ..model import ArmModel
 from ._layout import Instrument, RangeError
 from ._listen import Listener
 from ._load import load_score
-from ._score import Score
 from ._onsets import Contact, LatencyTable, OnsetStats, onset_stats
 from ._performance import Performance, check_performance
 from ._plan import plan_performance
@@ -38,6 +37,7 @@ from ._predict import (
     time_based_predictor,
     timed_predictor,
 )
+from ._score import Score
 from ._strike import StrikeParams
 
 if TYPE_CHECKING:
