@@ -161,3 +161,22 @@ def test_strike_params_are_checked() -> None:
         StrikeParams(hover=0.005, min_hover=0.01)
     with pytest.raises(ValueError, match="soft"):
         StrikeParams(soft=0.0)
+
+
+def test_a_timed_rebound_is_long_enough_from_anywhere_on_its_stroke(arm: ArmModel) -> None:
+    """The driver checks a rebound's duration from its own estimate of where the joints
+    are (somewhere on the stroke): the timed profile must be legal from every such pose."""
+    from armkit.model import move_time
+    from armkit.music import timed_predictor
+
+    rebound, rng = timed_predictor(arm), np.random.default_rng(7)
+    for _ in range(50):
+        hover, through = (rng.uniform(-0.5, 0.5, arm.dof) for _ in range(2))
+        share = rng.uniform(0.0, 1.0)
+        q_now = hover + share * (through - hover)
+        profile = rebound(q_now, hover, 1.0, np.vstack([hover, through]))
+        for s in np.linspace(0.0, 1.0, 11):  # every pose the driver may think it is at
+            asked = hover + s * (through - hover)
+            move_time(arm, asked, hover, speed=1.0, duration=profile.duration)  # no InputError
+        q, _, _ = profile.sample(np.array([0.0, profile.duration]))
+        assert np.allclose(q[0], q_now) and np.allclose(q[1], hover, atol=2 * math.pi / 4096)

@@ -214,17 +214,23 @@ def _schedule(
             cursor.problems.append(Problem(note, "low travel", detail=detail))
     speed = p.stroke_speed(note.velocity)
     cursor.moves.append(Move(o.stroke_start, o.poses.through, o.down, speed, "down", index))
-    rebound_at = note.onset - lag + p.rebound_delay
-    q_now = o.down.sample(np.array([rebound_at - o.stroke_start]))[0][0]
+    _rebound(servos, p, note.onset - lag + p.rebound_delay, target, o, cursor)
+    cursor.strikes.append(Strike(target, note.onset, o.poses.height, o.poses, o.speed, lag))
+    cursor.top, cursor.previous = top, note.onset
+
+
+def _rebound(
+    servos: _Servos, p: StrikeParams, at: float, target: Target, o: _Option, cursor: _Cursor
+) -> None:
+    """Append the rebound of ``o``'s stroke, sent at ``at`` [s], back to its hover (a
+    timed move: see ``timed_predictor``), and move the cursor to its end."""
+    q_now = o.down.sample(np.array([at - o.stroke_start]))[0][0]
     ends = np.vstack([end_of(o.travel), end_of(o.down)])
     rebound = servos.rebound(q_now, o.poses.hover, p.travel_speed, ends)
-    cursor.moves.append(
-        Move(rebound_at, o.poses.hover, rebound, p.travel_speed, "rebound", index, True)
-    )
-    cursor.strikes.append(Strike(target, note.onset, o.poses.height, o.poses, o.speed, lag))
-    cursor.q, cursor.free, cursor.top = end_of(rebound), rebound_at + rebound.duration, top
-    cursor.previous = note.onset
-    cursor.rebound = _Rebounded(rebound_at, q_now, ends, target.key)
+    index = len(cursor.strikes)
+    cursor.moves.append(Move(at, o.poses.hover, rebound, p.travel_speed, "rebound", index, True))
+    cursor.q, cursor.free = end_of(rebound), at + rebound.duration
+    cursor.rebound = _Rebounded(at, q_now, ends, target.key)
 
 
 def end_of(profile: JointProfile) -> F64:

@@ -16,10 +16,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Protocol, runtime_checkable
-
-import numpy as np
-from numpy.typing import NDArray
+from typing import TYPE_CHECKING
 
 from .._errors import InputError, UnreachableError
 from ..model import ArmModel
@@ -29,31 +26,14 @@ from ._load import load_score
 from ._onsets import Contact, LatencyTable, OnsetStats, onset_stats
 from ._performance import Performance, check_performance
 from ._plan import plan_performance
-from ._predict import (
-    Predictor,
-    Rebound,
-    group_move_predictor,
-    rebound_of,
-    time_based_predictor,
-    timed_predictor,
-)
 from ._score import Score
+from ._servos import is_hobby, predictor_for
 from ._strike import StrikeParams
 
 if TYPE_CHECKING:
     from ..arm import Arm
     from ..scene import Scene
 
-# The servos' position loop: following a ramp, a servo lags it by its time constant
-# [s]. These are the simulated servos' (armkit.sim: smart 10 ms, hobby 25 ms); a
-# calibration run on a real arm (``LatencyTable.from_run``) measures its own.
-SERVO_LAG = {"dynamixel": 0.010, "hobby": 0.025}
-# The rebound is sent this long before the lagging head reaches the top [s]: the servos'
-# position loop carries the head on through the top for a few ms after it (the contact
-# lands as planned), and the sooner it turns the shorter it stays below the top
-# (measured in the simulator: 14-16 ms on the XM430s, 18-22 ms on the SSC-32's servos).
-REBOUND_LEAD = {"dynamixel": 0.002, "hobby": 0.005}
-F64 = NDArray[np.float64]
 MALLET = "mallet"  # the scene's pen that is the mallet (its tip_offset lengthens the tool)
 TAIL_S = 0.3  # time listened after the last command ends [s]
 
@@ -210,44 +190,6 @@ def mallet_model(model: ArmModel, scene: Scene) -> ArmModel:
     return model.with_tool_length(model.tool_length + extra) if extra else model
 
 
-@runtime_checkable
-class _ProfileServos(Protocol):
-    """A Dynamixel driver (``drivers.dynamixel``): one time-based profile per move."""
-
-    def to_ticks(self, q: F64) -> NDArray[np.int64]: ...
-    def relax(self) -> None: ...
-
-
-@runtime_checkable
-class _GroupMoveServos(Protocol):
-    """A hobby-servo driver (``drivers.servo``, SSC-32 or Maestro): one group move per move."""
-
-    def move_servo(self, name: str, pulse_us: float, *, speed: float, wait: bool) -> None: ...
-
-
-def predictor_for(arm: Arm, model: ArmModel) -> tuple[Predictor, Rebound, float, float]:
-    """The motion model of the arm's servos (Dynamixel time-based profiles, or
-    hobby-servo group moves, told apart by the driver's methods: music does not
-    import the drivers), of their rebound (on Dynamixels a profile sent with its
-    duration: Profile Velocity and Acceleration set per strike), their lag [s] and
-    the ``REBOUND_LEAD`` [s]; InputError for a driver that cannot time its moves."""
-    if isinstance(arm.driver, _ProfileServos):
-        kind = "dynamixel"
-        return (
-            time_based_predictor(model),
-            timed_predictor(model),
-            SERVO_LAG[kind],
-            REBOUND_LEAD[kind],
-        )
-    if isinstance(arm.driver, _GroupMoveServos):
-        group = group_move_predictor(model)
-        return group, rebound_of(group), SERVO_LAG["hobby"], REBOUND_LEAD["hobby"]
-    raise InputError(
-        f"playing needs servos that time their moves (Dynamixel, SSC-32 or Maestro); the "
-        f"{arm.model.name}'s {type(arm.driver).__name__} cannot land a strike on the beat"
-    )
-
-
 def check_moves(perf: Performance, scene: Scene) -> None:
     """UnreachableError naming the note if a pose of the piece puts a link into the
     table or a scene object (the mallet's own stroke through the bar excepted)."""
@@ -269,7 +211,7 @@ def perform(arm: Arm, scene: Scene, perf: Performance) -> Played:
     world = arm.world
     listener = Listener(perf.model, scene.instruments, scene.T_world_base)
     detach = world.attach(listener) if world is not None else None
-    clock, servo = arm.clock, _is_hobby(arm)
+    clock, servo = arm.clock, is_hobby(arm)
     begin = clock.now()
     try:
         for move in perf.moves:
@@ -290,10 +232,6 @@ def perform(arm: Arm, scene: Scene, perf: Performance) -> Played:
         return Played(perf)
     heard = tuple(_shifted(c, begin) for c in listener.contacts)
     return Played(perf, heard, tuple(listener.dwell), onset_stats(perf.contacts(), heard))
-
-
-def _is_hobby(arm: Arm) -> bool:
-    return isinstance(arm.driver, _GroupMoveServos)
 
 
 def _shifted(c: Contact, begin: float) -> Contact:

@@ -116,10 +116,10 @@ def timed_predictor(
     per_rad = turn / (2.0 * math.pi)
 
     def predict(q0: F64, q1: F64, speed: float, around: F64) -> JointProfile:
-        start = np.asarray(q0, dtype=np.float64)
-        goal = np.rint(np.asarray(q1, dtype=np.float64) * per_rad) / per_rad
+        start, asked = np.asarray(q0, dtype=np.float64), np.asarray(q1, dtype=np.float64)
+        goal = np.rint(asked * per_rad) / per_rad  # where the servos go; the driver times `asked`
         poses = np.vstack([start, np.asarray(around, dtype=np.float64).reshape(-1, start.size)])
-        far = np.max(np.abs(poses - goal), axis=0)
+        far = np.max(np.maximum(np.abs(poses - goal), np.abs(poses - asked)), axis=0)
         steps = max(1, math.ceil(float(np.max(far / (v_max * speed))) / tick - 1e-9))
         ramp = min(round(ramp_time(steps * tick, goal - start, a_max) / tick), steps // 2)
         return ramped_line(start, goal, steps * tick, ramp * tick)
