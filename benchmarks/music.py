@@ -63,7 +63,7 @@ def row(arm_name: str, tune: Path, tempo: float, refused: int) -> str:
     return (
         f"{arm_name:18s} {tune.name:18s} {tempo:5.2f} {len(first.performance.strikes):5d} "
         f"{refused:7d} {s.rms * 1e3:6.2f} {s.max * 1e3:6.2f} {len(s.missed):6d} "
-        f"{len(s.extra):5d} {max(first.dwell, default=0.0) * 1e3:7.0f} "
+        f"{len(s.extra):5d} {max(first.dwell, default=0.0) * 1e3:9.1f} "
         f"{again.rms * 1e3:7.2f} {again.max * 1e3:7.2f} {wall:6.1f}"
     )
 
@@ -71,7 +71,7 @@ def row(arm_name: str, tune: Path, tempo: float, refused: int) -> str:
 def main() -> None:
     print(
         f"{'arm':18s} {'tune':18s} {'tempo':>5s} {'notes':>5s} {'refused':>7s} "
-        f"{'rms ms':>6s} {'max ms':>6s} {'missed':>6s} {'extra':>5s} {'rest ms':>7s} "
+        f"{'rms ms':>6s} {'max ms':>6s} {'missed':>6s} {'extra':>5s} {'on bar ms':>9s} "
         f"{'cal rms':>7s} {'cal max':>7s} {'wall s':>6s}"
     )
     for arm_name in ARMS:
@@ -82,7 +82,7 @@ def main() -> None:
                 print(row(arm_name, tune, factor, refused), flush=True)
     print(
         "tempo: factor of the written tempo; refused: notes the planner refuses at the "
-        "written tempo; rest: longest time the mallet stayed below a bar top; cal: after "
+        "written tempo; on bar: longest time the mallet stayed below a bar top (ms); cal: after "
         "one calibration run (per-bar latency table)"
     )
 

@@ -82,7 +82,7 @@ def test_too_fast_a_piece_lists_every_late_note_with_its_times(arm: ArmModel) ->
 
 
 def test_a_lower_hover_buys_time(arm: ArmModel) -> None:
-    score = parse_notelist("tempo 140 ff C5 q C5 q", "t.txt")
+    score = parse_notelist("tempo 180 ff C5 q C5 q", "t.txt")
     perf = plan_performance(score, omx_layout(), arm, time_based_predictor(arm))
     check_performance(perf)
     first, second = perf.strikes
@@ -161,3 +161,22 @@ def test_strike_params_are_checked() -> None:
         StrikeParams(hover=0.005, min_hover=0.01)
     with pytest.raises(ValueError, match="soft"):
         StrikeParams(soft=0.0)
+
+
+def test_a_timed_rebound_is_long_enough_from_anywhere_on_its_stroke(arm: ArmModel) -> None:
+    """The driver checks a rebound's duration from its own estimate of where the joints
+    are (somewhere on the stroke): the timed profile must be legal from every such pose."""
+    from armkit.model import move_time
+    from armkit.music import timed_predictor
+
+    rebound, rng = timed_predictor(arm), np.random.default_rng(7)
+    for _ in range(50):
+        hover, through = (rng.uniform(-0.5, 0.5, arm.dof) for _ in range(2))
+        share = rng.uniform(0.0, 1.0)
+        q_now = hover + share * (through - hover)
+        profile = rebound(q_now, hover, 1.0, np.vstack([hover, through]))
+        for s in np.linspace(0.0, 1.0, 11):  # every pose the driver may think it is at
+            asked = hover + s * (through - hover)
+            move_time(arm, asked, hover, speed=1.0, duration=profile.duration)  # no InputError
+        q, _, _ = profile.sample(np.array([0.0, profile.duration]))
+        assert np.allclose(q[0], q_now) and np.allclose(q[1], hover, atol=2 * math.pi / 4096)

@@ -20,7 +20,7 @@ TUNES = Path(__file__).parents[2] / "examples" / "music"
 SCENE = load_scene("xylophone")
 
 
-@pytest.mark.parametrize(("arm_name", "tempo"), [("openmanipulator_x", 0.9), ("lynx6", 1.0)])
+@pytest.mark.parametrize(("arm_name", "tempo"), [("openmanipulator_x", 1.0), ("lynx6", 1.0)])
 def test_the_heard_notes_are_the_scores_on_the_beat(arm_name: str, tempo: float) -> None:
     with Arm(arm_name, "sim", world=World(), scene=SCENE) as arm:
         played = play(arm, SCENE, TUNES / "ode_to_joy.mid", tempo=tempo)
@@ -29,7 +29,7 @@ def test_the_heard_notes_are_the_scores_on_the_beat(arm_name: str, tempo: float)
     assert played.stats is not None
     assert played.stats.rms < 2e-3 and played.stats.max < 5e-3  # simulated time
     assert not played.stats.missed and not played.stats.extra
-    assert max(played.dwell) < 0.15  # the mallet rebounds, never rests on a bar
+    assert 0 < max(played.dwell) <= 0.025  # the mallet rebounds, never rests on a bar
     planned = [s.time - played.performance.offset for s in played.performance.strikes]
     assert planned == pytest.approx([n.onset / tempo for n in score.notes])
 

@@ -20,7 +20,8 @@ EPILOG = (
     "C4..B5, and a snare). Scores: MIDI (.mid, .midi), RTTTL (.rtttl) or a note list "
     "(.txt: 'tempo 120' then notes such as 'C4 q  E4 e  R q'). Times in seconds, "
     "onset errors in milliseconds. A piece the arm cannot play in time is refused "
-    "with every late note listed and a --tempo that fits; nothing moves."
+    "with every late note listed and a --tempo that fits; nothing moves. Latency tables "
+    "(--calibrate, --latency) hold each bar's onset delay in milliseconds."
 )
 
 
@@ -28,12 +29,14 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     """Add ``play``."""
     text = "play a MIDI, RTTTL or note-list tune on the scene's xylophone and drums"
     p = sub.add_parser("play", help=text, description=text + ".", epilog=EPILOG)
-    p.add_argument("file", metavar="FILE", help="the score (.mid, .midi, .rtttl, .txt)")
+    p.add_argument("file", metavar="FILE", nargs="?", help="the score (.mid, .midi, .rtttl, .txt); optional with --calibrate")  # fmt: skip
     p.add_argument("--on", metavar="NAME", help="play on this instrument only (its scene name)")
     p.add_argument("--tempo", type=float, metavar="FACTOR", help="speed factor of the piece, 0.1..4 (0.8 = 80 %% of the written tempo; default 1)")  # fmt: skip
     p.add_argument("--transpose", type=int, metavar="SEMITONES", help="move every pitched note by this many semitones, -48..48 (12 = an octave up)")  # fmt: skip
     p.add_argument("--wav", metavar="OUT", help="write the contacts the simulated mallet made as sound (.wav, 16-bit mono 44.1 kHz)")  # fmt: skip
     p.add_argument("--plot", metavar="OUT", help="plot planned against played onsets [s] and their errors [ms] (.png, .svg, .pdf)")  # fmt: skip
+    p.add_argument("--calibrate", metavar="OUT", help="first strike every bar once in the simulator, measure each bar's onset delay [ms] and write the table (.toml); then play FILE, if given, with it")  # fmt: skip
+    p.add_argument("--latency", metavar="TABLE", help="plan with this per-bar latency table (.toml, delays in ms, from --calibrate)")  # fmt: skip
     p.add_argument("--dry-run", action="store_true", help="plan and check only; print the plan, move nothing, write nothing")  # fmt: skip
     add_watch_options(p)
     p.set_defaults(func=_run)
@@ -44,22 +47,44 @@ def _run(args: argparse.Namespace) -> int:
 
     scene = _scene(args)
     outputs = _outputs(args)
+    table = music.load_latency(args.latency) if args.latency else None
     with watched_arm(args, scene) as arm:
         if (args.wav or args.plot) and not args.dry_run and arm.world is None:
             raise ArmkitError(
                 "--wav and --plot need the contacts the simulator hears; on hardware "
                 "record the arm with a microphone instead (drop --wav/--plot)"
             )
-        played = music.play(
-            arm, scene, Path(args.file), args.on, args.tempo, args.transpose, dry_run=True
-        )
+        if "calibrate" in outputs:
+            table = _calibrate(arm, scene, args, outputs["calibrate"], music)
+            if args.file is None:
+                return 0
+        played = _play(arm, scene, args, table, music, dry_run=True)
         _say_plan(played.performance)
         if args.dry_run:
             _say_strikes(played.performance)
             return 0
-        played = music.play(arm, scene, Path(args.file), args.on, args.tempo, args.transpose)
+        played = _play(arm, scene, args, table, music, dry_run=False)
     _report(played, outputs, music)
     return 0
+
+
+def _play(arm: Any, scene: Any, args: argparse.Namespace, table: Any, music: Any, dry_run: bool) -> Any:  # fmt: skip
+    file, on, tempo, shift = Path(args.file), args.on, args.tempo, args.transpose
+    return music.play(arm, scene, file, on, tempo, shift, dry_run=dry_run, latency=table)
+
+
+def _calibrate(arm: Any, scene: Any, args: argparse.Namespace, out: Path, music: Any) -> Any:
+    """Play the calibration pass, write its table to ``out``, say what it measured."""
+    if args.file is not None and not args.dry_run:  # the piece is checked before the pass
+        music.play(arm, scene, Path(args.file), args.on, args.tempo, args.transpose, dry_run=True)
+    table = music.calibrate(arm, scene, args.on)
+    music.save_latency(table, out)
+    delays = [d * 1000 for _, d in table.delays] or [table.default * 1000]
+    print(
+        f"calibrated {len(table.delays)} bars and drums: onset delay {min(delays):.2f}.."
+        f"{max(delays):.2f} ms; wrote {out}"
+    )
+    return table
 
 
 def _scene(args: argparse.Namespace) -> Any:
@@ -82,6 +107,10 @@ def _outputs(args: argparse.Namespace) -> dict[str, Path]:
     from ..music import check_output
 
     out = {}
+    if args.file is None and not args.calibrate:
+        raise ArmkitError("play needs a score FILE (or --calibrate OUT.toml to measure the bars)")
+    if args.calibrate:
+        out["calibrate"] = check_output(args.calibrate, (".toml",))
     if args.wav:
         out["wav"] = check_output(args.wav, (".wav",))
     if args.plot:

@@ -11,6 +11,11 @@ sent at the planned times; in the simulator a ``Listener`` on the arm's World
 hears every contact the mallet makes.
 """
 
+from ._latency import LatencyError as LatencyError
+from ._latency import calibrate as calibrate
+from ._latency import calibration_score as calibration_score
+from ._latency import load_latency as load_latency
+from ._latency import save_latency as save_latency
 from ._layout import Bars as Bars
 from ._layout import DrumLike as DrumLike
 from ._layout import RangeError as RangeError
@@ -45,8 +50,10 @@ from ._plot import plot_onsets as plot_onsets
 from ._predict import JointProfile as JointProfile
 from ._predict import LinearMove as LinearMove
 from ._predict import Predictor as Predictor
+from ._predict import Rebound as Rebound
 from ._predict import group_move_predictor as group_move_predictor
 from ._predict import time_based_predictor as time_based_predictor
+from ._predict import timed_predictor as timed_predictor
 from ._predict import trapezoid_predictor as trapezoid_predictor
 from ._rtttl import parse_rtttl as parse_rtttl
 from ._score import Note as Note

@@ -107,10 +107,10 @@ class Listener:
         last, self._last = self._last, (t, tip)
         if last is None:
             return
-        if self._below is not None:
-            self._rise(t, tip)
-            return
         t0, p0 = last
+        if self._below is not None:
+            self._rise(t0, p0, t, tip)
+            return
         for s in self._surfaces:
             top = float(s.centre[2])
             if p0[2] >= top > tip[2] and s.under(tip[:2]):
@@ -122,8 +122,14 @@ class Listener:
                 self._below = (s, when)
                 return
 
-    def _rise(self, t: float, tip: F64) -> None:
+    def _rise(self, t0: float, p0: F64, t: float, tip: F64) -> None:
+        """The head after a contact, from ``p0`` at ``t0`` to ``tip`` at ``t`` [s, m]: the
+        dwell grows while it is below the top (to the interpolated crossing back up); the
+        surface can be struck again once the head is ``REARM`` above it or off it."""
         surface, since = self._below  # type: ignore[misc]
-        self.dwell[-1] = t - since
-        if tip[2] > surface.centre[2] + REARM or not surface.under(tip[:2]):
+        top = float(surface.centre[2])
+        if p0[2] < top:
+            share = 1.0 if tip[2] < top else (top - p0[2]) / (tip[2] - p0[2])
+            self.dwell[-1] = t0 + share * (t - t0) - since
+        if tip[2] > top + REARM or not surface.under(tip[:2]):
             self._below = None

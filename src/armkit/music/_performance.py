@@ -27,6 +27,8 @@ class Move:
         t: when to send it [s].  q: goal [rad], shape (dof,).
         profile: the predicted motion from ``t`` on.  speed: its speed fraction.
         kind: ``"travel"``, ``"down"`` or ``"rebound"``.  strike: index of its strike.
+        timed: sent with its duration (``profile.duration``) rather than its speed: the
+            rebound, whose servos then ramp only as long as the time allows.
     """
 
     t: float
@@ -35,6 +37,7 @@ class Move:
     speed: float
     kind: str
     strike: int
+    timed: bool = False
 
 
 @dataclass(frozen=True)

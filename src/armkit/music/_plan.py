@@ -12,7 +12,7 @@ the time it has and the time it would need. Times are performance time [s]:
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -22,7 +22,7 @@ from ..model import ArmModel
 from ._layout import Instrument, Target, map_notes
 from ._onsets import LatencyTable
 from ._performance import Move, Performance, Problem, Strike
-from ._predict import JointProfile, Predictor
+from ._predict import JointProfile, Predictor, Rebound, rebound_of
 from ._score import Score
 from ._strike import StrikeParams, StrikePoses, contact, lowest_tip, strike_poses
 
@@ -40,7 +40,26 @@ class _Cursor:
     strikes: list[Strike] = field(default_factory=list)
     problems: list[Problem] = field(default_factory=list)
     previous: float | None = None
-    rebound: tuple[float, F64, tuple[str, int]] | None = None  # last rebound: when, from, bar
+    rebound: _Rebounded | None = None  # the last rebound
+
+
+@dataclass(frozen=True)
+class _Rebounded:
+    """The last rebound: sent at ``t`` [s] from ``q`` [rad] on ``key``'s bar, its stroke
+    between the poses ``ends`` [rad], shape (2, dof)."""
+
+    t: float
+    q: F64
+    ends: F64
+    key: tuple[str, int]
+
+
+@dataclass(frozen=True)
+class _Servos:
+    """How the servos move: ``move`` for travel and strokes, ``rebound`` for rebounds."""
+
+    move: Predictor
+    rebound: Rebound
 
 
 def plan_performance(
@@ -55,6 +74,7 @@ def plan_performance(
     start: ArrayLike | None = None,
     T_world_base: ArrayLike | None = None,
     tempo: float = 1.0,
+    rebound: Rebound | None = None,
 ) -> Performance:
     """Plan every strike of ``score`` on ``layout``.
 
@@ -67,6 +87,8 @@ def plan_performance(
         params: how to strike; latency: per-bar delays [s] from a calibration run.
         start: the arm's pose when the performance starts [rad], default home.
         T_world_base: the arm's base in the scene frame, shape (4, 4), default identity.
+        rebound: how a rebound moves (``timed_predictor(model)`` on Dynamixel servos: sent
+            with its duration, no slower ramp than the time allows), default ``predictor``'s.
 
     Returns:
         The Performance; ``check_performance`` refuses it if any note is infeasible.
@@ -79,9 +101,10 @@ def plan_performance(
     )
     begin = arm.home if start is None else np.asarray(start, dtype=np.float64).reshape(arm.dof)
     cursor = _Cursor(begin, -np.inf)
+    servos = _Servos(predictor, rebound or rebound_of(predictor))
     for target in map_notes(score.at_tempo(tempo) if tempo != 1.0 else score, layout):
         point = (T_base_world @ np.append(target.point, 1.0))[:3]
-        _plan_note(arm, predictor, p, target, point, delays.of(target.key), cursor)
+        _plan_note(arm, servos, p, target, point, delays.of(target.key), cursor)
     return _shifted(cursor, arm, score.source, tempo)
 
 
@@ -105,7 +128,7 @@ class _Option:
 
 def _plan_note(
     arm: ArmModel,
-    predictor: Predictor,
+    servos: _Servos,
     p: StrikeParams,
     target: Target,
     point: F64,
@@ -121,19 +144,19 @@ def _plan_note(
         except UnreachableError as exc:
             why = str(exc)
             continue
-        option = _option(arm, predictor, p, target, float(point[2]), lag, cursor, poses)
+        option = _option(arm, servos, p, target, float(point[2]), lag, cursor, poses)
         best = option or best
         if best is not None and best.fits:
             break
     if best is None:
         cursor.problems.append(Problem(target.note, "unreachable", detail=why))
     else:
-        _schedule(arm, predictor, p, target, float(point[2]), lag, cursor, best)
+        _schedule(arm, servos, p, target, float(point[2]), lag, cursor, best)
 
 
 def _option(
     arm: ArmModel,
-    predictor: Predictor,
+    servos: _Servos,
     p: StrikeParams,
     target: Target,
     top: float,
@@ -144,10 +167,13 @@ def _option(
     """The timing of a strike from ``poses``, or None if its stroke never reaches ``top``.
     On the bar of the last note, the last rebound goes straight to the new hover."""
     last = cursor.rebound
-    again = last is not None and last[2] == target.key
-    since, q_from = (last[0], last[1]) if last is not None and again else (cursor.free, cursor.q)
-    travel = predictor(q_from, poses.hover, p.travel_speed)
-    down = predictor(end_of(travel), poses.through, p.stroke_speed(target.note.velocity))
+    if last is not None and last.key == target.key:
+        since, again = last.t, True
+        travel = servos.rebound(last.q, poses.hover, p.travel_speed, last.ends)
+    else:
+        since, again = cursor.free, False
+        travel = servos.move(cursor.q, poses.hover, p.travel_speed)
+    down = servos.move(end_of(travel), poses.through, p.stroke_speed(target.note.velocity))
     hit = contact(arm, down, top)
     if hit is None:
         return None
@@ -158,7 +184,7 @@ def _option(
 
 def _schedule(
     arm: ArmModel,
-    predictor: Predictor,
+    servos: _Servos,
     p: StrikeParams,
     target: Target,
     top: float,
@@ -174,7 +200,7 @@ def _schedule(
     if o.again:  # the last rebound goes straight to this note's hover
         last = cursor.moves.pop()
         cursor.moves.append(
-            Move(last.t, o.poses.hover, o.travel, last.speed, last.kind, last.strike)
+            Move(last.t, o.poses.hover, o.travel, last.speed, last.kind, last.strike, True)
         )
     elif not np.isfinite(cursor.free):
         send = o.stroke_start - p.settle - o.travel.duration
@@ -188,14 +214,23 @@ def _schedule(
             cursor.problems.append(Problem(note, "low travel", detail=detail))
     speed = p.stroke_speed(note.velocity)
     cursor.moves.append(Move(o.stroke_start, o.poses.through, o.down, speed, "down", index))
-    rebound_at = note.onset - lag + p.rebound_delay
-    q_now = o.down.sample(np.array([rebound_at - o.stroke_start]))[0][0]
-    rebound = predictor(q_now, o.poses.hover, p.travel_speed)
-    cursor.moves.append(Move(rebound_at, o.poses.hover, rebound, p.travel_speed, "rebound", index))
+    _rebound(servos, p, note.onset - lag + p.rebound_delay, target, o, cursor)
     cursor.strikes.append(Strike(target, note.onset, o.poses.height, o.poses, o.speed, lag))
-    cursor.q, cursor.free, cursor.top = end_of(rebound), rebound_at + rebound.duration, top
-    cursor.previous = note.onset
-    cursor.rebound = (rebound_at, q_now, target.key)
+    cursor.top, cursor.previous = top, note.onset
+
+
+def _rebound(
+    servos: _Servos, p: StrikeParams, at: float, target: Target, o: _Option, cursor: _Cursor
+) -> None:
+    """Append the rebound of ``o``'s stroke, sent at ``at`` [s], back to its hover (a
+    timed move: see ``timed_predictor``), and move the cursor to its end."""
+    q_now = o.down.sample(np.array([at - o.stroke_start]))[0][0]
+    ends = np.vstack([end_of(o.travel), end_of(o.down)])
+    rebound = servos.rebound(q_now, o.poses.hover, p.travel_speed, ends)
+    index = len(cursor.strikes)
+    cursor.moves.append(Move(at, o.poses.hover, rebound, p.travel_speed, "rebound", index, True))
+    cursor.q, cursor.free = end_of(rebound), at + rebound.duration
+    cursor.rebound = _Rebounded(at, q_now, ends, target.key)
 
 
 def end_of(profile: JointProfile) -> F64:
@@ -216,4 +251,4 @@ def _shifted(cursor: _Cursor, arm: ArmModel, source: str, tempo: float) -> Perfo
 
 
 def _later(move: Move, offset: float) -> Move:
-    return Move(move.t + offset, move.q, move.profile, move.speed, move.kind, move.strike)
+    return replace(move, t=move.t + offset)

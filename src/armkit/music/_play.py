@@ -16,10 +16,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Protocol, runtime_checkable
-
-import numpy as np
-from numpy.typing import NDArray
+from typing import TYPE_CHECKING
 
 from .._errors import InputError, UnreachableError
 from ..model import ArmModel
@@ -29,19 +26,14 @@ from ._load import load_score
 from ._onsets import Contact, LatencyTable, OnsetStats, onset_stats
 from ._performance import Performance, check_performance
 from ._plan import plan_performance
-from ._predict import Predictor, group_move_predictor, time_based_predictor
+from ._score import Score
+from ._servos import is_hobby, predictor_for
 from ._strike import StrikeParams
 
 if TYPE_CHECKING:
     from ..arm import Arm
     from ..scene import Scene
 
-# The servos' position loop: following a ramp, a servo lags it by its time constant
-# [s]. These are the simulated servos' (armkit.sim: smart 10 ms, hobby 25 ms); a
-# calibration run on a real arm (``LatencyTable.from_run``) measures its own.
-SERVO_LAG = {"dynamixel": 0.010, "hobby": 0.025}
-REBOUND_MARGIN = 0.010  # the rebound is sent this long after the lagging contact [s]
-F64 = NDArray[np.float64]
 MALLET = "mallet"  # the scene's pen that is the mallet (its tip_offset lengthens the tool)
 TAIL_S = 0.3  # time listened after the last command ends [s]
 
@@ -70,7 +62,7 @@ class Played:
 def play(
     arm: Arm,
     scene: Scene,
-    file: str | Path,
+    file: str | Path | Score,
     on: str | None = None,
     tempo: float | None = None,
     transpose: int | None = None,
@@ -85,7 +77,7 @@ def play(
         arm: the arm, holding the mallet (the scene's pen ``mallet``, if any, says how
             much longer it makes the tool [m]).
         scene: the instruments (``armkit.scene``), in the scene frame.
-        file: the score.  on: play on this instrument only (its name in the scene).
+        file: the score (a file, or a Score).  on: play on this instrument only.
         tempo: speed factor (0.8 = 80 %, slower), default 1.
         transpose: semitones to move pitched notes by, default 0.
         dry_run: plan and check only; nothing moves.
@@ -97,7 +89,7 @@ def play(
         ScoreError, RangeError, PerformanceError, UnreachableError, InputError: the
             piece cannot be played as asked; nothing has moved.
     """
-    table = latency or LatencyTable(default=predictor_for(arm, arm.model)[1])
+    table = latency or LatencyTable(default=predictor_for(arm, arm.model)[2])
     performance = prepare(arm, scene, file, on, tempo, transpose, table, params)
     if dry_run:
         return Played(performance, latency=table)
@@ -107,7 +99,7 @@ def play(
 def prepare(
     arm: Arm,
     scene: Scene,
-    file: str | Path,
+    file: str | Path | Score,
     on: str | None = None,
     tempo: float | None = None,
     transpose: int | None = None,
@@ -118,9 +110,9 @@ def prepare(
     factor = _tempo(tempo)
     shift = _transpose(transpose)
     layout = instruments(scene, on)
-    score = load_score(file, shift)
+    score = file.transposed(shift) if isinstance(file, Score) else load_score(file, shift)
     model = mallet_model(arm.model, scene)
-    predictor, lag = predictor_for(arm, model)
+    predictor, rebound, lag, lead = predictor_for(arm, model)
     start = arm.driver.read()
     try:
         perf = plan_performance(
@@ -128,11 +120,12 @@ def prepare(
             layout,
             model,
             predictor,
-            params=params or StrikeParams(rebound_delay=lag + REBOUND_MARGIN),
+            params=params or StrikeParams(rebound_delay=lag - lead),
             latency=latency or LatencyTable(default=lag),
             start=start,
             T_world_base=scene.T_world_base,
             tempo=factor,
+            rebound=rebound,
         )
     except RangeError as err:
         raise _in_all(err, shift) from None
@@ -197,36 +190,6 @@ def mallet_model(model: ArmModel, scene: Scene) -> ArmModel:
     return model.with_tool_length(model.tool_length + extra) if extra else model
 
 
-@runtime_checkable
-class _ProfileServos(Protocol):
-    """A Dynamixel driver (``drivers.dynamixel``): one time-based profile per move."""
-
-    def to_ticks(self, q: F64) -> NDArray[np.int64]: ...
-    def relax(self) -> None: ...
-
-
-@runtime_checkable
-class _GroupMoveServos(Protocol):
-    """A hobby-servo driver (``drivers.servo``, SSC-32 or Maestro): one group move per move."""
-
-    def move_servo(self, name: str, pulse_us: float, *, speed: float, wait: bool) -> None: ...
-
-
-def predictor_for(arm: Arm, model: ArmModel) -> tuple[Predictor, float]:
-    """The motion model of the arm's servos (Dynamixel time-based profiles, or
-    hobby-servo group moves, told apart by the driver's methods: music does not
-    import the drivers) and their lag [s]; InputError for a driver that cannot time
-    its moves."""
-    if isinstance(arm.driver, _ProfileServos):
-        return time_based_predictor(model), SERVO_LAG["dynamixel"]
-    if isinstance(arm.driver, _GroupMoveServos):
-        return group_move_predictor(model), SERVO_LAG["hobby"]
-    raise InputError(
-        f"playing needs servos that time their moves (Dynamixel, SSC-32 or Maestro); the "
-        f"{arm.model.name}'s {type(arm.driver).__name__} cannot land a strike on the beat"
-    )
-
-
 def check_moves(perf: Performance, scene: Scene) -> None:
     """UnreachableError naming the note if a pose of the piece puts a link into the
     table or a scene object (the mallet's own stroke through the bar excepted)."""
@@ -248,12 +211,12 @@ def perform(arm: Arm, scene: Scene, perf: Performance) -> Played:
     world = arm.world
     listener = Listener(perf.model, scene.instruments, scene.T_world_base)
     detach = world.attach(listener) if world is not None else None
-    clock, servo = arm.clock, _is_hobby(arm)
+    clock, servo = arm.clock, is_hobby(arm)
     begin = clock.now()
     try:
         for move in perf.moves:
             clock.sleep(max(0.0, begin + move.t - clock.now()))
-            if servo:
+            if servo or move.timed:
                 arm.driver.move(move.q, duration=move.profile.duration, wait=False)
             else:
                 arm.driver.move(move.q, speed=move.speed, wait=False)
@@ -269,10 +232,6 @@ def perform(arm: Arm, scene: Scene, perf: Performance) -> Played:
         return Played(perf)
     heard = tuple(_shifted(c, begin) for c in listener.contacts)
     return Played(perf, heard, tuple(listener.dwell), onset_stats(perf.contacts(), heard))
-
-
-def _is_hobby(arm: Arm) -> bool:
-    return isinstance(arm.driver, _GroupMoveServos)
 
 
 def _shifted(c: Contact, begin: float) -> Contact:

@@ -39,6 +39,20 @@ class JointProfile(Protocol):
 
 
 Predictor = Callable[[F64, F64, float], JointProfile]
+# (q0, q1, speed, around) -> the rebound's motion from q0 to q1 [rad], sent with a
+# duration long enough from any pose of ``around`` (shape (k, dof): the stroke's ends,
+# where the driver may think the joints are); see ``timed_predictor``.
+Rebound = Callable[[F64, F64, float, F64], JointProfile]
+
+
+def rebound_of(predictor: Predictor) -> Rebound:
+    """The rebound of servos whose every move is timed as ``predictor`` says (hobby
+    servos' group moves): the same move from ``q0``, ``around`` unused."""
+
+    def predict(q0: F64, q1: F64, speed: float, around: F64) -> JointProfile:
+        return predictor(q0, q1, speed)
+
+    return predict
 
 
 @dataclass(frozen=True)
@@ -81,6 +95,34 @@ def time_based_predictor(
         steps = max(1, math.ceil(fastest / tick - 1e-9))
         ramp = min(round(ramp_time(fastest, goal - start, a_max) / tick), steps // 2) * tick
         return ramped_line(start, goal, steps * tick, ramp)
+
+    return predict
+
+
+def timed_predictor(
+    model: ArmModel, tick: float = 0.001, ticks_per_turn: int | None = None
+) -> Rebound:
+    """Dynamixel time-based profiles sent with a duration (``driver.move(q, duration=T)``),
+    the rebound's: ``(q0, q1, speed, around) -> JointProfile`` from ``q0`` to ``q1``
+    [rad] in the least time T that keeps every joint within ``speed`` x its maximum
+    velocity moving at constant speed from ``q0`` and from every pose of ``around``
+    (shape (k, dof): the driver checks the duration from its own estimate of where the
+    joints are, on the stroke between its ends), rounded up to ``tick`` [s]; the servos ramp as the acceleration limits
+    allow in T (``ramp_time``: no ramp when T is shorter than any ramp needs, a step in
+    velocity the servos' own position loop smooths, as a time-based profile with
+    Profile Acceleration 0 does)."""
+    v_max, a_max = limits(model)
+    turn = ticks_per_turn or int(model.drivers.get("dynamixel", {}).get("ticks_per_turn", 4096))
+    per_rad = turn / (2.0 * math.pi)
+
+    def predict(q0: F64, q1: F64, speed: float, around: F64) -> JointProfile:
+        start, asked = np.asarray(q0, dtype=np.float64), np.asarray(q1, dtype=np.float64)
+        goal = np.rint(asked * per_rad) / per_rad  # where the servos go; the driver times `asked`
+        poses = np.vstack([start, np.asarray(around, dtype=np.float64).reshape(-1, start.size)])
+        far = np.max(np.maximum(np.abs(poses - goal), np.abs(poses - asked)), axis=0)
+        steps = max(1, math.ceil(float(np.max(far / (v_max * speed))) / tick - 1e-9))
+        ramp = min(round(ramp_time(steps * tick, goal - start, a_max) / tick), steps // 2)
+        return ramped_line(start, goal, steps * tick, ramp * tick)
 
     return predict
 

@@ -1,0 +1,80 @@
+"""Which servos an arm has, as music needs to know them: how their moves are timed
+(the planner's predictors), how long their position loop lags a ramp, and when a
+rebound is sent. Told apart by the driver's methods: music does not import the
+drivers."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Protocol, runtime_checkable
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .._errors import InputError
+from ..model import ArmModel
+from ._predict import (
+    Predictor,
+    Rebound,
+    group_move_predictor,
+    rebound_of,
+    time_based_predictor,
+    timed_predictor,
+)
+
+if TYPE_CHECKING:
+    from ..arm import Arm
+
+F64 = NDArray[np.float64]
+
+# The servos' position loop: following a ramp, a servo lags it by its time constant
+# [s]. These are the simulated servos' (armkit.sim: smart 10 ms, hobby 25 ms); a
+# calibration run on a real arm (``LatencyTable.from_run``) measures its own.
+SERVO_LAG = {"dynamixel": 0.010, "hobby": 0.025}
+# The rebound is sent this long before the lagging head reaches the top [s]: the servos'
+# position loop carries the head on through the top for a few ms after it (the contact
+# lands as planned), and the sooner it turns the shorter it stays below the top
+# (measured in the simulator: 14-16 ms on the XM430s, 18-22 ms on the SSC-32's servos).
+REBOUND_LEAD = {"dynamixel": 0.002, "hobby": 0.005}
+
+
+@runtime_checkable
+class _ProfileServos(Protocol):
+    """A Dynamixel driver (``drivers.dynamixel``): one time-based profile per move."""
+
+    def to_ticks(self, q: F64) -> NDArray[np.int64]: ...
+    def relax(self) -> None: ...
+
+
+@runtime_checkable
+class _GroupMoveServos(Protocol):
+    """A hobby-servo driver (``drivers.servo``, SSC-32 or Maestro): one group move per move."""
+
+    def move_servo(self, name: str, pulse_us: float, *, speed: float, wait: bool) -> None: ...
+
+
+def predictor_for(arm: Arm, model: ArmModel) -> tuple[Predictor, Rebound, float, float]:
+    """The motion model of the arm's servos (Dynamixel time-based profiles, or
+    hobby-servo group moves, told apart by the driver's methods: music does not
+    import the drivers), of their rebound (on Dynamixels a profile sent with its
+    duration: Profile Velocity and Acceleration set per strike), their lag [s] and
+    the ``REBOUND_LEAD`` [s]; InputError for a driver that cannot time its moves."""
+    if isinstance(arm.driver, _ProfileServos):
+        kind = "dynamixel"
+        return (
+            time_based_predictor(model),
+            timed_predictor(model),
+            SERVO_LAG[kind],
+            REBOUND_LEAD[kind],
+        )
+    if isinstance(arm.driver, _GroupMoveServos):
+        group = group_move_predictor(model)
+        return group, rebound_of(group), SERVO_LAG["hobby"], REBOUND_LEAD["hobby"]
+    raise InputError(
+        f"playing needs servos that time their moves (Dynamixel, SSC-32 or Maestro); the "
+        f"{arm.model.name}'s {type(arm.driver).__name__} cannot land a strike on the beat"
+    )
+
+
+def is_hobby(arm: Arm) -> bool:
+    """True when the arm's servos are hobby servos (every move a timed group move)."""
+    return isinstance(arm.driver, _GroupMoveServos)
