@@ -221,3 +221,10 @@ def test_corrupt_state_file_is_a_clear_error(owi: ArmModel, sim: OwiSim, config_
     path.write_text("{not json")
     with pytest.raises(ArmkitError, match=r"unreadable.*delete it"):
         TimedDriver(owi, open_device(sim.backend), sim.clock, path)
+
+
+def test_relax_switches_every_motor_off(driver: TimedDriver, sim: OwiSim) -> None:
+    """The tasks' 'motors off at the end' (002's search): on the OWI, stop (the light kept)."""
+    driver.set_light(True)
+    driver.relax()
+    assert sent(sim)[-1] == "000001"

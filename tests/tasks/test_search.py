@@ -56,6 +56,7 @@ def test_search_finds_picks_and_drops(arm_name: str, via: str) -> None:
     scene = load_scene("search_002")
     result = tasks.search(arm, scene, into="bin")
     assert result.found and result.via.startswith(via)
+    assert result.servos_off and result.lines()[-1] == "motors off"
     assert result.position is not None
     truth = scene.cube("object").position
     assert float(np.linalg.norm(result.position[:2] - truth[:2])) < 5e-3

@@ -42,7 +42,7 @@ class SearchResult:
         position: where its bottom face's centre is estimated, scene frame [m], (3,).
         readings: (angle [rad], output [V]) of every reading, in order.
         plan: the pick-and-drop plan carried out, or None.
-        servos_off: the servos were switched off at the end (False: the driver cannot).
+        servos_off: the motors were switched off at the end (False: the driver cannot).
         via: how the sensor was read.
     """
 
@@ -68,7 +68,7 @@ class SearchResult:
         )
         if self.plan is not None:
             out.append(f"picked it and dropped it: {self.plan.task}")
-        out.append("servos off" if self.servos_off else "servos left on (the driver cannot)")
+        out.append("motors off" if self.servos_off else "motors left holding (the driver cannot)")
         return out
 
 
@@ -195,7 +195,7 @@ def _check_inside(arm: Arm, plan: Plan, box: Container) -> None:
 
 
 def _rest(arm: Arm) -> bool:
-    """Back to the model's home, then the servos off if the driver can (002's uM-PWM1)."""
+    """Back to the model's home, then the motors off if the driver can (002's uM-PWM1)."""
     arm.home()
     relax = getattr(arm.driver, "relax", None)
     if callable(relax):

@@ -186,6 +186,11 @@ class TimedDriver:
         """Stop every motor now (the light keeps its state)."""
         self.motors.stop()
 
+    def relax(self) -> None:
+        """Every motor off: the OWI's DC motors hold nothing and run only during a move,
+        so this is ``stop`` (for the tasks that switch an arm off at the end)."""
+        self.motors.stop()
+
     def close(self) -> None:
         """Stop, save, release the device. Safe to call twice."""
         if self._closed:
