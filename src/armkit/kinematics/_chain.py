@@ -20,13 +20,8 @@ from numpy.typing import NDArray
 
 from .._errors import ModelError
 from ..model import ArmModel, JointFrame
-from ._closed_fast import (
-    FixedSolver,
-    FreeSolver,
-    Q,
-    fixed_solver,
-    free_solver,
-)
+from ._closed_fast import FixedSolver, Q, fixed_solver
+from ._closed_free import FreeSolver, free_solver
 from ._family import PlanarFamily, detect, wrist_range
 from ._pose import pitch_scalar
 from ._scalar import State, compile_state

@@ -1,8 +1,8 @@
 """The closed form for one target in plain floats: the scalar fast path of ``_closed``.
 
-Each solver binds a family arm's constants as locals of a closure: the math of
-``_closed`` and ``_pitch_range.nearest_reachable`` for one target, a few
-microseconds a call. Tests pin both to the vectorised forms.
+The solver binds a family arm's constants as locals of a closure: the math of
+``_closed`` for one target at one pitch, a few microseconds a call (without a
+pitch: ``_closed_free``). Tests pin it to the vectorised form.
 """
 
 from __future__ import annotations
@@ -15,8 +15,6 @@ import numpy as np
 
 from .._errors import Reason
 from ._family import PlanarFamily, planes
-from ._pose import pitch_scalar
-from ._scalar import State
 
 Q = tuple[float, ...]
 Found = list[tuple[float, Q]]  # (squared joint distance to the seed, solution)
@@ -24,7 +22,6 @@ _TWO_PI = 2.0 * math.pi
 _SLACK = 1e-9
 _STRAIGHT = 1.0 - 1e-12  # cos of the elbow nearer 1 than this: straight (or folded); the
 # tool point moves by 1e-13 m, and one elbow is found where rounding would make two
-_NEAR = 1e-8  # cos u this far outside the wrist's reach may still fit within _SLACK
 
 
 @dataclass
@@ -39,8 +36,6 @@ FixedSolver = Callable[[float, float, float, "float | None", Q, "Misses | None"]
 Elbows = Callable[
     [float, float, float, float, float, "float | None", float, Q, Found, "Misses | None"], None
 ]
-FreeSolver = Callable[[float, float, float, Q], "Found | None"]
-Way = tuple[float, float, float, float, float, float, float]  # way, q0, tx, a, d, cos, sin
 
 
 def miss(v: float, lo: float, hi: float, j: int, misses: Misses) -> None:
@@ -211,104 +206,3 @@ def _ways(
     if b.bad[0]:
         return "off_plane" if fam.base is None else "too_close"
     return tuple(zip(b.r.tolist(), b.q0.tolist(), strict=True))
-
-
-def free_solver(
-    fam: PlanarFamily, solvers: tuple[FixedSolver, Elbows], reach: tuple[float, float],
-    base_range: tuple[float, float], at_home: tuple[Q, float, State],
-) -> FreeSolver:  # fmt: skip
-    """free(x, y, z, seed): position only (base yaw + 3 planar joints), every solution at the
-    pitch nearest the seed's at which the wrist point is within the wrist ``reach`` =
-    (d_min, d_max) [m] of the first planar joint, unsorted: [] where a joint limit refuses
-    that pitch, None where no pitch is within reach. With u the turn of link 3 from the
-    line shoulder-target, d^2 = D^2 + L3^2 - 2 D L3 cos u: within reach for cos u in
-    [c_lo, c_hi], so the nearest pitch is a clamp (``_pitch_range.nearest_reachable``
-    for one target); the wrist point then follows from u without the pitch's sine."""
-    (solve, elbows), (home, home_pitch, _) = solvers, at_home
-    if fam.base is None or len(fam.planar) != 3 or fam.lateral != 0.0:
-        return lambda x, y, z, seed: solve(x, y, z, seed_pitch(seed, at_home), seed, None)
-    (c1x, c1z), (v3x, v3z), phi0 = fam.c1, fam.links[2], fam.phi0
-    l3, ang3, az, bs = math.hypot(v3x, v3z), math.atan2(v3z, v3x), fam.azimuth_r, fam.base_sign
-    lo2, hi2, l3sq = reach[0] ** 2, reach[1] ** 2, l3 * l3
-    (lo0, hi0), pi, tp, inf = base_range, math.pi, _TWO_PI, math.inf
-    atan2, acos, rem, sqrt, cos, sin = (
-        math.atan2,
-        math.acos,
-        math.remainder,
-        math.sqrt,
-        math.cos,
-        math.sin,
-    )
-    mid, full = 0.5 * (lo0 + hi0), hi0 - lo0 >= _TWO_PI - 1e-9  # full: both ways always face
-    c_k, s_k, l3_2 = math.cos(phi0 - ang3), math.sin(phi0 - ang3), 2.0 * l3
-    c2k, s2k = math.cos(2.0 * (phi0 - ang3)), math.sin(2.0 * (phi0 - ang3))
-    home_cs = math.cos(home_pitch), math.sin(home_pitch)
-
-    def free(x: float, y: float, z: float, seed: Q) -> Found | None:
-        if seed is home or seed == home:
-            want, (cw, sw) = home_pitch, home_cs
-        else:
-            want = seed_pitch(seed, at_home)
-            cw, sw = cos(want), sin(want)
-        rho = sqrt(x * x + y * y)
-        if rho < 1e-9:
-            return solve(x, y, z, want, seed, None)  # on the base axis: at the seed's pitch
-        heading, tz = bs * (atan2(y, x) - az), z - c1z
-        found: Found = []
-        out: list[Way] = []
-        tz2, here = tz * tz + l3sq, False
-        # per way, facing the target (+) and turned back (-): link 3's direction and the
-        # plane turn at want; within reach where 2 L3 D cos u lies in [D^2 + L3^2 - hi^2, ...]
-        for way, ca, sa, turn in (
-            (1.0, cw * c_k + sw * s_k, sw * c_k - cw * s_k, want - phi0),
-            (-1.0, sw * s_k - cw * c_k, sw * c_k + cw * s_k, pi - want - phi0),
-        ):
-            q0 = heading if way > 0.0 else heading + bs * pi
-            if not full and not lo0 - 1e-9 <= rem(q0 - mid, tp) + mid <= hi0 + 1e-9:
-                continue
-            tx = way * rho - c1x
-            a, d = tx * tx + tz2, l3_2 * (ca * tx + sa * tz)
-            if a - hi2 <= d <= a - lo2:
-                here = True
-                elbows(
-                    way * rho, q0, tx - l3 * ca, tz - l3 * sa, turn, None, rho, seed, found, None
-                )
-            elif not here:
-                out.append((way, q0, tx, a, d, ca, sa))
-        if here:
-            return found
-        best, pick = inf, (0.0, 0.0, 0.0)  # else the nearest turn within reach: a clamp
-        for way, _, tx, a, d, ca, sa in out:
-            big = sqrt(a - l3sq)
-            k = l3_2 * big  # cos u = d / k, to be within [a - hi^2, a - lo^2] / k
-            e = a - hi2 if d < a - hi2 else a - lo2
-            if k < 1e-15 or not -k <= e <= k:
-                continue  # no u within reach in this way
-            cu, c = e / k, d / k
-            gap = abs(acos(cu) - acos(c if -1.0 <= c <= 1.0 else (1.0 if c > 0 else -1.0)))
-            if gap < best:
-                su = sqrt(1.0 - cu * cu) if sa * tx - ca * tz >= 0.0 else -sqrt(1.0 - cu * cu)
-                best, pick = gap, (way, (cu * tx - su * tz) / big, (su * tx + cu * tz) / big)
-        if best == inf:
-            return None
-        way_p, px, pz = pick  # at its pitch the other way's link 3 is mirrored: pi - 2k - angle
-        for way, q0, tx, a, _, _, _ in out:
-            dx, dz = (px, pz) if way == way_p else (pz * s2k - px * c2k, pz * c2k + px * s2k)
-            d = l3_2 * (dx * tx + dz * tz)
-            if way == way_p or a - hi2 - _NEAR <= d <= a - lo2 + _NEAR:
-                turn = atan2(dz, dx) - ang3
-                elbows(
-                    way * rho, q0, tx - l3 * dx, tz - l3 * dz, turn, None, rho, seed, found, None
-                )
-        return found
-
-    return free
-
-
-def seed_pitch(seed: Q, at_home: tuple[Q, float, State]) -> float:
-    """The tool's pitch [rad] at joint angles ``seed`` [rad]."""
-    home, home_pitch, state = at_home
-    if seed is home or seed == home:
-        return home_pitch
-    st = state(list(seed))
-    return pitch_scalar(st.R[0], st.p)

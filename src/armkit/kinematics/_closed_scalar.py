@@ -15,7 +15,8 @@ import numpy as np
 from .._errors import Reason, UnreachableError
 from .._inputs import brief, mm
 from ._chain import Chain
-from ._closed_fast import Found, Misses, Q, seed_pitch
+from ._closed_fast import Found, Misses, Q
+from ._closed_free import seed_pitch
 from ._family import PlanarFamily
 from ._pitch_range import limited_pitch
 
