@@ -74,14 +74,7 @@ def ik(
         p = x, y, z = point(position)
     if pitch is not None and not (type(pitch) is float and pitch - pitch == 0.0):
         pitch = angle(pitch, "pitch")  # else: None or a finite float already
-    if q_seed is None:
-        seed = chain.home
-    elif isinstance(q_seed, np.ndarray) and q_seed.shape == (chain.dof,) and q_seed.dtype == float:
-        seed = tuple(q_seed.tolist())  # the common case, checked without a new array
-        if not all(v - v == 0.0 for v in seed):
-            raise InputError("q_seed must be finite [rad], got NaN or infinity")
-    else:
-        seed = tuple(joints(q_seed, chain.dof, "q_seed", False).tolist())
+    seed = chain.home if q_seed is None else _seed(chain, q_seed)
     solve = chain.fixed
     if solve is not None and orientation is None and (method == "auto" or method == "analytic"):
         if pitch is None:
@@ -97,7 +90,25 @@ def ik(
             assert chain.family is not None
             raise refusal(chain, chain.family, p, pitch, seed)
         return IKResult.of(found, (p, pitch, None), chain)
-    if x * x + y * y + z * z > chain.reach2:
+    return _numeric_ik(chain, p, pitch, seed, orientation, method, (tol_m, tol_rad))
+
+
+def _seed(chain: Chain, q_seed: ArrayLike) -> tuple[float, ...]:
+    """``q_seed`` [rad] checked: dof finite floats."""
+    if isinstance(q_seed, np.ndarray) and q_seed.shape == (chain.dof,) and q_seed.dtype == float:
+        seed = tuple(q_seed.tolist())  # the common case, checked without a new array
+        if not all(v - v == 0.0 for v in seed):
+            raise InputError("q_seed must be finite [rad], got NaN or infinity")
+        return seed
+    return tuple(joints(q_seed, chain.dof, "q_seed", False).tolist())
+
+
+def _numeric_ik(
+    chain: Chain, p: tuple[float, float, float], pitch: float | None, seed: tuple[float, ...],
+    orientation: ArrayLike | None, method: Any, tols: tuple[float, float],
+) -> IKResult:  # fmt: skip
+    """``ik`` by a numeric method: tool point p [m], pitch [rad] or orientation."""
+    if p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > chain.reach2:
         raise too_far(chain, p, pitch)
     if orientation is None and pitch is None:
         pitch = chain.default_pitch
@@ -106,7 +117,7 @@ def ik(
     if R is not None and pitch is not None:
         raise InputError("give pitch or orientation, not both")
     goal = Goal(p, pitch, None if R is None else tuple(R.ravel().tolist()))
-    tol = (tolerance(tol_m, "tol_m"), tolerance(tol_rad, "tol_rad"))
+    tol = (tolerance(tols[0], "tol_m"), tolerance(tols[1], "tol_rad"))
     return solve_one(use, chain, goal, list(seed), *tol)
 
 
