@@ -51,7 +51,7 @@ def main(out: Path) -> None:
         path = save_latency(table, out.with_suffix(".latency.toml"))
         print(f"calibrated {len(delays)} bars: {min(delays):.2f}..{max(delays):.2f} ms -> {path}")
         try:
-            played = play(arm, scene, tune, tempo=0.9, latency=table)
+            played = play(arm, scene, tune, tempo=0.8, latency=table)
         except PerformanceError as err:  # too fast: every late note and a tempo that fits
             raise SystemExit(f"refused: {err}") from None
     stats = played.stats

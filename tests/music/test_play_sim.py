@@ -29,7 +29,9 @@ def test_the_heard_notes_are_the_scores_on_the_beat(arm_name: str, tempo: float)
     assert played.stats is not None
     assert played.stats.rms < 2e-3 and played.stats.max < 5e-3  # simulated time
     assert not played.stats.missed and not played.stats.extra
-    assert 0 < max(played.dwell) <= 0.025  # the mallet rebounds, never rests on a bar
+    # the mallet rebounds, never rests on a bar: the hobby servos' rebound turns as the
+    # head reaches the top (REBOUND_LEAD), their 25 ms position loop turns it in < 40 ms
+    assert 0 < max(played.dwell) <= (0.025 if arm_name == "openmanipulator_x" else 0.040)
     planned = [s.time - played.performance.offset for s in played.performance.strikes]
     assert planned == pytest.approx([n.onset / tempo for n in score.notes])
 
@@ -52,7 +54,7 @@ def test_a_tune_too_fast_is_refused_with_its_late_notes_and_nothing_moves() -> N
 
 def test_notes_off_the_xylophone_are_refused_and_nothing_moves(tmp_path: Path) -> None:
     tune = tmp_path / "high.txt"
-    tune.write_text("tempo 60\nC4 q C7 q\n")
+    tune.write_text("tempo 60\nC5 q C7 q\n")
     err = _unmoved("lynx6", tune)
     assert isinstance(err, RangeError) and [n.name for n in err.notes] == ["C7"]
 

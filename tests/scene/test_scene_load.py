@@ -195,7 +195,7 @@ v = [0.0, 0.0, 1.0]
 
 
 def test_instruments() -> None:
-    xylo = Xylophone(
+    xylo = Xylophone.interpolated(
         "x", np.array([0.2, -0.1, 0.05]), np.array([0.2, 0.1, 0.05]), 72, 8, (0.06, 0.02)
     )
     assert list(xylo.notes) == list(range(72, 80))

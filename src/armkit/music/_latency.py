@@ -127,17 +127,22 @@ def _line(lines: list[str], key: str, section: str) -> int:
 
 def calibration_score(scene: Scene, on: str | None = None) -> Score:
     """One strike on every bar and drum of the scene's instruments (only ``on``, if
-    given), ``CALIBRATION_GAP_S`` apart: the calibration pass."""
+    given), ``CALIBRATION_GAP_S`` apart: the calibration pass. From the lowest bar,
+    each next strike is on the nearest surface not yet struck (a glockenspiel's front
+    row, then its back row, then the drums), so no move crosses the whole layout."""
+    from ._listen import surfaces
     from ._play import instruments
 
-    notes: list[Note] = []
-    for inst in instruments(scene, on):
-        bars = getattr(inst, "notes", None)
-        pitches, drum = (list(bars), False) if bars is not None else ([inst.note], True)  # type: ignore[union-attr]
-        for pitch in pitches:
-            onset = len(notes) * CALIBRATION_GAP_S
-            notes.append(Note(onset, pitch, CALIBRATION_VELOCITY, CALIBRATION_GAP_S, drum))
-    return Score(tuple(notes), "calibration pass")
+    left = list(surfaces(instruments(scene, on)))
+    order = [left.pop(0)]
+    while left:
+        here = order[-1].centre
+        order.append(left.pop(min(range(len(left)), key=lambda k: math.dist(left[k].centre, here))))
+    notes = tuple(
+        Note(k * CALIBRATION_GAP_S, s.note, CALIBRATION_VELOCITY, CALIBRATION_GAP_S, s.drum)
+        for k, s in enumerate(order)
+    )
+    return Score(notes, "calibration pass")
 
 
 def calibrate(arm: Arm, scene: Scene, on: str | None = None) -> LatencyTable:

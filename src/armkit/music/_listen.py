@@ -40,36 +40,58 @@ class Surface:
     half: tuple[float, float]
     along: F64  # (2,): unit vector along the row (bars)
 
-    def under(self, xy: F64) -> bool:
-        """True when the point ``xy`` [m], shape (2,), is over this surface."""
+    def under(self, xy: F64, margin: float = 0.0) -> bool:
+        """True when the point ``xy`` [m], shape (2,), is over this surface (or within
+        ``margin`` [m] of its edge)."""
         d = xy - self.centre[:2]
         if self.drum:
-            return float(np.hypot(d[0], d[1])) <= self.half[0]
+            return float(np.hypot(d[0], d[1])) <= self.half[0] + margin
         u = float(d @ self.along)
         v = float(d[1] * self.along[0] - d[0] * self.along[1])
-        return abs(u) <= self.half[0] and abs(v) <= self.half[1]
+        return abs(u) <= self.half[0] + margin and abs(v) <= self.half[1] + margin
 
 
 def surfaces(layout: Sequence[Instrument]) -> tuple[Surface, ...]:
-    """Every bar and drum head of ``layout`` (the scene's Xylophone and Drum)."""
+    """Every bar and drum head of ``layout`` (the scene's Xylophone and Drum), each
+    bar at its own place, size and row direction."""
     out: list[Surface] = []
     for inst in layout:
         if isinstance(inst, Bars):
-            tops = [np.asarray(inst.bar_top(n), dtype=np.float64) for n in inst.notes]
-            along = tops[-1][:2] - tops[0][:2]
-            along = along / max(float(np.linalg.norm(along)), 1e-12)
-            length, width = getattr(inst, "bar_size", (0.04, 0.01))
-            half = (0.5 * float(width), 0.5 * float(length))
-            out += [
-                Surface(inst.name, n, False, t, half, along)
-                for n, t in zip(inst.notes, tops, strict=True)
-            ]
+            out += _bars(inst)
         elif isinstance(inst, DrumLike):
             x, y = np.asarray(inst.position, dtype=np.float64)[:2]
             radius = float(getattr(inst, "radius", 0.05))
             centre = np.array([x, y, float(inst.top_z)])
             out.append(Surface(inst.name, inst.note, True, centre, (radius, radius), np.eye(2)[0]))
     return tuple(out)
+
+
+def _bars(inst: Bars) -> list[Surface]:
+    """The bars of ``inst``: sizes and row directions from the scene's Xylophone
+    (``bar_size(note)``, ``bar_row(note)``); a plain ``Bars`` gets 40 x 10 mm bars
+    along the line from its lowest bar to its highest."""
+    tops = [np.asarray(inst.bar_top(n), dtype=np.float64) for n in inst.notes]
+    line = tops[-1][:2] - tops[0][:2]
+    row = float(np.arctan2(line[1], line[0]))
+    size_of, row_of = getattr(inst, "bar_size", None), getattr(inst, "bar_row", None)
+    out = []
+    for note, top in zip(inst.notes, tops, strict=True):
+        length, width = size_of(note) if callable(size_of) else (0.04, 0.01)
+        angle = float(row_of(note)) if callable(row_of) else row
+        along = np.array([np.cos(angle), np.sin(angle)])
+        out.append(Surface(inst.name, note, False, top, (0.5 * width, 0.5 * length), along))
+    return out
+
+
+def height_over(found: Sequence[Surface], points: F64, margin: float) -> float:
+    """Smallest height [m] of ``points`` (scene frame [m], shape (N, 3)) above the top
+    of a surface they are over (within ``margin`` [m] of its edge); inf over none."""
+    lowest = np.inf
+    for p in points:
+        for s in found:
+            if s.under(p[:2], margin):
+                lowest = min(lowest, float(p[2] - s.centre[2]))
+    return float(lowest)
 
 
 @dataclass

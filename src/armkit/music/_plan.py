@@ -20,11 +20,12 @@ from numpy.typing import ArrayLike, NDArray
 from .._errors import UnreachableError
 from ..model import ArmModel
 from ._layout import Instrument, Target, map_notes
+from ._listen import Surface, height_over, surfaces
 from ._onsets import LatencyTable
 from ._performance import Move, Performance, Problem, Strike
 from ._predict import JointProfile, Predictor, Rebound, rebound_of
 from ._score import Score
-from ._strike import StrikeParams, StrikePoses, contact, lowest_tip, strike_poses
+from ._strike import StrikeParams, StrikePoses, contact, strike_poses, tip_path
 
 F64 = NDArray[np.float64]
 
@@ -35,12 +36,27 @@ class _Cursor:
 
     q: F64
     free: float
-    top: float = -np.inf
+    stage: _Stage
     moves: list[Move] = field(default_factory=list)
     strikes: list[Strike] = field(default_factory=list)
     problems: list[Problem] = field(default_factory=list)
     previous: float | None = None
     rebound: _Rebounded | None = None  # the last rebound
+
+
+@dataclass(frozen=True)
+class _Stage:
+    """The struck surfaces (scene frame [m]) and the arm's base in the scene frame,
+    shape (4, 4): what the stick must clear while it travels."""
+
+    surfaces: tuple[Surface, ...]
+    T_world_base: F64
+
+    def clearance(self, arm: ArmModel, travel: JointProfile, margin: float) -> float:
+        """Smallest height [m] of the stick's tip above a bar or drum it passes over
+        (within ``margin`` [m] of its edge) along ``travel``; inf over none."""
+        T = self.T_world_base
+        return height_over(self.surfaces, tip_path(arm, travel) @ T[:3, :3].T + T[:3, 3], margin)
 
 
 @dataclass(frozen=True)
@@ -96,11 +112,10 @@ def plan_performance(
     arm = model.with_tool_length(tool_length) if tool_length is not None else model
     p = params or StrikeParams()
     delays = latency or LatencyTable()
-    T_base_world = np.linalg.inv(
-        np.eye(4) if T_world_base is None else np.asarray(T_world_base, dtype=np.float64)
-    )
+    T = np.eye(4) if T_world_base is None else np.asarray(T_world_base, dtype=np.float64)
+    T_base_world = np.linalg.inv(T)
     begin = arm.home if start is None else np.asarray(start, dtype=np.float64).reshape(arm.dof)
-    cursor = _Cursor(begin, -np.inf)
+    cursor = _Cursor(begin, -np.inf, _Stage(surfaces(layout), T))
     servos = _Servos(predictor, rebound or rebound_of(predictor))
     for target in map_notes(score.at_tempo(tempo) if tempo != 1.0 else score, layout):
         point = (T_base_world @ np.append(target.point, 1.0))[:3]
@@ -151,7 +166,7 @@ def _plan_note(
     if best is None:
         cursor.problems.append(Problem(target.note, "unreachable", detail=why))
     else:
-        _schedule(arm, servos, p, target, float(point[2]), lag, cursor, best)
+        _schedule(arm, servos, p, target, lag, cursor, best)
 
 
 def _option(
@@ -187,7 +202,6 @@ def _schedule(
     servos: _Servos,
     p: StrikeParams,
     target: Target,
-    top: float,
     lag: float,
     cursor: _Cursor,
     o: _Option,
@@ -209,14 +223,14 @@ def _schedule(
         cursor.moves.append(
             Move(cursor.free, o.poses.hover, o.travel, p.travel_speed, "travel", index)
         )
-        if lowest_tip(arm, o.travel) < max(cursor.top, top) + p.clearance:
-            detail = "the stick passes too close to the bar tops on the way; raise the hover"
+        if cursor.stage.clearance(arm, o.travel, p.clearance) < p.clearance:
+            detail = "the stick passes too close to a bar or drum on the way; raise the hover"
             cursor.problems.append(Problem(note, "low travel", detail=detail))
     speed = p.stroke_speed(note.velocity)
     cursor.moves.append(Move(o.stroke_start, o.poses.through, o.down, speed, "down", index))
     _rebound(servos, p, note.onset - lag + p.rebound_delay, target, o, cursor)
     cursor.strikes.append(Strike(target, note.onset, o.poses.height, o.poses, o.speed, lag))
-    cursor.top, cursor.previous = top, note.onset
+    cursor.previous = note.onset
 
 
 def _rebound(

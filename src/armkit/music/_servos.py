@@ -33,8 +33,12 @@ SERVO_LAG = {"dynamixel": 0.010, "hobby": 0.025}
 # The rebound is sent this long before the lagging head reaches the top [s]: the servos'
 # position loop carries the head on through the top for a few ms after it (the contact
 # lands as planned), and the sooner it turns the shorter it stays below the top
-# (measured in the simulator: 14-16 ms on the XM430s, 18-22 ms on the SSC-32's servos).
-REBOUND_LEAD = {"dynamixel": 0.002, "hobby": 0.005}
+# (measured in the simulator: 14-16 ms on the XM430s). The SSC-32's group move turns
+# the hobby servos' goal at once, so their rebound is sent as the head reaches the top:
+# sent 5 ms before, the Lynx6's slowest strokes (0.1 m/s at the head, bars 180-200 mm
+# from the base) turned 0.01 mm above or below the top and were missed or heard at a
+# tenth of their speed; sent on time the head goes 0.5-0.8 mm through (33-35 ms below).
+REBOUND_LEAD = {"dynamixel": 0.002, "hobby": 0.0}
 
 
 @runtime_checkable

@@ -138,10 +138,12 @@ def contact(model: ArmModel, profile: JointProfile, top_z: float) -> tuple[float
     return hi, speed
 
 
-def lowest_tip(model: ArmModel, profile: JointProfile, samples: int = 24) -> float:
-    """Lowest height [m, base frame] of the tool point along ``profile``."""
+def tip_path(model: ArmModel, profile: JointProfile, samples: int = 24) -> F64:
+    """The tool point [m, base frame] at ``samples`` even times along ``profile``,
+    shape (samples, 3)."""
     times = np.linspace(0.0, profile.duration, samples)
-    return float(np.min(fk(model, profile.sample(times)[0])[:, 2, 3]))
+    path: F64 = fk(model, profile.sample(times)[0])[:, :3, 3]
+    return path
 
 
 def _tip(model: ArmModel, profile: JointProfile, t: float) -> F64:

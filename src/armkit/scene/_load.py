@@ -10,12 +10,13 @@ from typing import Any
 import numpy as np
 
 from .._toml_files import resolve, shipped
+from ._bars import xylophones
 from ._errors import SceneError
 from ._fields import Entry, entries
 from ._objects import Board, Container, Cube, Hand, Pen, PenStand, Place
 from ._rotations import FACES, pose, rot_z
 from ._scene import Scene
-from ._sections import drums, sheets, xylophones
+from ._sections import drums, sheets
 from ._support import footprint, support_under
 
 _TOP = (

@@ -11,7 +11,7 @@ import numpy as np
 from .._errors import InputError
 from ..kinematics import fk_frames
 from ..model import ArmModel
-from ._instruments import Drum, Xylophone
+from ._instruments import Drum, Xylophone, note_name
 from ._rotations import rot_z
 from ._scene import Scene
 from ._support import Rect
@@ -110,11 +110,19 @@ def _instrument(ax: Any, inst: Xylophone | Drum) -> None:
         centre = (float(inst.position[0]) * 1000, float(inst.position[1]) * 1000)
         ax.add_patch(Circle(centre, inst.radius * 1000, fc="#f3d9d9", ec="brown"))
         return
-    row = inst.last_bar - inst.first_bar
-    angle = math.atan2(row[1], row[0])
     for note in inst.notes:
-        bar = Rect(inst.bar_top(note)[:2], (inst.bar_size[1] / 2, inst.bar_size[0] / 2), angle)
-        _poly(ax, bar.corners(), facecolor="#e8d08a", edgecolor="#8a6d3b")
+        length, width = inst.bar_size(note)
+        bar = Rect(inst.bar_top(note)[:2], (width / 2, length / 2), inst.bar_row(note))
+        sharp = note % 12 in (1, 3, 6, 8, 10)
+        _poly(ax, bar.corners(), facecolor="#b89a50" if sharp else "#e8d08a", edgecolor="#8a6d3b")
+        ax.annotate(
+            note_name(note),
+            bar.center * 1000,
+            ha="center",
+            va="center",
+            fontsize=6,
+            rotation=(math.degrees(inst.bar_row(note)) + 90.0 + 90.0) % 180.0 - 90.0,
+        )
 
 
 def _arm(ax: Any, scene: Scene, model: ArmModel | None) -> None:

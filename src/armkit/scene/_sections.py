@@ -1,18 +1,15 @@
-"""Scene file sections for drawing and music: sheets, xylophones, drums."""
+"""Scene file sections for drawing and music: sheets, drums (xylophones: ``_bars``)."""
 
 from __future__ import annotations
 
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from ._fields import Entry, entries
-from ._instruments import Drum, Xylophone
+from ._instruments import Drum
 from ._surfaces import PAPER_SIZES, Sheet
 
 _SHEET = ("name", "size", "width_mm", "height_mm", "landscape", "origin_mm", "u", "v")
-_XYLOPHONE = ("name", "first_bar_mm", "last_bar_mm", "lowest_note", "bar_count", "bar_size_mm")
 _DRUM = ("name", "position_mm", "radius_mm", "top_z_mm", "note")
 
 
@@ -39,20 +36,6 @@ def _sheet(e: Entry) -> Sheet:
     if abs(float(u @ v)) > 1e-6:
         raise e.fail("v", f"must be at right angles to u, got u = {u.tolist()}, v = {v.tolist()}")
     return Sheet(e.name(), e.point_mm("origin_mm"), u, v, width, height)
-
-
-def xylophones(path: Path, data: dict[str, Any]) -> tuple[Xylophone, ...]:
-    """``[[xylophones]]``: bar centres from ``first_bar_mm`` to ``last_bar_mm``."""
-    out = []
-    for e in entries(path, data, "xylophones", _XYLOPHONE):
-        first, last = e.point_mm("first_bar_mm"), e.point_mm("last_bar_mm")
-        count = e.integer("bar_count", lo=2, hi=88)
-        if float(np.linalg.norm(last - first)) < 1e-3:
-            raise e.fail("last_bar_mm", "must differ from first_bar_mm")
-        bar = e.sizes_mm("bar_size_mm", 2)
-        note = e.integer("lowest_note", lo=0, hi=127 - count + 1)
-        out.append(Xylophone(e.name(), first, last, note, count, (bar[0], bar[1])))
-    return tuple(out)
 
 
 def drums(path: Path, data: dict[str, Any]) -> tuple[Drum, ...]:

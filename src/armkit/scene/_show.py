@@ -70,6 +70,6 @@ def _cube(scene: Scene, c: Cube) -> str:
 
 def _instrument(i: Xylophone | Drum) -> str:
     if isinstance(i, Xylophone):
-        lo, hi = note_name(i.notes[0]), note_name(i.notes[-1])
-        return f"{i.name}: xylophone, {i.bar_count} bars {lo}..{hi}, from {mm(i.first_bar)} to {mm(i.last_bar)}"
+        bars = ", ".join(f"{note_name(n)} {mm(i.bar_top(n))}" for n in i.notes)
+        return f"{i.name}: xylophone, {len(i.notes)} bars (note, top centre): {bars}"
     return f"{i.name}: drum (note {i.note}), head r {i.radius * 1000:.1f} mm at {mm(i.head)}"

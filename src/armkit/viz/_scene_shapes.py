@@ -25,7 +25,7 @@ CONTAINER_COLOUR: RGB = (120, 150, 175)  # grey blue
 SHEET_COLOUR: RGB = (250, 250, 250)
 STAND_COLOUR: RGB = (90, 90, 100)
 PEN_COLOUR: RGB = (240, 200, 30)  # yellow
-BAR_COLOURS: tuple[RGB, ...] = ((170, 120, 60), (190, 140, 70))  # two woods, alternating
+BAR_COLOURS: tuple[RGB, ...] = ((190, 140, 70), (150, 100, 50))  # naturals, sharps (darker)
 DRUM_COLOUR: RGB = (180, 40, 40)
 PLACE_COLOUR: RGB = (60, 60, 60)
 HAND_COLOUR: RGB = (225, 180, 150)  # skin
@@ -126,19 +126,18 @@ def sheet_primitive(sheet: Sheet) -> Box:
 
 
 def instrument_primitives(instrument: Xylophone | Drum) -> list[Primitive]:
-    """A xylophone's bars (alternating woods) or a drum's body."""
+    """A xylophone's bars (naturals light, sharps dark), each at its place, or a drum's body."""
     if isinstance(instrument, Drum):
         head = instrument.head
         height = float(head[2] - instrument.position[2])
         centre = instrument.position + np.array([0.0, 0.0, height / 2])
         return [Cylinder(f"/scene/{instrument.name}", instrument.radius, height, pose(centre), DRUM_COLOUR)]  # fmt: skip
-    along = instrument.last_bar - instrument.first_bar
-    yaw = math.atan2(float(along[1]), float(along[0])) + math.pi / 2
-    length, width = instrument.bar_size
     shapes: list[Primitive] = []
-    for k, note in enumerate(instrument.notes):
+    for note in instrument.notes:
+        length, width = instrument.bar_size(note)
         top = instrument.bar_top(note)
         size = np.array([length, width * 0.9, 0.01])
-        T = pose(top - np.array([0.0, 0.0, 0.005]), yaw)
-        shapes.append(Box(f"/scene/{instrument.name}/bar_{note}", size, T, BAR_COLOURS[k % 2]))
+        T = pose(top - np.array([0.0, 0.0, 0.005]), instrument.bar_row(note) + math.pi / 2)
+        colour = BAR_COLOURS[int(note % 12 in (1, 3, 6, 8, 10))]
+        shapes.append(Box(f"/scene/{instrument.name}/bar_{note}", size, T, colour))
     return shapes
