@@ -47,9 +47,7 @@ def add_draw(sub: argparse._SubParsersAction[Any]) -> None:
     shapes = draw.add_subparsers(dest="shape", metavar="SHAPE", required=True)
     size = number("mm", 0.0, SIZE_MM, low_open=True)
     p = shapes.add_parser("circle", help="circle (or arc), horizontal or in the plane of --normal")
-    p.add_argument(
-        "--center", nargs=3, type=coordinate, required=True, metavar=("X", "Y", "Z"), help="[mm]"
-    )
+    _center_option(p)
     p.add_argument("--radius", type=size, required=True, metavar="MM", help="[mm]")
     p.add_argument("--start", type=angle, default=0.0, metavar="DEG", help="start angle (0 = +x)")
     p.add_argument(
@@ -66,9 +64,7 @@ def add_draw(sub: argparse._SubParsersAction[Any]) -> None:
         p.add_argument(name.lower(), type=coordinate, metavar=name, help=f"{name} [mm]")
     _draw_options(p)
     p = shapes.add_parser("rect", help="rectangle, horizontal or in the plane of --normal")
-    p.add_argument(
-        "--center", nargs=3, type=coordinate, required=True, metavar=("X", "Y", "Z"), help="[mm]"
-    )
+    _center_option(p)
     p.add_argument("--size", nargs=2, type=size, required=True, metavar=("W", "D"), help="[mm]")
     add_plane_option(p)
     _draw_options(p)
@@ -84,6 +80,12 @@ def add_draw(sub: argparse._SubParsersAction[Any]) -> None:
     p.add_argument("--size", type=size, required=True, metavar="MM", help="edge [mm]")
     _draw_options(p)
     add_file_commands(shapes)
+
+
+def _center_option(p: argparse.ArgumentParser) -> None:
+    p.add_argument(
+        "--center", nargs=3, type=coordinate, required=True, metavar=("X", "Y", "Z"), help="[mm]"
+    )
 
 
 def _draw_options(p: argparse.ArgumentParser) -> None:
