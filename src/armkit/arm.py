@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
 from pathlib import Path
 from types import TracebackType
 from typing import NamedTuple
@@ -17,6 +16,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ._arm_inputs import Timing, number, numbers, timing_of
 from ._closing import close_after
 from ._errors import DeviceError, InputError, UnreachableError
 from .connect import World, open_driver, world_of
@@ -48,14 +48,6 @@ class Position(NamedTuple):
     y: float
     z: float
     pitch: float
-
-
-@dataclass(frozen=True)
-class _Timing:
-    speed: float | None
-    duration: float | None
-    wait: bool
-    timeout: float | None
 
 
 class Arm:
@@ -116,10 +108,10 @@ class Arm:
         Raises:
             UnreachableError: the point (and pitch) is out of reach or the joint limits.
         """
-        pitch_rad = None if pitch is None else math.radians(_number(pitch, "pitch [deg]"))
-        target = _numbers([x, y, z], "x, y, z [mm]") / 1000.0
+        pitch_rad = None if pitch is None else math.radians(number(pitch, "pitch [deg]"))
+        target = numbers([x, y, z], "x, y, z [mm]") / 1000.0
         q = ik(self._kin, target, pitch_rad, self.driver.read()).q
-        self._move(q, _timing(speed, duration, wait, timeout))
+        self._move(q, timing_of(speed, duration, wait, timeout))
 
     def move_joints(
         self,
@@ -132,7 +124,7 @@ class Arm:
     ) -> None:
         """Move joints to ``angles`` [deg]: one per joint in order, or a dict by name
         (joints not named stay where they are). Options as ``move_to``."""
-        self._move(self._joint_target(angles), _timing(speed, duration, wait, timeout))
+        self._move(self._joint_target(angles), timing_of(speed, duration, wait, timeout))
 
     def turn_to(self, joint: str, deg: float, *, speed: float | None = None) -> None:
         """Turn one joint to ``deg`` [deg]; the others stay."""
@@ -147,7 +139,7 @@ class Arm:
         """Open the gripper to ``width_mm`` [mm] (the grip point moves with it on
         scissor grippers). A gripper that is only open or closed (the OWI's) takes
         its closed or its open width and nothing in between (InputError)."""
-        width = check_grip(self.model, _number(width_mm, "grip width [mm]") / 1000.0)
+        width = check_grip(self.model, number(width_mm, "grip width [mm]") / 1000.0)
         g = self.model.gripper
         if g.kind == "timed" and not (
             abs(width - g.width_min) < 1e-12 or abs(width - g.width_max) < 1e-12
@@ -163,7 +155,7 @@ class Arm:
 
     def home(self, *, speed: float | None = None) -> None:
         """Move every joint to the model's home angles."""
-        self._move(self.model.home, _Timing(speed, None, True, None))
+        self._move(self.model.home, Timing(speed, None, True, None))
 
     def position(self) -> Position:
         """Where the gripper point is now [mm] and its pitch [deg]."""
@@ -182,7 +174,7 @@ class Arm:
         """Draw through ``points_mm`` [mm], shape (N, 3), at ``pitch`` [deg]: the whole
         path is planned and checked first (PathError names the first bad point),
         then the arm moves to its start and ``streamer`` (default timed) runs it."""
-        pts = _numbers(points_mm, "points_mm [mm]") / 1000.0
+        pts = numbers(points_mm, "points_mm [mm]") / 1000.0
         pitch_rad = None if pitch is None else math.radians(pitch)
         path = plan_path(self._kin, pts, pitch_rad, self.driver.read())
         self._check_clear(path.q)
@@ -228,7 +220,7 @@ class Arm:
             for name, deg in angles.items():
                 q[self.model.joint_index(name)] = deg
         else:
-            q = _numbers(angles, "joint angles [deg]", finite=False)
+            q = numbers(angles, "joint angles [deg]", finite=False)
             if q.shape != (self.model.dof,):
                 names = ", ".join(self.model.joint_names)
                 raise InputError(f"give {self.model.dof} angles ({names}), got {q.size}")
@@ -237,7 +229,7 @@ class Arm:
             raise InputError(f"joint angles must be finite numbers of degrees, got {shown}")
         return np.radians(q)
 
-    def _move(self, q: F64, timing: _Timing) -> None:
+    def _move(self, q: F64, timing: Timing) -> None:
         """Check limits, timing (the drivers' own rule, and at most ``MAX_MOVE_S``) and
         clearance, then send; with a timeout, poll until there."""
         goal = check_joints(self.model, q)
@@ -287,34 +279,3 @@ class Arm:
                 self.driver.stop()
                 raise DeviceError(f"the arm did not reach its target within {timeout} s; stopped")
             self.clock.sleep(0.005)
-
-
-def _numbers(values: object, what: str, *, finite: bool = True) -> F64:
-    """``values`` as a float array; InputError naming ``what`` if they are not numbers
-    (or, with ``finite``, not finite: None and NaN included)."""
-    try:
-        a = np.asarray(values, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise InputError(f"{what} must be numbers, got {values!r}") from None
-    if finite and not np.all(np.isfinite(a)):
-        raise InputError(f"{what} must be finite numbers, got {values!r}")
-    return a
-
-
-def _timing(
-    speed: float | None, duration: float | None, wait: bool, timeout: float | None
-) -> _Timing:
-    """The timing options as floats (InputError naming the one that is not a number)."""
-    values = [
-        None if v is None else _number(v, name, finite=False)
-        for v, name in ((speed, "speed"), (duration, "duration [s]"), (timeout, "timeout [s]"))
-    ]
-    return _Timing(values[0], values[1], bool(wait), values[2])
-
-
-def _number(value: object, what: str, *, finite: bool = True) -> float:
-    """``value`` as one float (InputError naming ``what`` otherwise)."""
-    a = _numbers(value, what, finite=finite)
-    if a.shape != ():
-        raise InputError(f"{what} must be one number, got {value!r}")
-    return float(a)

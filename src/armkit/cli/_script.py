@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from .._errors import ArmkitError, InputError
 from .._files import config_dir
-from ._motion import _open as open_arm
+from ._open_arm import open_arm
 from ._watch import add_watch_options
 
 if TYPE_CHECKING:

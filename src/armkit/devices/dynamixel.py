@@ -19,8 +19,7 @@ Retry policy (bounded by ``retries``):
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Mapping, Sequence
-from dataclasses import dataclass
+from collections.abc import Iterable, Iterator
 from typing import Any
 
 from .._clock import Clock, WallClock
@@ -37,21 +36,13 @@ from ._dxl_sdk import (
     installed_protocol,
     sdk_protocol,
     sized,
-    sync_read_replies,
 )
 from ._dxl_settings import ServoSettings
+from ._dxl_sync import ServoState as ServoState
+from ._dxl_sync import SyncInstructions
 
 
-@dataclass(frozen=True, slots=True)
-class ServoState:
-    """Present state, signed: position [tick], velocity [0.229 rev/min], current [2.69 mA]."""
-
-    position: int
-    velocity: int
-    current: int
-
-
-class DynamixelBus(ServoSettings):
+class DynamixelBus(SyncInstructions, ServoSettings):
     """A serial port with XM430 servos on it (Protocol 2.0).
 
     Args:
@@ -251,57 +242,3 @@ class DynamixelBus(ServoSettings):
                 f"servo {servo_id}: still in hardware error after REBOOT"
                 f" ({xm.describe_hardware_error(bits)}; reboot status: {comm_fault(result)})"
             )
-
-    def sync_write(self, name: str, values: Mapping[int, int]) -> None:
-        """{ID: value} of one register in one SYNC_WRITE, sent exactly once."""
-        reg = xm.register(name)
-        self._sync_write(reg.address, reg.size, {s: reg.encode(v) for s, v in values.items()})
-
-    def _sync_write(self, address: int, size: int, data: Mapping[int, bytes]) -> None:
-        group = self._group(self.protocol.group_sync_write, address, size)
-        group.clearParam()
-        for sid, raw in data.items():
-            group.addParam(sid, list(raw))
-        result = group.txPacket()
-        group.clearParam()
-        if result != COMM_SUCCESS:
-            raise DeviceError(f"servos {list(data)}: SYNC_WRITE failed: {comm_fault(result)}")
-
-    def sync_read(self, name: str, ids: Sequence[int]) -> dict[int, int]:
-        """{ID: value} of one register, signed if the register is."""
-        reg = xm.register(name)
-        raw = self._sync_read(reg.address, reg.size, ids)
-        return {sid: reg.decode(data) for sid, data in raw.items()}
-
-    def read_states(self, ids: Sequence[int]) -> dict[int, ServoState]:
-        """Present current, velocity and position of ``ids`` in one SYNC_READ (126..135)."""
-        cur, vel, pos = (xm.register(f"Present {n}") for n in ("Current", "Velocity", "Position"))
-        raw = self._sync_read(cur.address, pos.address + pos.size - cur.address, ids)
-        return {
-            sid: ServoState(pos.decode(d[6:10]), vel.decode(d[2:6]), cur.decode(d[0:2]))
-            for sid, d in raw.items()
-        }
-
-    def _sync_read(self, address: int, size: int, ids: Sequence[int]) -> dict[int, bytes]:
-        """SYNC_READ, retried as a whole; raises naming the servo that failed."""
-        failed, result = ids[0], COMM_SUCCESS
-        for _ in self._attempts():
-            group = self._group(self.protocol.group_sync_read, address, size, tuple(ids))
-            failed, result, replies = sync_read_replies(group, self._ph, self._port, ids)
-            if result == COMM_SUCCESS:
-                for sid, (_, error) in replies.items():
-                    self._check(sid, f"SYNC_READ at {address}", error)
-                return {sid: data for sid, (data, _) in replies.items()}
-        raise DeviceError(
-            f"servo {failed}: SYNC_READ at {address} failed after {self.retries + 1} tries:"
-            f" {comm_fault(result)}; check its power, cable and ID"
-        )
-
-    def _group(self, kind: Any, address: int, size: int, ids: tuple[int, ...] = ()) -> Any:
-        key = (kind, address, size, ids)
-        if key not in self._groups:
-            group = kind(self._port, self._ph, address, size)
-            for sid in ids:
-                group.addParam(sid)
-            self._groups[key] = group
-        return self._groups[key]

@@ -52,11 +52,10 @@ from ..model import (
 from ._driver import pieces
 from ._dxl_hold import describe, hold, hold_here
 from ._dxl_points import calibration_points as calibration_points
+from ._dxl_wait import stopped, wait_arrival
 from ._sent import SentProfile
 
 MAX_PROFILE_MS = 32737  # time-based Profile Velocity limit
-_POLL_S = 0.005  # between reads of Moving and Present Position while waiting [s]
-_SETTLE_S = 0.3  # longest wait for a stopped servo's encoder to reach its goal tick [s]
 
 
 def open_driver(model: ArmModel, port: str | None) -> DynamixelDriver:
@@ -198,40 +197,9 @@ class DynamixelDriver:
         self._sent = SentProfile(origin, target.copy(), end, ticks, now, total)
         if wait:
             self.clock.sleep(total_ms / 1000.0)  # nothing to ask before it can be done
-            self._wait(total_ms / 1000.0 * 0.5 + 1.0, ticks)
+            timeout = total_ms / 1000.0 * 0.5 + 1.0
+            wait_arrival(self.bus, self.clock, self.ids, ticks, timeout, self._tolerance)
         return end
-
-    def _wait(self, timeout: float, goal: NDArray[np.int64]) -> None:
-        """Wait for the joints to stop and settle on ``goal`` [tick] (their encoders on it, for
-        at most ``_SETTLE_S``), then check they arrived (within the tolerance)."""
-        if not self._stopped(self.ids, timeout):
-            raise DeviceError(f"servos {self.ids}: still moving {timeout:.1f} s after the command")
-        deadline = self.clock.now() + _SETTLE_S
-        while not self._on_goal(goal) and self.clock.now() < deadline:
-            self.clock.sleep(_POLL_S)
-        self._check_arrival(self.ids, goal)
-
-    def _on_goal(self, goal: NDArray[np.int64]) -> bool:
-        present = self.bus.sync_read("Present Position", self.ids)
-        return all(present[sid] == g for sid, g in zip(self.ids, goal.tolist(), strict=True))
-
-    def _stopped(self, ids: list[int], timeout: float) -> bool:
-        """Poll Moving until every servo in ``ids`` stops (True) or ``timeout`` [s] (False)."""
-        deadline = self.clock.now() + timeout
-        while any(self.bus.sync_read("Moving", ids).values()):
-            if self.clock.now() > deadline:
-                return False
-            self.clock.sleep(_POLL_S)
-        return True
-
-    def _check_arrival(self, ids: list[int], goal: NDArray[np.int64]) -> None:
-        present = self.bus.sync_read("Present Position", ids)
-        for sid, target in zip(ids, goal.tolist(), strict=True):
-            if abs(present[sid] - target) > self._tolerance:
-                raise DeviceError(
-                    f"servo {sid}: stopped at tick {present[sid]}, goal {target}"
-                    f" (tolerance {self._tolerance}); is it blocked or did it miss the command?"
-                )
 
     def _alive(self) -> None:
         if not self.bus.is_open:
@@ -281,7 +249,7 @@ class DynamixelDriver:
         tick = self.grip_ticks(width)
         self._alive()
         self.bus.write(self.gripper_id, "Goal Position", tick)
-        self._stopped([self.gripper_id], 3.0)
+        stopped(self.bus, self.clock, [self.gripper_id], 3.0)
 
     def _hold(self) -> tuple[list[int], list[int]]:
         """Hold every joint where its last profile has it now (``_dxl_hold``): (IDs that

@@ -11,10 +11,10 @@ from ._limits import shortest_time as shortest_time
 from ._limits import trapezoid_time as trapezoid_time
 from ._load import load_model as load_model
 from ._load import shipped_models as shipped_models
+from ._owi_section import OwiSection as OwiSection
+from ._owi_section import owi_section as owi_section
 from ._sections import DynamixelSection as DynamixelSection
-from ._sections import OwiSection as OwiSection
 from ._sections import dynamixel_section as dynamixel_section
-from ._sections import owi_section as owi_section
 from ._types import ArmModel as ArmModel
 from ._types import DHRow as DHRow
 from ._types import Gripper as Gripper

@@ -9,7 +9,6 @@ uncertain until the arm is re-homed.
 
 from __future__ import annotations
 
-import math
 import time
 from collections.abc import Callable
 from pathlib import Path
@@ -18,25 +17,26 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..._clock import Clock
-from ..._errors import ArmkitError, InputError
+from ..._errors import InputError
 from ..._lock import exclusive
 from ...model import ArmModel, check_grip, check_joints, move_time
 from ._config import OwiConfig, default_timing, owi_config
-from ._estimate import MOVING, after_run, pending_of, recovered
-from ._journal import Until, journaled_run, raise_if_watchdog, warn, write
-from ._motors import Device, Motors, Run
+from ._estimate import recovered
+from ._journal import warn
+from ._motors import Device, Motors
 from ._order import safe_order
-from ._plan import MoveReport, ShortMoveError, Step, plan_turns
+from ._plan import MoveReport, plan_turns
 from ._safety import ExitGuard
 from ._short import plan_legs
 from ._state import ArmState, load
-from ._timing import TimingModel
+from ._turns import TimedTurns
 
 F64 = NDArray[np.float64]
 
 
-class TimedDriver:
-    """A :class:`~armkit.drivers.Driver` for the OWI-535 (open-loop timed motors)."""
+class TimedDriver(TimedTurns):
+    """A :class:`~armkit.drivers.Driver` for the OWI-535 (open-loop timed motors); its own
+    turns, gripper and light (``turn_to``, ``drive_to_limit``, ...) are ``TimedTurns``'."""
 
     def __init__(
         self,
@@ -89,16 +89,7 @@ class TimedDriver:
         if self.state.pending is not None:
             self._save(recovered(self.state, time.time()))
 
-    # -- Driver protocol -------------------------------------------------
-    @property
-    def joint_names(self) -> tuple[str, ...]:
-        """base, shoulder, elbow, wrist."""
-        return self.model.joint_names
-
-    def read(self) -> F64:
-        """Estimated joint angles [rad], shape (4,)."""
-        return np.array(self.state.angles)
-
+    # -- Driver protocol (joint_names and read: TimedTurns) --------------
     def move(
         self,
         q: F64,
@@ -202,132 +193,6 @@ class TimedDriver:
             self._guard.uninstall()
             self.motors.device.close()
             self._lock.release()
-
-    # -- joints that know their angle ------------------------------------
-    @property
-    def timing(self) -> TimingModel:
-        """The unit's timing model."""
-        return self.state.timing
-
-    def turn_to(self, joint: str, angle: float, *, clamp: bool = True) -> MoveReport:
-        """Turn ``joint`` to ``angle`` [rad]; beyond a limit it is clamped (noted) or, with
-        ``clamp=False``, refused. Moves under the minimum time are refused (ShortMoveError)."""
-        return self.turn_many({joint: angle}, clamp=clamp)
-
-    def turn_by(self, joint: str, delta: float, *, clamp: bool = True) -> MoveReport:
-        """Turn ``joint`` by ``delta`` [rad] from its estimated angle (see :meth:`turn_to`)."""
-        return self.turn_to(
-            joint, self.state.angles[self.model.joint_index(joint)] + delta, clamp=clamp
-        )
-
-    def turn_many(self, targets: dict[str, float], *, clamp: bool = True) -> MoveReport:
-        """Turn several joints at once ({name: angle [rad]}), all motors started together."""
-        index = {self.model.joint_index(name): float(a) for name, a in targets.items()}
-        report = self._plan(index, clamp=clamp, skip_short=False)
-        report.steps = self._run_steps(report.steps)
-        return report
-
-    def turn_for(self, joint: str, direction: int, seconds: float) -> None:
-        """Run one motor for ``seconds`` [s] (000's timed turn; keyboard mode), the angle
-        estimated by the timing model and clamped at the limits."""
-        j = self.model.joint_index(joint)
-        if direction not in (-1, 1):
-            raise InputError(f"turn {joint} needs direction -1 or +1, got {direction}")
-        if seconds < self.timing.min_move_s:
-            raise ShortMoveError(
-                f"turn {joint} for {seconds * 1000:.0f} ms is under the "
-                f"{self.timing.min_move_s * 1000:.0f} ms minimum; run it longer"
-            )
-        self._run_steps([Step(j, direction, seconds, math.nan)])
-
-    def drive_to_limit(
-        self, joint: str, direction: int, wait: Callable[[], object] | None = None
-    ) -> float:
-        """Run ``joint`` against its limit in ``direction`` until ``wait()`` returns (a person
-        saying it is there), or with no ``wait`` for 1.25 times the slowest limit-to-limit
-        time; then its angle is that limit, exactly. Returns the motor time [s].
-
-        Raises:
-            ArmkitError: nobody answered before the watchdog stopped the arm.
-        """
-        j = self.model.joint_index(joint)
-        worst = (
-            1.25 * (self.timing.upper[j] - self.timing.lower[j]) / min(self.timing.joints[j].rates)
-        )
-        worst /= self.timing.battery(self.state.motor_s)
-        step = Step(
-            j, direction, worst, self.timing.upper[j] if direction > 0 else self.timing.lower[j]
-        )
-        run = Run({joint: (direction, worst)})
-        before = self.state
-        until = None if wait is None else (wait, 2 * worst + self.config.watchdog_margin_s)
-        self._execute(
-            run,
-            before.with_(uncertain=True, reason=MOVING, pending=pending_of([step])),
-            lambda: after_run(before, [step], run, self.joint_names, at_limit=run.complete),
-            until,
-        )
-        if not run.complete:
-            raise ArmkitError(
-                f"the {joint} was stopped by the watchdog before anyone said it reached "
-                "its limit; start again"
-            )
-        return run.elapsed[joint]
-
-    def open_gripper(self, open_: bool) -> None:
-        """Open or close the gripper for its timed period; nothing is sent if it already is."""
-        wanted = "open" if open_ else "closed"
-        if self.state.gripper == wanted:
-            return
-        run = Run({"gripper": (1 if open_ else -1, self.timing.gripper_s)})
-        before = self.state
-
-        def done() -> ArmState:
-            moved = wanted if run.complete else "unknown"
-            return before.with_(gripper=moved if run.started else before.gripper)
-
-        self._execute(run, before.with_(gripper="unknown"), done)
-        raise_if_watchdog(run)
-
-    def set_light(self, on: bool) -> None:
-        """Switch the light on or off (kept across stops)."""
-        self.motors.set_light(on)
-        self._save(self.state.with_(light=on))
-
-    def set_state(self, state: ArmState) -> None:
-        """Replace the unit's state (calibration, re-homing) and save it."""
-        self._save(state)
-
-    # -- internals ---------------------------------------------------------
-    def _plan(self, targets: dict[int, float], *, clamp: bool, skip_short: bool) -> MoveReport:
-        q, motor_s = self.read(), self.state.motor_s
-        return plan_turns(
-            self.timing, self.joint_names, q, targets, motor_s, clamp=clamp, skip_short=skip_short
-        )
-
-    def _run_steps(self, steps: list[Step]) -> list[Step]:
-        if not steps:
-            return steps
-        names = self.joint_names
-        run = Run({names[s.joint]: (s.direction, s.seconds) for s in steps})
-        before = self.state
-        self._execute(
-            run,
-            before.with_(uncertain=True, reason=MOVING, pending=pending_of(steps)),
-            lambda: after_run(before, steps, run, self.joint_names),
-        )
-        raise_if_watchdog(run)
-        return steps
-
-    def _execute(
-        self, run: Run, pending: ArmState, done: Callable[[], ArmState], until: Until | None = None
-    ) -> None:
-        """Save ``pending``, run the motors, save ``done()`` (see ``journaled_run``)."""
-        journaled_run(self.motors, self.clock, run, self._save, pending, done, until)
-
-    def _save(self, state: ArmState) -> None:
-        self.state = state
-        write(self.path, state, self.durable)
 
 
 def _fresh_state(model: ArmModel, unit: str) -> ArmState:

@@ -1,0 +1,50 @@
+"""The arm a motion command (and ``armkit run``) moves: opened once every file it will
+write is known to be writable, with the OWI's uncertain-estimate warning as one CLI
+line, and watched as ``--view``/``--gif`` say (``armkit.cli._watch``)."""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import sys
+from collections.abc import Iterator
+from typing import Any
+
+from .._files import config_dir
+from ..arm import Arm
+from ..drivers.timed import TimedDriver
+from ..model import load_model
+from ._args import check_folder, check_output
+from ._kept import open_kept
+from ._watch import watch_world, watching
+
+
+@contextlib.contextmanager
+def open_arm(args: argparse.Namespace) -> Iterator[Arm]:
+    """The arm of --arm on --driver/--port, once every file it will write is known
+    to be writable (the config directory, a state file given as --port, a --gif);
+    watched as --view/--gif say (``armkit.cli._watch``)."""
+    model = load_model(args.arm)
+    check_folder(config_dir(), "the config directory")
+    if args.driver == "sim" and args.port not in (None, "emu"):
+        check_output(args.port, "--port (the simulated arm's state file)")
+    world = watch_world(args)
+    try:
+        arm = Arm(model, open_kept(model, args, world))
+        if isinstance(arm.driver, TimedDriver):  # before moving from an uncertain estimate
+            rehome = f"armkit --arm {args.arm} --driver {args.driver} rehome"
+            arm.driver.warn = lambda text: print(f"armkit: warning: {text}: {rehome}", file=sys.stderr)  # fmt: skip
+        with arm, watching(args, arm, _scene(args)):
+            yield arm
+    finally:
+        if world is not None:
+            world.close()
+
+
+def _scene(args: argparse.Namespace) -> Any:
+    """The --scene to show and simulate while watching (None if not watching or none)."""
+    if not (getattr(args, "view", False) or getattr(args, "gif", None)):
+        return None
+    from ._scene import scene_of
+
+    return scene_of(args, required=False)
