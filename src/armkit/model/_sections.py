@@ -43,9 +43,10 @@ class DynamixelSection:
         ids: one servo ID per joint, model order (0..252, all different).
         gripper_id: the gripper's servo ID.  baudrate: bus speed [bit/s].
         ticks_per_turn: ticks in one turn.  center_tick: tick at joint angle 0.
-        gripper_ticks: (closed, open) ticks; default ROBOTIS's own (open_manipulator_x
-            libraries: gripper -0.010 m closed .. +0.010 m open at -0.015 m per rad, Drive
-            Mode normal): 2048 -+ 0.010 / 0.015 rad x 4096 / 2pi = 2483 closed, 1613 open.
+        gripper_ticks: (closed, open) ticks; default ROBOTIS's own (ROBOTIS-GIT/
+            open_manipulator, open_manipulator_libs/src/OpenManipulator.cpp, ``addTool``:
+            gripper -0.010 m closed .. +0.010 m open, -0.015 "meter to radian", Drive Mode
+            normal): 2048 -+ 0.010 / 0.015 rad x 4096 / 2pi = 2483 closed, 1613 open.
         gripper_current: current limit [2.69 mA units].
         position_tolerance_ticks: how close a servo must come to count as arrived [ticks].
         operating_mode: the joints' mode, ``"position"`` (one turn, 0..4095) or
