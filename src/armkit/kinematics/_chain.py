@@ -168,8 +168,8 @@ def _solvers(
     ``at_home``: home [rad], the pitch there [rad] and the chain's scalar state."""
     if fam is None:
         return None, None
-    solve, elbows = fixed_solver(fam, lower, upper)
+    solve = fixed_solver(fam, lower, upper)
     if len(fam.planar) != 3:
         return solve, None
     base = (0.0, 0.0) if fam.base is None else (lower[fam.base], upper[fam.base])
-    return solve, free_solver(fam, (solve, elbows), wrist, base, at_home)
+    return solve, free_solver(fam, solve, wrist, base, at_home)

@@ -33,9 +33,6 @@ class Misses:
 
 
 FixedSolver = Callable[[float, float, float, "float | None", Q, "Misses | None"], Found]
-Elbows = Callable[
-    [float, float, float, float, float, "float | None", float, Q, Found, "Misses | None"], None
-]
 
 
 def miss(v: float, lo: float, hi: float, j: int, misses: Misses) -> None:
@@ -54,10 +51,9 @@ def pitch_for_phi(phi: float, r: float, rho: float) -> float:
     return math.atan2(math.sin(phi), c * r / rho)
 
 
-def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, Elbows]:
+def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
     """solve(x, y, z, pitch, seed, misses): every solution at ``pitch`` [rad] (None: 2
-    planar joints, the pitch follows) for the tool point (x, y, z) [m], unsorted; and
-    elbows(...): both elbows of one base branch from its wrist point, as ``solve`` uses."""
+    planar joints, the pitch follows) for the tool point (x, y, z) [m], unsorted."""
     base, three, dof = fam.base, len(fam.planar) == 3, len(lower)
     (j1, j2, j3), (s1, s2, s3) = (*fam.planar, 0)[:3], (*fam.sigma, 0.0)[:3]
     lo1, hi1, lo2, hi2, lo3, hi3 = lower[j1], upper[j1], lower[j2], upper[j2], lower[j3], upper[j3]
@@ -68,91 +64,9 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, El
     lat, az, bs, c0, s0 = fam.lateral, fam.azimuth_r, fam.base_sign, math.cos(phi0), math.sin(phi0)
     (ux, uy, uz), pi, tp = fam.u, math.pi, _TWO_PI
     cos, sin, acos, atan2, sqrt = math.cos, math.sin, math.acos, math.atan2, math.sqrt
-    rem, floor = math.remainder, math.floor
+    rem, floor, straight = math.remainder, math.floor, _STRAIGHT
     yaw3 = base == 0 and fam.planar == (1, 2, 3)  # the common layout: joints in order
     pair = base is None and fam.planar == (0, 1) and dof == 2
-
-    def elbows(
-        r: float,
-        q0: float,
-        wx: float,
-        wz: float,
-        turn: float,
-        pitch: float | None,
-        rho: float,
-        seed: Q,
-        found: Found,
-        misses: Misses | None,
-    ) -> None:
-        """Add to ``found`` both elbows of one base branch: plane radius r (signed) and
-        distance rho [m], base angle q0 [rad], the wrist point (wx, wz) from the first
-        planar joint [m], the plane turn [rad] (3 planar joints) or the ``pitch`` [rad]
-        that 2 planar joints must give; each joint moved by whole turns into its limits."""
-        given = not three and pitch is not None  # 2 planar joints: check the pitch they give
-        if base is not None and not lo0 <= q0 <= hi0:  # by whole turns into the limits
-            w = q0 - tp * floor((q0 - lo0 + _SLACK) / tp)
-            if w > hi0 + _SLACK:
-                if misses is not None:
-                    miss(q0, lo0, hi0, base, misses)
-                return
-            q0 = lo0 if w < lo0 else (hi0 if w > hi0 else w)
-        cg = (wx * wx + wz * wz - k0) / k1
-        if not -1.0 - 1e-12 <= cg <= 1.0 + 1e-12:
-            if misses is not None:
-                misses.reasons.append("too_far" if cg > 0 else "too_close")
-            return
-        cg = 1.0 if cg > _STRAIGHT else (-1.0 if cg < -_STRAIGHT else cg)  # see _STRAIGHT
-        g = acos(cg)
-        t = atan2(l2 * sqrt(1.0 - cg * cg), l1 + l2 * cg)
-        aim = atan2(wz, wx) - ang1
-        for gg, tt in ((g, t), (-g, -t)) if g > 1e-12 else ((g, t),):
-            a1, a2 = aim - tt, gg - bend
-            if given:
-                got = pitch_for_phi(phi0 + a1 + a2, r, rho)
-                if abs(rem(got - pitch, tp)) > 1e-7:  # type: ignore[operator]
-                    if misses is not None:
-                        misses.reasons.append("pitch")
-                    continue
-            v1, v2 = s1 * a1, s2 * a2
-            if not lo1 <= v1 <= hi1:  # as the base: inline, a call costs more than this
-                w = v1 - tp * floor((v1 - lo1 + _SLACK) / tp)
-                if w > hi1 + _SLACK:
-                    if misses is not None:
-                        miss(v1, lo1, hi1, j1, misses)
-                    continue
-                v1 = lo1 if w < lo1 else (hi1 if w > hi1 else w)
-            if not lo2 <= v2 <= hi2:
-                w = v2 - tp * floor((v2 - lo2 + _SLACK) / tp)
-                if w > hi2 + _SLACK:
-                    if misses is not None:
-                        miss(v2, lo2, hi2, j2, misses)
-                    continue
-                v2 = lo2 if w < lo2 else (hi2 if w > hi2 else w)
-            if three:
-                v3 = s3 * (turn - a1 - a2)
-                if not lo3 <= v3 <= hi3:
-                    w = v3 - tp * floor((v3 - lo3 + _SLACK) / tp)
-                    if w > hi3 + _SLACK:
-                        if misses is not None:
-                            miss(v3, lo3, hi3, j3, misses)
-                        continue
-                    v3 = lo3 if w < lo3 else (hi3 if w > hi3 else w)
-                if yaw3:
-                    d0, d1, d2, d3 = q0 - seed[0], v1 - seed[1], v2 - seed[2], v3 - seed[3]
-                    sol = (q0, v1, v2, v3, *seed[4:]) if dof > 4 else (q0, v1, v2, v3)
-                    found.append((d0 * d0 + d1 * d1 + d2 * d2 + d3 * d3, sol))
-                    continue
-            elif pair:
-                d1, d2 = v1 - seed[0], v2 - seed[1]
-                found.append((d1 * d1 + d2 * d2, (v1, v2)))
-                continue
-            q = list(seed)
-            q[j1], q[j2] = v1, v2
-            if three:
-                q[j3] = v3
-            if base is not None:
-                q[base] = q0
-            found.append((sum((a - b) * (a - b) for a, b in zip(q, seed, strict=True)), tuple(q)))
 
     def solve(
         x: float, y: float, z: float, pitch: float | None, seed: Q, misses: Misses | None
@@ -176,7 +90,15 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, El
             return found
         pv = pitch if three and pitch is not None else 0.0
         sp, cp = sin(pv), cos(pv)
+        given = not three and pitch is not None  # 2 planar joints: check the pitch they give
         for r, q0 in branches:
+            if base is not None and not lo0 <= q0 <= hi0:  # by whole turns into the limits
+                w = q0 - tp * floor((q0 - lo0 + _SLACK) / tp)
+                if w > hi0 + _SLACK:
+                    if misses is not None:
+                        miss(q0, lo0, hi0, base, misses)
+                    continue
+                q0 = lo0 if w < lo0 else (hi0 if w > hi0 else w)
             wx, wz, turn = r - c1x, z - c1z, 0.0
             if three:  # the wrist point, from the plane turn that gives the pitch
                 if plain or not (lat or rho < 1e-12 or -1e-12 < r < 1e-12):
@@ -191,10 +113,68 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> tuple[FixedSolver, El
                     turn = atan2(sa, ca) - phi0
                 c, s = ca * c0 + sa * s0, sa * c0 - ca * s0
                 wx, wz = wx - (c * v3x - s * v3z), wz - (s * v3x + c * v3z)
-            elbows(r, q0, wx, wz, turn, pitch, rho, seed, found, misses)
+            cg = (wx * wx + wz * wz - k0) / k1
+            if not -1.0 - 1e-12 <= cg <= 1.0 + 1e-12:
+                if misses is not None:
+                    misses.reasons.append("too_far" if cg > 0 else "too_close")
+                continue
+            cg = 1.0 if cg > straight else (-1.0 if cg < -straight else cg)  # see _STRAIGHT
+            g = acos(cg)
+            t = atan2(l2 * sqrt(1.0 - cg * cg), l1 + l2 * cg)
+            aim = atan2(wz, wx) - ang1
+            for gg, tt in ((g, t), (-g, -t)) if g > 1e-12 else ((g, t),):
+                a1, a2 = aim - tt, gg - bend
+                if given:
+                    got = pitch_for_phi(phi0 + a1 + a2, r, rho)
+                    if abs(rem(got - pitch, tp)) > 1e-7:  # type: ignore[operator]
+                        if misses is not None:
+                            misses.reasons.append("pitch")
+                        continue
+                v1, v2 = s1 * a1, s2 * a2
+                if not lo1 <= v1 <= hi1:  # as the base: inline, a call costs more than this
+                    w = v1 - tp * floor((v1 - lo1 + _SLACK) / tp)
+                    if w > hi1 + _SLACK:
+                        if misses is not None:
+                            miss(v1, lo1, hi1, j1, misses)
+                        continue
+                    v1 = lo1 if w < lo1 else (hi1 if w > hi1 else w)
+                if not lo2 <= v2 <= hi2:
+                    w = v2 - tp * floor((v2 - lo2 + _SLACK) / tp)
+                    if w > hi2 + _SLACK:
+                        if misses is not None:
+                            miss(v2, lo2, hi2, j2, misses)
+                        continue
+                    v2 = lo2 if w < lo2 else (hi2 if w > hi2 else w)
+                if three:
+                    v3 = s3 * (turn - a1 - a2)
+                    if not lo3 <= v3 <= hi3:
+                        w = v3 - tp * floor((v3 - lo3 + _SLACK) / tp)
+                        if w > hi3 + _SLACK:
+                            if misses is not None:
+                                miss(v3, lo3, hi3, j3, misses)
+                            continue
+                        v3 = lo3 if w < lo3 else (hi3 if w > hi3 else w)
+                    if yaw3:
+                        d0, d1, d2, d3 = q0 - seed[0], v1 - seed[1], v2 - seed[2], v3 - seed[3]
+                        sol = (q0, v1, v2, v3, *seed[4:]) if dof > 4 else (q0, v1, v2, v3)
+                        found.append((d0 * d0 + d1 * d1 + d2 * d2 + d3 * d3, sol))
+                        continue
+                elif pair:
+                    d1, d2 = v1 - seed[0], v2 - seed[1]
+                    found.append((d1 * d1 + d2 * d2, (v1, v2)))
+                    continue
+                q = list(seed)
+                q[j1], q[j2] = v1, v2
+                if three:
+                    q[j3] = v3
+                if base is not None:
+                    q[base] = q0
+                found.append(
+                    (sum((a - b) * (a - b) for a, b in zip(q, seed, strict=True)), tuple(q))
+                )
         return found
 
-    return solve, elbows
+    return solve
 
 
 def _ways(
