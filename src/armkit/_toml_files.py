@@ -24,7 +24,8 @@ def resolve(
     noun: str,
 ) -> Path:
     """The file ``name_or_path`` names: a path (ends in ``.toml`` or has a ``/``) that must
-    exist, or the name of a file shipped in ``package``/``folder``.
+    exist, or the name of a file shipped in ``package``/``folder``; a bare shipped file
+    name (``xylophone.toml``) not found here is the shipped file.
 
     Raises:
         ``error(message)``: no such file ("no such {kind} file"), or an unknown name
@@ -33,9 +34,11 @@ def resolve(
     text = str(name_or_path)
     if text.endswith(".toml") or "/" in text or "\\" in text:
         path = Path(text).expanduser()
-        if not path.is_file():
-            raise error(f"{path}: no such {kind} file")
-        return path
+        if path.is_file():
+            return path
+        if path.name == text and path.stem in shipped(package, folder):
+            return Path(str(resources.files(package) / folder / text))
+        raise error(f"{path}: no such {kind} file")
     names = shipped(package, folder)
     if text not in names:
         raise error(

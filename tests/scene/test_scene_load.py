@@ -209,3 +209,15 @@ def test_instruments() -> None:
     sheet = Sheet("s", np.zeros(3), np.array([1.0, 0, 0]), np.array([0, 1.0, 0]), 0.1, 0.1)
     with pytest.raises(ValueError, match=r"shape \(N, 2\)"):
         sheet.to_world([1.0, 2.0])
+
+
+def test_a_shipped_file_name_not_found_here_is_the_shipped_scene(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """``--scene xylophone.toml`` means the shipped scene unless a file of that name is here."""
+    monkeypatch.chdir(tmp_path)
+    assert load_scene("xylophone.toml").name == "xylophone"
+    (tmp_path / "xylophone.toml").write_text('name = "mine"\n', encoding="utf-8")
+    assert load_scene("xylophone.toml").name == "mine"
+    with pytest.raises(SceneError, match="no such scene file"):
+        load_scene("sub/xylophone.toml")

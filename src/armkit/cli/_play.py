@@ -44,8 +44,9 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 def _run(args: argparse.Namespace) -> int:
     from .. import music
+    from ._scene import scene_of
 
-    scene = _scene(args)
+    scene = scene_of(args)
     outputs = _outputs(args)
     table = music.load_latency(args.latency) if args.latency else None
     with watched_arm(args, scene) as arm:
@@ -85,20 +86,6 @@ def _calibrate(arm: Any, scene: Any, args: argparse.Namespace, out: Path, music:
         f"{max(delays):.2f} ms; wrote {out}"
     )
     return table
-
-
-def _scene(args: argparse.Namespace) -> Any:
-    """The --scene, where a shipped scene's file name (``xylophone.toml``) not found
-    here means the shipped scene."""
-    from ..scene import shipped_scenes
-    from ._scene import scene_of
-
-    given = args.scene
-    if given and given.endswith(".toml") and not Path(given).exists():
-        stem = Path(given).stem
-        if "/" not in given and stem in shipped_scenes():
-            args.scene = stem
-    return scene_of(args)
 
 
 def _outputs(args: argparse.Namespace) -> dict[str, Path]:
