@@ -10,39 +10,19 @@ packages above reach the simulator through Arm and the factory.
 
 from __future__ import annotations
 
-import ast
 from pathlib import Path
 
 import pytest
 
-SRC = Path(__file__).resolve().parent.parent / "src"
-
-
-def _module_name(path: Path) -> str:
-    parts = list(path.relative_to(SRC).with_suffix("").parts)
-    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+from import_reader import SRC, imported, module_name
 
 
 def _imports(path: Path) -> set[str]:
     """Every armkit module ``path`` imports, absolute (``from . import x`` -> ``pkg.x``)."""
-    name = _module_name(path)
-    package = name if path.name == "__init__.py" else name.rpartition(".")[0]
-    found: set[str] = set()
-    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-        if isinstance(node, ast.Import):
-            found.update(alias.name for alias in node.names)
-        elif isinstance(node, ast.ImportFrom):
-            base = node.module or ""
-            if node.level:
-                anchor = package.split(".")
-                anchor = anchor[: len(anchor) - (node.level - 1)]
-                base = ".".join([*anchor, base] if base else anchor)
-            found.add(base)
-            found.update(f"{base}.{alias.name}" for alias in node.names)
-    return {m for m in found if m == "armkit" or m.startswith("armkit.")}
+    return {m for _, m in imported(path) if m == "armkit" or m.startswith("armkit.")}
 
 
-MODULES = {_module_name(p): _imports(p) for p in sorted((SRC / "armkit").rglob("*.py"))}
+MODULES = {module_name(p): _imports(p) for p in sorted((SRC / "armkit").rglob("*.py"))}
 
 
 def _in(module: str, floor: str) -> bool:

@@ -11,34 +11,9 @@ shared floor of every package and may be imported anywhere.
 
 from __future__ import annotations
 
-import ast
 from pathlib import Path
 
-SRC = Path(__file__).resolve().parent.parent / "src"
-
-
-def _module_name(path: Path) -> str:
-    parts = list(path.relative_to(SRC).with_suffix("").parts)
-    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
-
-
-def _imported(path: Path, tree: ast.Module) -> list[tuple[int, str]]:
-    """(line, absolute module or module.name) of every import in ``tree``."""
-    name = _module_name(path)
-    package = name if path.name == "__init__.py" else name.rpartition(".")[0]
-    found: list[tuple[int, str]] = []
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Import):
-            found.extend((node.lineno, alias.name) for alias in node.names)
-        elif isinstance(node, ast.ImportFrom):
-            base = node.module or ""
-            if node.level:
-                anchor = package.split(".")
-                anchor = anchor[: len(anchor) - (node.level - 1)]
-                base = ".".join([*anchor, base] if base else anchor)
-            found.append((node.lineno, base))
-            found.extend((node.lineno, f"{base}.{alias.name}") for alias in node.names)
-    return found
+from import_reader import SRC, imported, module_name
 
 
 def _owner(module: str) -> str:
@@ -58,9 +33,9 @@ def cross_package_private(module: str, target: str) -> bool:
 def _violations(path: Path, source: str) -> list[str]:
     """``file:line: module`` of each import statement in ``source`` reaching into another
     package's private module (the shortest such name the statement imports)."""
-    module = _module_name(path)
+    module = module_name(path)
     worst: dict[int, str] = {}
-    for line, target in _imported(path, ast.parse(source)):
+    for line, target in imported(path, source):
         if cross_package_private(module, target) and len(target) < len(
             worst.get(line, target + "_")
         ):

@@ -4,58 +4,34 @@ through a circle."""
 
 from __future__ import annotations
 
-import ast
 from pathlib import Path
 
 import armkit.kinematics
+from import_reader import imported, module_name
 
 ROOT = Path(armkit.kinematics.__file__).parent
 PACKAGE = "armkit.kinematics"
-
-
-def _module_name(path: Path) -> str:
-    parts = list(path.relative_to(ROOT).with_suffix("").parts)
-    if parts[-1] == "__init__":
-        parts = parts[:-1]
-    return ".".join([PACKAGE, *parts])
 
 
 def _is_package(name: str) -> bool:
     return (ROOT / Path(*name.split(".")[2:]) / "__init__.py").exists()
 
 
-def _imports(path: Path) -> set[str]:
+def _imports(path: Path, source: str | None = None) -> set[str]:
     """Every kinematics module ``path`` imports, anywhere in the file (functions included)."""
-    return _imports_of(path.read_text(), _module_name(path), path.name == "__init__.py")
-
-
-def _imports_of(source: str, me: str, is_package: bool) -> set[str]:
-    package = me if is_package else me.rsplit(".", 1)[0]
-    found: set[str] = set()
-    for node in ast.walk(ast.parse(source)):
-        if isinstance(node, ast.Import):
-            targets = [a.name for a in node.names]
-        elif isinstance(node, ast.ImportFrom):
-            base = package.split(".")
-            base = base[: len(base) - (node.level - 1)] if node.level else []
-            module = ".".join([*base, node.module] if node.module else base)
-            if not node.level:
-                module = node.module or ""
-            targets = [module] + [f"{module}.{a.name}" for a in node.names]
-        else:
-            continue
-        for t in targets:
-            if (
-                t.startswith(PACKAGE)
-                and (ROOT / Path(*t.split(".")[2:])).with_suffix(".py").exists()
-            ) or (t.startswith(PACKAGE) and _is_package(t)):
-                found.add(t)
+    me = module_name(path)
+    found = {
+        t
+        for _, t in imported(path, source)
+        if t.startswith(PACKAGE)
+        and ((ROOT / Path(*t.split(".")[2:])).with_suffix(".py").exists() or _is_package(t))
+    }
     ancestors = {".".join(me.split(".")[:k]) for k in range(2, len(me.split(".")) + 1)}
     return found - ancestors  # a package is initialised before its modules run
 
 
 def _graph() -> dict[str, set[str]]:
-    return {_module_name(p): _imports(p) for p in ROOT.rglob("*.py")}
+    return {module_name(p): _imports(p) for p in ROOT.rglob("*.py")}
 
 
 def _cycle(graph: dict[str, set[str]]) -> list[str] | None:
@@ -82,7 +58,7 @@ def _cycle(graph: dict[str, set[str]]) -> list[str] | None:
 
 def test_the_reader_sees_imports_inside_functions() -> None:
     source = "def f():\n    from ._chain import chain_of\n    from .._errors import InputError\n"
-    assert _imports_of(source, f"{PACKAGE}._result", False) == {f"{PACKAGE}._chain"}
+    assert _imports(ROOT / "_result.py", source) == {f"{PACKAGE}._chain"}
     assert _cycle({"a": {"b"}, "b": {"a"}}) == ["a", "b", "a"]
     assert _imports(ROOT / "_ik.py") >= {f"{PACKAGE}._chain", f"{PACKAGE}._numeric"}
 
