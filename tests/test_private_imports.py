@@ -5,7 +5,7 @@ included).
 A package's ``_module.py`` files are its own; what another package needs is
 re-exported by the package's ``__init__`` (or a public module of it, e.g.
 ``armkit.sim.assembly``) and imported from there. The top-level private helpers
-(``armkit._errors``, ``_clock``, ``_files``, ``_lock``, ``_terminal``) are the
+(``armkit._errors``, ``_inputs``, ``_clock``, ``_files``, ``_lock``, ``_terminal``) are the
 shared floor of every package and may be imported anywhere.
 """
 

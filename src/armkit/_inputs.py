@@ -2,8 +2,9 @@
 
 Every check raises ``InputError`` (an ``ArmkitError`` and a ``ValueError``) that
 names the argument, what is allowed and what was given, shown briefly: numbers
-to 6 significant digits, arrays by their shape, never a raw array or a
-309-digit number.
+to 6 significant digits, arrays by their shape (and a short vector's values),
+never a raw array or a 309-digit number. ``mm`` and ``brief`` show a point and
+a number the same way in every package's messages.
 """
 
 from __future__ import annotations
