@@ -24,7 +24,7 @@ from ._closed_fast import FixedSolver, Q, fixed_solver
 from ._closed_free import FreeSolver, free_solver
 from ._family import PlanarFamily, detect, wrist_range
 from ._pose import pitch_scalar
-from ._scalar import State, compile_state
+from ._state import Lanes, State, compile_state
 from ._steps import Fixed, Step, frames_of, steps_of
 
 F64 = NDArray[np.float64]
@@ -37,10 +37,10 @@ class Chain:
     Attributes:
         name: the model's name.  dof: number of joints.
         steps, tool: the chain (see ``_steps``).
-        state: the scalar forward kinematics, q (dof floats) [rad] -> ``ChainState``.
+        state, lanes: the forward kinematics of one q (dof floats) [rad] and of N (dof
+            lanes (N,)) [rad], each -> ``ChainState`` (see ``_state``).
         lower, upper, home: joint limits and home [rad] as Python floats;
-        lower_a, upper_a, home_a: the same as arrays, shape (dof,); signs, offsets: each
-            step's sign and angle offset [rad], shape (dof,).
+        lower_a, upper_a, home_a: the same as arrays, shape (dof,).
         joint_names: the joints' names.
         default_pitch: the model's pitch when none is given [rad], or None.
         reach: upper bound on the tool point's distance from the world origin [m];
@@ -61,14 +61,13 @@ class Chain:
     steps: tuple[Step, ...]
     tool: Fixed
     state: State
+    lanes: Lanes
     lower: tuple[float, ...]
     upper: tuple[float, ...]
     home: tuple[float, ...]
     lower_a: F64
     upper_a: F64
     home_a: F64
-    signs: F64
-    offsets: F64
     joint_names: tuple[str, ...]
     default_pitch: float | None
     reach: float
@@ -118,7 +117,7 @@ def compile_chain(model: ArmModel) -> Chain:
             f"{model.name}: the links add up to {reach:.3g} m; armkit's kinematics takes arms "
             f"up to {MAX_REACH / 1000:g} km (check the model's lengths are in mm)"
         )
-    state = compile_state(steps, tool)
+    state, lanes = compile_state(steps, tool)
     at_zero = state([0.0] * model.dof)
     T0 = np.eye(4)
     T0[:3, :3] = np.array(at_zero.R).T
@@ -138,14 +137,13 @@ def compile_chain(model: ArmModel) -> Chain:
         steps=steps,
         tool=tool,
         state=state,
+        lanes=lanes,
         lower=lower,
         upper=upper,
         home=home,
         lower_a=np.array(lower),
         upper_a=np.array(upper),
         home_a=np.array(home),
-        signs=np.array([s.sign for s in steps]),
-        offsets=np.array([s.offset for s in steps]),
         joint_names=model.joint_names,
         default_pitch=model.default_pitch,
         reach=reach,

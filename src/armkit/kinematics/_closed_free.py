@@ -14,7 +14,7 @@ from collections.abc import Callable
 from ._closed_fast import FixedSolver, Found, Q
 from ._family import PlanarFamily
 from ._pose import pitch_scalar
-from ._scalar import State
+from ._state import State
 
 FreeSolver = Callable[[float, float, float, Q], "Found | None"]
 _TWO_PI = 2.0 * math.pi

@@ -1,35 +1,23 @@
-"""Forward kinematics, frames and the geometric Jacobian: one vectorised sweep.
+"""Forward kinematics, frames and the geometric Jacobian, of one pose or of N.
 
-``sweep`` walks the chain's steps once over N joint vectors ((3, N) columns and
-origin): the reference, which a single pose's scalar fast path (``_scalar``) is pinned to.
+One pose runs the chain's generated code on floats, N poses the same code on
+numpy lanes (``_state``), over cache-sized chunks. ``fk_frames`` multiplies the
+steps' dense 4x4 transforms: the reference the tests pin both to.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._errors import InputError
 from .._inputs import joints
 from ..model import ArmModel
 from ._chain import Chain, chain_of
-from ._scalar import ChainState
-from ._steps import Fixed, Terms
+from ._state import ChainState
+from ._steps import rot
 
 F64 = NDArray[np.float64]
-Cols = list[F64]
 CHUNK = 4096  # poses per pass: keeps every temporary array in the CPU cache
-
-
-@dataclass(frozen=True)
-class Sweep:
-    """Tool poses T (N, 4, 4) [m]; Jacobians J (N, 6, dof) or None; frames (N, dof + 2, 4, 4) or None."""
-
-    T: F64
-    J: F64 | None
-    frames: F64 | None
 
 
 def fk(model: ArmModel, q: ArrayLike) -> F64:
@@ -47,12 +35,7 @@ def fk(model: ArmModel, q: ArrayLike) -> F64:
     qa = joints(q, chain.dof)
     if qa.ndim == 1:
         return pose_of(chain.state(qa.tolist()))
-    if len(qa) <= CHUNK:
-        return sweep(chain, qa).T
-    out = np.empty((len(qa), 4, 4))
-    for start in range(0, len(qa), CHUNK):
-        out[start : start + CHUNK] = sweep(chain, qa[start : start + CHUNK]).T
-    return out
+    return poses(chain, qa)
 
 
 def fk_frames(model: ArmModel, q: ArrayLike) -> F64:
@@ -67,11 +50,11 @@ def fk_frames(model: ArmModel, q: ArrayLike) -> F64:
         last the tool frame.
     """
     chain = chain_of(model)
-    qa = joints(q, chain.dof, batch=False)
-    frames = sweep(chain, qa[None, :], frames=True).frames
-    assert frames is not None
-    out: F64 = frames[0]
-    return out
+    T, frames = np.eye(4), [np.eye(4)]
+    for step, v in zip(chain.steps, joints(q, chain.dof, batch=False).tolist(), strict=True):
+        T = T @ step.before.T @ rot("z", step.sign * v + step.offset)
+        frames.append(T @ step.link)
+    return np.stack([*frames, T @ chain.tool.T])
 
 
 def jacobian(model: ArmModel, q: ArrayLike) -> F64:
@@ -87,77 +70,39 @@ def jacobian(model: ArmModel, q: ArrayLike) -> F64:
     """
     chain = chain_of(model)
     qa = joints(q, chain.dof)
-    J = sweep(chain, qa.reshape(-1, chain.dof), jacobian=True).J
-    assert J is not None
-    out: F64 = J[0] if qa.ndim == 1 else J
-    return out
+    J = jacobians(chain, qa.reshape(-1, chain.dof))[1]
+    return J[0] if qa.ndim == 1 else J
 
 
-def pose_of(st: ChainState) -> F64:
+def pose_of(st: ChainState[float]) -> F64:
     """The 4x4 tool pose [m] of a scalar chain state."""
     (ax, ay, az), (bx, by, bz), (cx, cy, cz) = st.R
     px, py, pz = st.p
     return np.array([[ax, bx, cx, px], [ay, by, cy, py], [az, bz, cz, pz], [0.0, 0.0, 0.0, 1.0]])
 
 
-def sweep(chain: Chain, q: F64, *, jacobian: bool = False, frames: bool = False) -> Sweep:
-    """Tool poses of q (N, dof) [rad], and the Jacobians and frames if asked for."""
-    n = q.shape[0]
-    if q.shape[1:] != (chain.dof,):
-        raise InputError(f"q must have shape (N, {chain.dof}), got shape {q.shape}")
-    theta = (q * chain.signs + chain.offsets).T
-    c, s = np.cos(theta), np.sin(theta)
-    cols: Cols = [np.zeros((3, n)) for _ in range(3)]
-    cols[0][0], cols[1][1], cols[2][2] = 1.0, 1.0, 1.0
-    p = np.zeros((3, n))
-    axes, origins, links = [], [], []
-    for i, step in enumerate(chain.steps):
-        cols, p = _apply(step.before, cols, p)
-        axes.append(cols[2] if step.sign > 0 else -cols[2])
-        origins.append(p)
-        cols = [c[i] * cols[0] + s[i] * cols[1], c[i] * cols[1] - s[i] * cols[0], cols[2]]
-        if frames:
-            links.append(_assemble(cols, p) @ step.link)
-    T = _assemble(*_apply(chain.tool, cols, p))
-    J = _jacobian(T, axes, origins) if jacobian else None
-    F = np.stack([np.broadcast_to(np.eye(4), (n, 4, 4)), *links, T], axis=1) if frames else None
-    return Sweep(T, J, F)
+def poses(chain: Chain, q: F64) -> F64:
+    """Tool poses T (N, 4, 4) [m] of joint angles q (N, dof) [rad]."""
+    return _evaluate(chain, q, None)
 
 
-def _combine(terms: Terms, cols: Cols) -> F64:
-    """sum_k coefficient_k * cols[k]; unit coefficients cost no multiplication."""
-    out: F64 | None = None
-    for k, v in terms:
-        term = cols[k] if v == 1.0 else (-cols[k] if v == -1.0 else v * cols[k])
-        out = term if out is None else out + term
-    assert out is not None
-    return out
+def jacobians(chain: Chain, q: F64) -> tuple[F64, F64]:
+    """Tool poses T (N, 4, 4) [m] and Jacobians J (N, 6, dof) of q (N, dof) [rad]."""
+    J = np.empty((len(q), 6, chain.dof))
+    return _evaluate(chain, q, J), J
 
 
-def _apply(F: Fixed, cols: Cols, p: F64) -> tuple[Cols, F64]:
-    """Right-multiply the frame (columns, origin) by the fixed transform F."""
-    if F.shift:
-        p = p + _combine(F.shift, cols)
-    return [cols[j] if t is None else _combine(t, cols) for j, t in enumerate(F.columns)], p
-
-
-def _assemble(cols: Cols, p: F64) -> F64:
-    """Columns and origin (3, N) each -> transforms (N, 4, 4)."""
-    out = np.zeros((p.shape[1], 4, 4))
-    for j, col in enumerate((*cols, p)):
-        out[:, :3, j] = col.T
-    out[:, 3, 3] = 1.0
-    return out
-
-
-def _jacobian(T: F64, axes: Cols, origins: Cols) -> F64:
-    """J (N, 6, dof): per joint, axis x (tool point - point on the axis) and the axis."""
-    tip = T[:, :3, 3].T
-    Jt = np.empty((len(axes), 6, T.shape[0]))
-    for i, (z, o) in enumerate(zip(axes, origins, strict=True)):
-        d = tip - o
-        Jt[i, 0] = z[1] * d[2] - z[2] * d[1]
-        Jt[i, 1] = z[2] * d[0] - z[0] * d[2]
-        Jt[i, 2] = z[0] * d[1] - z[1] * d[0]
-        Jt[i, 3:] = z
-    return np.ascontiguousarray(Jt.transpose(2, 1, 0))
+def _evaluate(chain: Chain, q: F64, J: F64 | None) -> F64:
+    """The poses (N, 4, 4), chunk by chunk on lanes; the Jacobians into J if given."""
+    T = np.zeros((len(q), 4, 4))
+    T[:, 3, 3] = 1.0
+    for s in range(0, len(q), CHUNK):
+        st, at = chain.lanes(list(q[s : s + CHUNK].T)), slice(s, s + CHUNK)
+        for j, col in enumerate((*st.R, st.p)):
+            for i in range(3):
+                T[at, i, j] = col[i]
+        if J is not None:
+            for k, (v, w) in enumerate(zip(st.jv, st.jw, strict=True)):
+                for i in range(3):
+                    J[at, i, k], J[at, 3 + i, k] = v[i], w[i]
+    return T

@@ -28,7 +28,7 @@ from numpy.typing import NDArray
 from ._chain import Chain
 from ._closed import TWO_PI, best, pitch_of_phi, solve, turn_of, wrap
 from ._family import PlanarFamily, Planes, planes
-from ._forward import CHUNK, sweep
+from ._forward import CHUNK, poses
 from ._pose import pitch_of
 
 F64 = NDArray[np.float64]
@@ -74,7 +74,7 @@ def preferred(chain: Chain, seed: F64) -> F64:
     """The pitch [rad] of the tool at each seed (N, dof), shape (N,)."""
     if (seed == chain.home_a).all():
         return np.full(len(seed), chain.home_pitch)
-    return np.asarray(pitch_of(sweep(chain, seed).T), dtype=np.float64)
+    return np.asarray(pitch_of(poses(chain, seed)), dtype=np.float64)
 
 
 def nearest_reachable(chain: Chain, fam: PlanarFamily, b: Planes, want: F64) -> tuple[F64, Bool]:
@@ -119,9 +119,12 @@ def boundary_pitch(
     tx, tz = r - fam.c1[0], z - fam.c1[1]
     (v3x, v3z), l3 = fam.links[2], math.hypot(*fam.links[2])
     k = fam.phi0 - math.atan2(v3z, v3x)  # the approach's angle in the plane less link 3's
-    ranges, r_rho = _ranges(chain, fam), r / np.where(rho < 1e-12, 1.0, rho)
-    on_axis = (rho < 1e-12) | (abs(r) < 1e-12)
-    if fam.lateral or np.any(on_axis):  # the pitch's own distance from want
+    ck, sk, ranges = math.cos(k) / l3, math.sin(k) / l3, _ranges(chain, fam)
+
+    def pitch(x: Lane, z: Lane) -> Lane:  # the pitch [rad] with link 3 at (x, z) [m]
+        return pitch_of_phi(x * ck - z * sk, x * sk + z * ck, r, rho)
+
+    if fam.lateral or np.any((rho < 1e-12) | (abs(r) < 1e-12)):  # the pitch's own gap
         wx3 = wz3 = None
     else:  # pitch = +-(approach angle) + a constant: nearest where link 3 is nearest want's
         c, s = np.where(r > 0, 1.0, -1.0) * np.cos(want), np.sin(want)  # the approach at want
@@ -129,22 +132,10 @@ def boundary_pitch(
     gap, bx, bz = math.inf + 0.0 * tx, 0.0 * tx, 0.0 * tx
     for wx, wz, ex, ez in _boundaries(chain, fam, tx, tz):
         l3x, l3z = tx - wx, tz - wz
-        if wx3 is None:
-            d = _gap(_pitch(l3x, l3z, k, l3, on_axis, r_rho), want)
-        else:
-            d = -(l3x * wx3 + l3z * wz3)
+        d = _gap(pitch(l3x, l3z), want) if wx3 is None else -(l3x * wx3 + l3z * wz3)
         better = _fits(ranges, (ex, ez), (wx - ex, wz - ez), (l3x, l3z)) & (d < gap)
         gap, bx, bz = np.where(better, d, gap), np.where(better, l3x, bx), np.where(better, l3z, bz)
-    return gap, _pitch(bx, bz, k, l3, on_axis, r_rho)
-
-
-def _pitch(l3x: Lane, l3z: Lane, k: float, l3: float, on_axis: Lane, r_rho: Lane) -> Lane:
-    """The pitch [rad] at which link 3 is (l3x, l3z) [m] in the plane (see ``pitch_of_phi``)."""
-    c, s = (
-        (l3x * math.cos(k) - l3z * math.sin(k)) / l3,
-        (l3x * math.sin(k) + l3z * math.cos(k)) / l3,
-    )
-    return np.arctan2(s, np.where(on_axis, abs(c), c * r_rho))
+    return gap, pitch(bx, bz)
 
 
 def _gap(pitch: Lane, want: Lane) -> Lane:

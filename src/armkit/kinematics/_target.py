@@ -9,7 +9,7 @@ from typing import Any, NamedTuple
 from numpy.typing import ArrayLike
 
 from ._pose import pitch_scalar, rotation_angle
-from ._scalar import ChainState
+from ._state import ChainState
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -51,7 +51,7 @@ class Goal(NamedTuple):
     R: tuple[float, ...] | None
 
 
-def errors(goal: Aim, st: ChainState) -> tuple[float, float]:
+def errors(goal: Aim, st: ChainState[float]) -> tuple[float, float]:
     """Position [m] and pitch or orientation [rad] error of a chain state for ``goal``."""
     (px, py, pz), ((gx, gy, gz), pitch, R) = st.p, goal
     pos = math.sqrt((px - gx) ** 2 + (py - gy) ** 2 + (pz - gz) ** 2)

@@ -2,13 +2,12 @@
 in plain floats (``dls_step``) or for k targets at once in numpy (``damped_steps``).
 
 Both solve in the smaller of the two spaces (m x m with J J^T, or n x n with
-J^T J) by one small Cholesky factorisation, ``cholesky_solve``, written once
-over lanes: each entry is a float (one target) or an array of shape (k,) (one
-lane per target). On floats that loop costs about 11 us for 4 task rows and
-20 us for 6, where unrolled code costs 3 us and ``np.linalg.solve`` 10 us (the
-PUMA's LM per call 40-70 % slower through it), so ``dls_step`` keeps three
-faster variants (3 task rows by the adjugate, 4 rows unrolled, the rest by
-numpy), each pinned to ``dls_step_reference`` by a test. Joints marked frozen
+J^T J). The batch form factors by ``cholesky_solve``, written over lanes (each
+entry an array of shape (k,), one lane per target). On floats that loop costs
+about 11 us for 4 task rows and 20 us for 6, where unrolled code costs 3 us and
+``np.linalg.solve`` 10 us (the PUMA's LM per call 40-70 % slower through it), so
+``dls_step`` has three variants (3 task rows by the adjugate, 4 rows unrolled,
+the rest by numpy); tests pin every one to the definition. Joints marked frozen
 (at a limit, pushing outwards) get no motion.
 """
 
@@ -53,17 +52,6 @@ def dls_step(
     if m == 4 and n >= 4:
         return _step4(cols, e, lam)
     return _step_numpy(cols, e, lam)
-
-
-def dls_step_reference(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[float]:
-    """The damped step for one target, every joint free, by ``cholesky_solve`` (any size)."""
-    if len(e) <= len(cols):  # dq = J^T (J J^T + lam I)^-1 e
-        rows = list(zip(*cols, strict=True))
-        tri = [[sum(map(mul, a, b)) for b in rows[: r + 1]] for r, a in enumerate(rows)]
-        y = cholesky_solve(tri, e, lam)
-        return [sum(map(mul, c, y)) for c in cols]
-    tri = [[sum(map(mul, a, b)) for b in cols[: r + 1]] for r, a in enumerate(cols)]
-    return cholesky_solve(tri, [sum(map(mul, c, e)) for c in cols], lam)
 
 
 def advance(
@@ -124,7 +112,7 @@ def cholesky_solve(tri: list[list[Lane]], b: Sequence[Lane], lam: Lane) -> list[
 
 def _step3(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[float]:
     """The damped step for 3 task rows, J^T (J J^T + lam I)^-1 e, with the 3 x 3
-    system solved by its adjugate: the fast variant of ``dls_step_reference``."""
+    system solved by its adjugate."""
     a = d = f = c = g = h = 0.0
     for x, y, z in cols:
         a += x * x
@@ -146,7 +134,7 @@ def _step3(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[fl
 
 def _step4(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[float]:
     """The damped step for 4 task rows, J^T (J J^T + lam I)^-1 e, with the 4 x 4
-    system's Cholesky factorisation unrolled: a fast variant of ``dls_step_reference``."""
+    system's Cholesky factorisation unrolled."""
     s00 = s01 = s02 = s03 = s11 = s12 = s13 = s22 = s23 = s33 = 0.0
     for x, y, z, w in cols:
         s00 += x * x
@@ -179,8 +167,8 @@ def _step4(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[fl
 
 
 def _step_numpy(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[float]:
-    """The damped step by ``np.linalg.solve``: the fast variant of ``dls_step_reference``
-    for 6 task rows (about half its time) and for fewer joints than task rows."""
+    """The damped step by ``np.linalg.solve``: for 6 task rows (half the time of the
+    Cholesky loop on floats) and for fewer joints than task rows."""
     Jt = np.array(cols)  # (n, m)
     if Jt.shape[1] <= Jt.shape[0]:
         A = Jt.T @ Jt

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from operator import ge, le
 
 from .._chain import Chain
-from .._scalar import ChainState, State
+from .._state import ChainState, State
 from ._dls import advance, dls_step
 from ._outcome import Attempt, beyond_reach, within
 from ._residual import Residual, Task, residual, task_jacobian
@@ -141,8 +141,8 @@ def lm_run(prob: _Problem, q: list[float]) -> tuple[list[float], Residual, int]:
 
 
 def _turn_first_joint(
-    prob: _Problem, q: list[float], st: ChainState, res: Residual
-) -> tuple[list[float], ChainState, Residual]:
+    prob: _Problem, q: list[float], st: ChainState[float], res: Residual
+) -> tuple[list[float], ChainState[float], Residual]:
     """q with joint 0 alone turned to its best angle, if that lowers the cost.
 
     The turn is exact at any angle, where a linearised step is not: a target

@@ -13,7 +13,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._chain import Chain
-from .._forward import sweep
+from .._forward import jacobians, poses
 from ._dls import damped_steps
 from ._lm import CANDIDATES, LMSettings
 from ._residual_batch import BatchResidual, BatchTask, residual_batch, task_cost
@@ -94,9 +94,8 @@ def solve_lm_batch(
 
 
 def _evaluate(chain: Chain, task: BatchTask, q: F64) -> BatchResidual:
-    out = sweep(chain, q, jacobian=True)
-    assert out.J is not None
-    return residual_batch(task, out.J, out.T)
+    T, J = jacobians(chain, q)
+    return residual_batch(task, J, T)
 
 
 def _new_runs(owner: IDX, q: F64, r: BatchResidual, st: LMSettings) -> _Runs:
@@ -176,7 +175,7 @@ def _restart_points(
     random joint vectors for an odd restart count, else one uniform sample."""
     k, c = len(task.P), CANDIDATES
     q = rng.uniform(chain.lower_a, chain.upper_a, size=(k, c, chain.dof))
-    cost = task_cost(task.take(np.repeat(np.arange(k), c)), sweep(chain, q.reshape(k * c, -1)).T)
+    cost = task_cost(task.take(np.repeat(np.arange(k), c)), poses(chain, q.reshape(k * c, -1)))
     pick = np.where(restarts % 2 == 1, cost.reshape(k, c).argmin(axis=1), 0)
     start = q[np.arange(k), pick]
     return start, _evaluate(chain, task, start)

@@ -20,7 +20,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._pose import pitch_scalar
-from .._scalar import ChainState, Vec3
+from .._state import ChainState, Vec3
 
 A = TypeVar("A", float, NDArray[np.float64])
 
@@ -61,7 +61,7 @@ class Residual:
     cost: float
 
 
-def residual(task: Task, st: ChainState, jac: bool = True) -> Residual:
+def residual(task: Task, st: ChainState[float], jac: bool = True) -> Residual:
     """Residual of the chain state ``st`` for ``task``; the Jacobian rows if ``jac``."""
     p = st.p
     e0, e1, e2 = task.p[0] - p[0], task.p[1] - p[1], task.p[2] - p[2]
@@ -80,7 +80,7 @@ def residual(task: Task, st: ChainState, jac: bool = True) -> Residual:
     return Residual([e0, e1, e2], cols, math.sqrt(pos2), 0.0, pos2)
 
 
-def task_jacobian(task: Task, st: ChainState) -> list[tuple[float, ...]]:
+def task_jacobian(task: Task, st: ChainState[float]) -> list[tuple[float, ...]]:
     """The task's weighted Jacobian by columns: per joint, as many floats as e has rows."""
     w = task.weight
     if task.pitch is not None:
@@ -95,7 +95,7 @@ def wrap(angle: A) -> A:
     return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 
-def pitch_gradient(st: ChainState) -> list[float]:
+def pitch_gradient(st: ChainState[float]) -> list[float]:
     """d pitch / dq [rad/rad], one float per joint."""
     (ax, ay, az), (px, py, _) = st.R[0], st.p
     rho = max(math.hypot(px, py), 1e-9)

@@ -20,8 +20,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._chain import Chain
-from .._forward import sweep
-from .._scalar import ChainState, Vec3
+from .._forward import poses
+from .._state import ChainState, Vec3
 from ._residual import Task
 from ._residual_batch import BatchTask, task_cost
 
@@ -29,7 +29,7 @@ F64 = NDArray[np.float64]
 V = tuple[Any, Any, Any]  # a vector: three floats, or three arrays (k,) of one component each
 
 
-def best_turn(task: Task, st: ChainState, i: int) -> float:
+def best_turn(task: Task, st: ChainState[float], i: int) -> float:
     """The turn of joint i [rad] that best aligns the tool with the task."""
     R = task.R
     goal_axes = None if R is None else tuple((R[k], R[3 + k], R[6 + k]) for k in range(3))
@@ -41,7 +41,7 @@ def turn_first_joint(chain: Chain, task: BatchTask, q: F64) -> F64:
     """q (k, dof) [rad] with joint 0 turned to its best angle where that helps (as
     ``_lm._turn_first_joint``: where the best angle is outside the limits, the joint faces
     the opposite way instead, if that is inside them)."""
-    T = sweep(chain, q).T
+    T = poses(chain, q)
     st = chain.state(list(chain.home))  # joint 0's axis never moves
     p, goal = _lanes(T[:, :3, 3]), _lanes(task.P)
     tool_axes = tuple(_lanes(T[:, :3, k]) for k in range(3))
@@ -53,7 +53,7 @@ def turn_first_joint(chain: Chain, task: BatchTask, q: F64) -> F64:
     flip = (turned[:, 0] < lo) | (turned[:, 0] > hi)
     turned[flip, 0] += np.where(turned[flip, 0] > hi, -np.pi, np.pi)
     inside = (turned[:, 0] >= lo) & (turned[:, 0] <= hi)
-    better = task_cost(task, sweep(chain, turned).T) < task_cost(task, T)
+    better = task_cost(task, poses(chain, turned)) < task_cost(task, T)
     return np.where((inside & (flip | better))[:, None], turned, q)
 
 

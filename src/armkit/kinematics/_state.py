@@ -1,40 +1,55 @@
-"""Tool pose and Jacobian for ONE joint vector in plain floats: the scalar fast path.
+"""The chain's forward kinematics as generated Python: one source, run over floats or lanes.
 
-For 2-6 joints plain floats beat numpy's per-call overhead tenfold. The steps of
-``_steps`` are written out once per chain as Python source (every zero term
-dropped, every constant a literal) and compiled; tests pin it to ``_forward``.
+The steps of ``_steps`` are written out once per chain as Python source (every
+zero term dropped, every constant a literal) and compiled twice: with
+``math``'s cos and sin for ONE joint vector in plain floats (for 2-6 joints
+tenfold faster than numpy's per-call overhead), and with numpy's for N joint
+vectors, each quantity a lane of shape (N,) (``_forward``'s batches). Tests pin
+both to the dense product of the steps' 4x4 transforms (``fk_frames``).
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import Any
+from typing import Any, Generic, TypeVar
+
+import numpy as np
+from numpy.typing import NDArray
 
 from ._steps import Fixed, Step, Terms
 
+N = TypeVar("N", float, NDArray[np.float64])  # a float, or a lane: one value per pose (N,)
 Vec3 = tuple[float, float, float]
 _COLS = ("a", "b", "c")
 
 
-class ChainState:
-    """Tool pose and Jacobian at one q; the linear part is computed on first use.
+class ChainState(Generic[N]):
+    """Tool pose and Jacobian at one q (floats) or at N (lanes); the linear part on first use.
 
     Attributes:
         p: tool point [m].
-        R: tool rotation columns (x = approach, y, z), each a unit Vec3.
+        R: tool rotation columns (x = approach, y, z), each a unit vector.
         jw: per joint, the angular velocity per unit angle (signed joint axis).
         origins: per joint, a point on its axis [m].
+    A lane that does not depend on q (a zero, say) may stay a float.
     """
 
     __slots__ = ("R", "_jv", "jw", "origins", "p")
+    p: tuple[N, N, N]
+    R: tuple[tuple[N, N, N], tuple[N, N, N], tuple[N, N, N]]
+    jw: list[tuple[N, N, N]]
+    origins: list[tuple[N, N, N]]
 
-    def __init__(self, p: Vec3, R: tuple[Vec3, Vec3, Vec3], jw: list[Vec3], origins: list[Vec3]):
+    def __init__(
+        self, p: tuple[N, N, N], R: tuple[tuple[N, N, N], tuple[N, N, N], tuple[N, N, N]],
+        jw: list[tuple[N, N, N]], origins: list[tuple[N, N, N]],
+    ) -> None:  # fmt: skip
         self.p, self.R, self.jw, self.origins = p, R, jw, origins
-        self._jv: list[Vec3] | None = None
+        self._jv: list[tuple[N, N, N]] | None = None
 
     @property
-    def jv(self) -> list[Vec3]:
+    def jv(self) -> list[tuple[N, N, N]]:
         """Per joint, axis x (tool point - point on the axis) [m/rad]."""
         if self._jv is None:
             px, py, pz = self.p
@@ -46,15 +61,20 @@ class ChainState:
         return self._jv
 
 
-State = Callable[[list[float]], ChainState]
+State = Callable[[list[float]], ChainState[float]]
+Lanes = Callable[[list[NDArray[np.float64]]], ChainState[NDArray[np.float64]]]
 
 
-def compile_state(steps: tuple[Step, ...], tool: Fixed) -> State:
-    """The function q [rad] (dof floats) -> ``ChainState`` for this chain."""
-    namespace: dict[str, Any] = {"cos": math.cos, "sin": math.sin, "ChainState": ChainState}
-    exec(compile(source_of(steps, tool), "<armkit chain>", "exec"), namespace)
-    fn: State = namespace["chain_state"]
-    return fn
+def compile_state(steps: tuple[Step, ...], tool: Fixed) -> tuple[State, Lanes]:
+    """The chain's functions q (dof floats) [rad] -> ``ChainState``, and q (dof lanes (N,))
+    [rad] -> ``ChainState`` of lanes: one source (``source_of``) compiled twice."""
+    code = compile(source_of(steps, tool), "<armkit chain>", "exec")
+    out: list[Any] = []
+    for xm in (math, np):
+        namespace: dict[str, Any] = {"cos": xm.cos, "sin": xm.sin, "ChainState": ChainState}
+        exec(code, namespace)
+        out.append(namespace["chain_state"])
+    return out[0], out[1]
 
 
 def source_of(steps: tuple[Step, ...], tool: Fixed) -> str:
@@ -89,7 +109,7 @@ def _sum(terms: Terms, axis: str) -> str:
 
 def _fixed(F: Fixed) -> list[str]:
     """p += the shift; then the rotation columns that change, all at once."""
-    out = [f"p{x} += {_sum(F.shift, x)}" for x in "xyz"] if F.shift else []
+    out = [f"p{x} = p{x} + {_sum(F.shift, x)}" for x in "xyz"] if F.shift else []
     names, values = [], []
     for j, terms in enumerate(F.columns):
         if terms is not None:
