@@ -35,17 +35,11 @@ class Misses:
 FixedSolver = Callable[[float, float, float, "float | None", Q, "Misses | None"], Found]
 
 
-def into(v: float, lo: float, hi: float, j: int, misses: Misses | None) -> float | None:
-    """Joint j's angle v [rad] moved by whole turns into [lo, hi] (within ``_SLACK``, then
-    clamped); None if no turn fits, recorded in ``misses`` as its excess and its value at
-    the turn nearest the range. (Called only for v outside [lo, hi]: the check is inline.)"""
-    w = v - _TWO_PI * math.floor((v - lo + _SLACK) / _TWO_PI)
-    if w <= hi + _SLACK:
-        return lo if w < lo else (hi if w > hi else w)
-    if misses is not None:
-        near = 0.5 * (lo + hi) + math.remainder(v - 0.5 * (lo + hi), _TWO_PI)
-        misses.violations.append((max(lo - near, near - hi), j, near))
-    return None
+def miss(v: float, lo: float, hi: float, j: int, misses: Misses) -> None:
+    """Record in ``misses`` that joint j's angle v [rad] cannot turn into [lo, hi]: its
+    excess and its value at the turn nearest the range."""
+    near = 0.5 * (lo + hi) + math.remainder(v - 0.5 * (lo + hi), _TWO_PI)
+    misses.violations.append((max(lo - near, near - hi), j, near))
 
 
 def pitch_for_phi(phi: float, r: float, rho: float) -> float:
@@ -70,7 +64,7 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
     lat, az, bs, c0, s0 = fam.lateral, fam.azimuth_r, fam.base_sign, math.cos(phi0), math.sin(phi0)
     (ux, uy, uz), pi, tp = fam.u, math.pi, _TWO_PI
     cos, sin, acos, atan2, sqrt = math.cos, math.sin, math.acos, math.atan2, math.sqrt
-    rem, straight = math.remainder, _STRAIGHT
+    rem, floor, straight = math.remainder, math.floor, _STRAIGHT
     yaw3 = base == 0 and fam.planar == (1, 2, 3)  # the common layout: joints in order
     pair = base is None and fam.planar == (0, 1) and dof == 2
 
@@ -99,9 +93,12 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
         given = not three and pitch is not None  # 2 planar joints: check the pitch they give
         for r, q0 in branches:
             if base is not None and not lo0 <= q0 <= hi0:  # by whole turns into the limits
-                if (w := into(q0, lo0, hi0, base, misses)) is None:
+                w = q0 - tp * floor((q0 - lo0 + _SLACK) / tp)
+                if w > hi0 + _SLACK:
+                    if misses is not None:
+                        miss(q0, lo0, hi0, base, misses)
                     continue
-                q0 = w
+                q0 = lo0 if w < lo0 else (hi0 if w > hi0 else w)
             wx, wz, turn = r - c1x, z - c1z, 0.0
             if three:  # the wrist point, from the plane turn that gives the pitch
                 if plain or not (lat or rho < 1e-12 or -1e-12 < r < 1e-12):
@@ -134,20 +131,29 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
                             misses.reasons.append("pitch")
                         continue
                 v1, v2 = s1 * a1, s2 * a2
-                if not lo1 <= v1 <= hi1:  # into the limits (the call only when outside)
-                    if (w := into(v1, lo1, hi1, j1, misses)) is None:
+                if not lo1 <= v1 <= hi1:  # as the base: inline, a call costs more than this
+                    w = v1 - tp * floor((v1 - lo1 + _SLACK) / tp)
+                    if w > hi1 + _SLACK:
+                        if misses is not None:
+                            miss(v1, lo1, hi1, j1, misses)
                         continue
-                    v1 = w
-                if not lo2 <= v2 <= hi2:  # into the limits (the call only when outside)
-                    if (w := into(v2, lo2, hi2, j2, misses)) is None:
+                    v1 = lo1 if w < lo1 else (hi1 if w > hi1 else w)
+                if not lo2 <= v2 <= hi2:
+                    w = v2 - tp * floor((v2 - lo2 + _SLACK) / tp)
+                    if w > hi2 + _SLACK:
+                        if misses is not None:
+                            miss(v2, lo2, hi2, j2, misses)
                         continue
-                    v2 = w
+                    v2 = lo2 if w < lo2 else (hi2 if w > hi2 else w)
                 if three:
                     v3 = s3 * (turn - a1 - a2)
-                    if not lo3 <= v3 <= hi3:  # into the limits (the call only when outside)
-                        if (w := into(v3, lo3, hi3, j3, misses)) is None:
+                    if not lo3 <= v3 <= hi3:
+                        w = v3 - tp * floor((v3 - lo3 + _SLACK) / tp)
+                        if w > hi3 + _SLACK:
+                            if misses is not None:
+                                miss(v3, lo3, hi3, j3, misses)
                             continue
-                        v3 = w
+                        v3 = lo3 if w < lo3 else (hi3 if w > hi3 else w)
                     if yaw3:
                         d0, d1, d2, d3 = q0 - seed[0], v1 - seed[1], v2 - seed[2], v3 - seed[3]
                         sol = (q0, v1, v2, v3, *seed[4:]) if dof > 4 else (q0, v1, v2, v3)

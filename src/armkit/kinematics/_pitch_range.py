@@ -120,11 +120,13 @@ def boundary_pitch(
     (v3x, v3z), l3 = fam.links[2], math.hypot(*fam.links[2])
     k = fam.phi0 - math.atan2(v3z, v3x)  # the approach's angle in the plane less link 3's
     ck, sk, ranges = math.cos(k) / l3, math.sin(k) / l3, _ranges(chain, fam)
+    on_axis, r_rho = (rho < 1e-12) | (abs(r) < 1e-12), r / np.where(rho < 1e-12, 1.0, rho)
 
     def pitch(x: Lane, z: Lane) -> Lane:  # the pitch [rad] with link 3 at (x, z) [m]
-        return pitch_of_phi(x * ck - z * sk, x * sk + z * ck, r, rho)
+        c, s = x * ck - z * sk, x * sk + z * ck  # the approach (see ``pitch_of_phi``)
+        return np.arctan2(s, np.where(on_axis, abs(c), c * r_rho))
 
-    if fam.lateral or np.any((rho < 1e-12) | (abs(r) < 1e-12)):  # the pitch's own gap
+    if fam.lateral or np.any(on_axis):  # the pitch's own distance from want
         wx3 = wz3 = None
     else:  # pitch = +-(approach angle) + a constant: nearest where link 3 is nearest want's
         c, s = np.where(r > 0, 1.0, -1.0) * np.cos(want), np.sin(want)  # the approach at want
