@@ -162,8 +162,10 @@ def test_load_score_by_suffix(tmp_path: Path) -> None:
     assert load_score(tmp_path / "a.txt", transpose=-12).notes[0].pitch == 48
     with pytest.raises(ScoreError, match=r"a\.doc:0:0: unknown score format; .*\.mid"):
         load_score(tmp_path / "a.doc")
-    with pytest.raises(ScoreError, match="cannot read"):
-        load_score(tmp_path / "missing.txt")
+    with pytest.raises(ScoreError, match=r"missing\.txt: cannot read the file: [^()]*$"):
+        load_score(tmp_path / "missing.txt")  # the whole file: no line, column or token
+    with pytest.raises(ScoreError, match=r"missing\.mid: cannot read the file: [^()]*$"):
+        load_score(tmp_path / "missing.mid")
     (tmp_path / "b.txt").write_bytes(b"C4 q\nE4 \xff q")
     with pytest.raises(ScoreError, match=r"b\.txt:2:4: not UTF-8"):
         load_score(tmp_path / "b.txt")

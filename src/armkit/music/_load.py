@@ -43,7 +43,7 @@ def read_text(path: str | Path) -> str:
     try:
         data = Path(path).read_bytes()
     except OSError as exc:
-        raise ScoreError(source, 0, 0, "", f"cannot read the file: {exc.strerror or exc}") from exc
+        raise ScoreError.whole(source, f"cannot read the file: {exc.strerror or exc}") from exc
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError as exc:

@@ -39,7 +39,7 @@ def read_midi(path: str | Path) -> Score:
     try:
         data = Path(path).read_bytes()
     except OSError as exc:
-        raise ScoreError(source, 0, 0, "", f"cannot read the file: {exc.strerror or exc}") from exc
+        raise ScoreError.whole(source, f"cannot read the file: {exc.strerror or exc}") from exc
     return parse_midi(data, source)
 
 

@@ -20,7 +20,8 @@ MAX_SECONDS = 3600.0  # the longest piece armkit plays [s]
 
 class ScoreError(ArmkitError, ValueError):
     """A score file is unreadable or wrong. The message starts with
-    ``file:line:column:`` and names the offending token.
+    ``file:line:column:`` and names the offending token; one about the whole file
+    (``ScoreError.whole``: it cannot be read) starts with ``file:``.
 
     Attributes:
         file: the file (or ``"<text>"``).
@@ -33,6 +34,13 @@ class ScoreError(ArmkitError, ValueError):
         shown = f"{token!r}" if token else "end of input"
         super().__init__(f"{file}:{line}:{column}: {problem} (at {shown})")
         self.file, self.line, self.column, self.token = file, line, column, token
+
+    @classmethod
+    def whole(cls, file: str, problem: str) -> ScoreError:
+        """An error about the whole file (line and column 0, no token): ``file: problem``."""
+        err = cls(file, 0, 0, "", problem)
+        err.args = (f"{file}: {problem}",)
+        return err
 
 
 @dataclass(frozen=True)
