@@ -7,14 +7,12 @@ pitches are MIDI note numbers (60 = C4 = middle C, 69 = A4 = 440 Hz).
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass, replace
 
 from .._errors import ArmkitError, InputError
+from ..scene import note_name as note_name
+from ..scene import note_number
 
-NAMES = ("C", "C#", "D", "D#", "E", "F", "F#", "G", "G#", "A", "A#", "B")
-_STEPS = {"C": 0, "D": 2, "E": 4, "F": 5, "G": 7, "A": 9, "B": 11}
-_PITCH = re.compile(r"([A-Ga-g])([#b]?)(-?\d{1,2})")
 MAX_SECONDS = 3600.0  # the longest piece armkit plays [s]
 
 
@@ -119,18 +117,7 @@ def make_score(notes: list[Note], source: str) -> Score:
     return Score(tuple(sorted(notes, key=lambda n: (n.onset, n.pitch))), source)
 
 
-def note_name(pitch: int) -> str:
-    """MIDI note number -> scientific name: 60 -> ``"C4"``, 61 -> ``"C#4"``."""
-    return f"{NAMES[pitch % 12]}{pitch // 12 - 1}"
-
-
 def parse_pitch(text: str) -> int | None:
     """``"C4"``, ``"c#4"``, ``"Bb3"``, ``"A-1"`` -> MIDI number; None if it is not
-    a note name or is outside 0..127."""
-    m = _PITCH.fullmatch(text)
-    if m is None:
-        return None
-    letter, accidental, octave = m.groups()
-    pitch = 12 * (int(octave) + 1) + _STEPS[letter.upper()]
-    pitch += {"#": 1, "b": -1, "": 0}[accidental]
-    return pitch if 0 <= pitch <= 127 else None
+    a note name or is outside 0..127 (the scene's ``note_number``, one reading of names)."""
+    return note_number(text) if text == text.strip() else None

@@ -16,6 +16,7 @@ from ._grasp import grasp as grasp
 from ._instruments import Drum as Drum
 from ._instruments import Xylophone as Xylophone
 from ._instruments import note_name as note_name
+from ._instruments import note_number as note_number
 from ._load import load_scene as load_scene
 from ._load import shipped_scenes as shipped_scenes
 from ._objects import Board as Board
