@@ -19,10 +19,9 @@ from ._lm import solve_lm
 from ._lm_batch import solve_lm_batch
 from ._outcome import Attempt, finish
 from ._residual import Task
-from ._residual_batch import BatchTask
 
 F64 = NDArray[np.float64]
-Solver = Callable[[Chain, Task, list[float], float, float, int], Attempt]
+Solver = Callable[[Chain, Task[float], list[float], float, float, int], Attempt]
 SOLVERS: dict[Method, Solver] = {
     "lm": solve_lm,
     "ccd": solve_ccd,
@@ -57,7 +56,9 @@ def solve_many(
         q (N, dof) with NaN rows where no solution was found, ``ok``, ``reason``
         (``"too_far"`` or ``"no_convergence"`` where not ok).
     """
-    task = BatchTask(P, pitch, R, chain.weight)
+    x, y, z = np.ascontiguousarray(P.T)
+    R9 = None if R is None else tuple(np.ascontiguousarray(R.reshape(len(P), 9).T))
+    task = Task((x, y, z), pitch, R9, chain.weight)
     out = solve_lm_batch(chain, task, seeds, tol_pos, tol_ang, rng_seed)
     reason = np.where(out.converged, "", np.where(out.far, "too_far", "no_convergence"))
     q = np.where(out.converged[:, None], out.q, np.nan)

@@ -17,7 +17,7 @@ from ._residual import Residual, Task, residual
 from ._sampling import clamp
 from ._turn import best_turn
 
-Move = Callable[[list[float], Residual], tuple[list[float], Residual]]
+Move = Callable[[list[float], Residual[float]], tuple[list[float], Residual[float]]]
 CCD_SWEEPS = 200
 JACOBIAN_ITERATIONS = 300
 JACOBIAN_STEP = 0.2  # [rad]
@@ -27,7 +27,7 @@ RANDOM_MAX_SIGMA = 0.1  # [rad]
 
 
 def descend(
-    chain: Chain, task: Task, q_seed: list[float], tol: tuple[float, float], budget: int,
+    chain: Chain, task: Task[float], q_seed: list[float], tol: tuple[float, float], budget: int,
     move: Move, jac: bool = False,
 ) -> Attempt:  # fmt: skip
     """``move`` repeated from ``q_seed`` [rad] (clamped into the limits) until the position
@@ -42,13 +42,18 @@ def descend(
 
 
 def solve_ccd(
-    chain: Chain, task: Task, q_seed: list[float], tol_pos: float, tol_ang: float, rng_seed: int
+    chain: Chain,
+    task: Task[float],
+    q_seed: list[float],
+    tol_pos: float,
+    tol_ang: float,
+    rng_seed: int,
 ) -> Attempt:
     """CCD from ``q_seed`` [rad]: sweep the joints from the tool back to the base, turning
     each one alone to the angle that best aligns the tool with the target (in closed
     form, see ``_turn``), clamped into its limits. ``rng_seed`` is unused."""
 
-    def sweep(q: list[float], res: Residual) -> tuple[list[float], Residual]:
+    def sweep(q: list[float], res: Residual[float]) -> tuple[list[float], Residual[float]]:
         for i in reversed(range(len(q))):
             turned = q[i] + best_turn(task, chain.state(q), i)
             q[i] = min(max(turned, chain.lower[i]), chain.upper[i])
@@ -58,14 +63,19 @@ def solve_ccd(
 
 
 def solve_jacobian(
-    chain: Chain, task: Task, q_seed: list[float], tol_pos: float, tol_ang: float, rng_seed: int
+    chain: Chain,
+    task: Task[float],
+    q_seed: list[float],
+    tol_pos: float,
+    tol_ang: float,
+    rng_seed: int,
 ) -> Attempt:
     """Resolved-rate iteration from ``q_seed`` [rad]: dq = J^+ e with J^+ = J^T (J J^T +
     eps I)^-1 (eps tiny, only to survive singular poses), shortened to at most
     ``JACOBIAN_STEP``, q clamped into the limits; no damping schedule, no line search:
     the method LM improves on. ``rng_seed`` is unused."""
 
-    def move(q: list[float], res: Residual) -> tuple[list[float], Residual]:
+    def move(q: list[float], res: Residual[float]) -> tuple[list[float], Residual[float]]:
         assert res.cols is not None
         dq = dls_step(res.cols, res.e, JACOBIAN_EPS, None)
         q = advance(q, dq, JACOBIAN_STEP, chain.lower, chain.upper)
@@ -75,7 +85,12 @@ def solve_jacobian(
 
 
 def solve_random(
-    chain: Chain, task: Task, q_seed: list[float], tol_pos: float, tol_ang: float, rng_seed: int
+    chain: Chain,
+    task: Task[float],
+    q_seed: list[float],
+    tol_pos: float,
+    tol_ang: float,
+    rng_seed: int,
 ) -> Attempt:
     """Seed 003's random search from ``q_seed`` [rad], reproducible from ``rng_seed``: nudge
     every joint by a small random amount, keep the new angles only if the tool got closer.
@@ -87,7 +102,7 @@ def solve_random(
     """
     gauss = random.Random(rng_seed).gauss
 
-    def nudge(q: list[float], res: Residual) -> tuple[list[float], Residual]:
+    def nudge(q: list[float], res: Residual[float]) -> tuple[list[float], Residual[float]]:
         sigma = min(max(res.cost**0.5 / chain.reach, 1e-7), RANDOM_MAX_SIGMA)
         trial = clamp([v + gauss(0.0, sigma) for v in q], chain.lower, chain.upper)
         new = residual(task, chain.state(trial), jac=False)

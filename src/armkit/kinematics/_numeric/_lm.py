@@ -56,7 +56,7 @@ CANDIDATES = 8  # random joint vectors drawn per restart; the best one starts th
 @dataclass(slots=True)
 class _Problem:
     state: State
-    task: Task
+    task: Task[float]
     lower: tuple[float, ...]
     upper: tuple[float, ...]
     tol_pos: float
@@ -65,7 +65,12 @@ class _Problem:
 
 
 def solve_lm(
-    chain: Chain, task: Task, q_seed: list[float], tol_pos: float, tol_ang: float, rng_seed: int
+    chain: Chain,
+    task: Task[float],
+    q_seed: list[float],
+    tol_pos: float,
+    tol_ang: float,
+    rng_seed: int,
 ) -> Attempt:
     """LM from ``q_seed`` [rad] (clamped into the limits), restarting when stalled.
 
@@ -108,7 +113,7 @@ def _restart_point(prob: _Problem, sample: Callable[[], list[float]], k: int) ->
     return best
 
 
-def lm_run(prob: _Problem, q: list[float]) -> tuple[list[float], Residual, int]:
+def lm_run(prob: _Problem, q: list[float]) -> tuple[list[float], Residual[float], int]:
     """One LM run from q [rad] (first joint turned, see ``_turn_first_joint``):
     (final q, its residual, iterations)."""
     task, state, settings = prob.task, prob.state, prob.settings
@@ -141,8 +146,8 @@ def lm_run(prob: _Problem, q: list[float]) -> tuple[list[float], Residual, int]:
 
 
 def _turn_first_joint(
-    prob: _Problem, q: list[float], st: ChainState[float], res: Residual
-) -> tuple[list[float], ChainState[float], Residual]:
+    prob: _Problem, q: list[float], st: ChainState[float], res: Residual[float]
+) -> tuple[list[float], ChainState[float], Residual[float]]:
     """q with joint 0 alone turned to its best angle, if that lowers the cost.
 
     The turn is exact at any angle, where a linearised step is not: a target

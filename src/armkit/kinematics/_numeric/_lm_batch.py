@@ -13,10 +13,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._chain import Chain
-from .._forward import jacobians, poses
+from .._forward import CHUNK
 from ._dls import damped_steps
 from ._lm import CANDIDATES, LMSettings
-from ._residual_batch import BatchResidual, BatchTask, residual_batch, task_cost
+from ._residual import Task, costs, residual
 from ._turn import turn_first_joint
 
 F64 = NDArray[np.float64]
@@ -59,6 +59,18 @@ class _Runs:
 
 
 @dataclass(frozen=True)
+class BatchResidual:
+    """Residuals e (k, m), masked weighted Jacobians J (k, m, dof), errors [m], [rad] and
+    costs |e|^2 (k,): ``_residual``'s lanes as arrays, one row per run."""
+
+    e: F64
+    J: F64
+    position_error: F64
+    angle_error: F64
+    cost: F64
+
+
+@dataclass(frozen=True)
 class BatchOutcome:
     """q [rad] (N, dof), converged (N,), restarts (N,), and far (N,): True where the
     target is beyond the chain's reach."""
@@ -70,12 +82,13 @@ class BatchOutcome:
 
 
 def solve_lm_batch(
-    chain: Chain, task: BatchTask, q0: F64, tol_pos: float, tol_ang: float, rng_seed: int
+    chain: Chain, task: Task[F64], q0: F64, tol_pos: float, tol_ang: float, rng_seed: int
 ) -> BatchOutcome:
-    """LM on N targets from seeds q0 [rad], shape (N, dof) (clamped into the limits)."""
-    st, n = BATCH_SETTINGS, len(task.P)
+    """LM on N targets (lanes (N,)) from seeds q0 [rad], shape (N, dof) (clamped into the
+    limits)."""
+    (x, y, z), st, n = task.p, BATCH_SETTINGS, len(q0)
     rng = np.random.default_rng(rng_seed)
-    far = np.linalg.norm(task.P, axis=1) > chain.reach
+    far = np.sqrt(x * x + y * y + z * z) > chain.reach
     out = BatchOutcome(q0.copy(), np.zeros(n, bool), np.zeros(n, np.int64), far)
     budget = np.where(far, 0, st.max_restarts)
     q = turn_first_joint(chain, task, np.clip(q0, chain.lower_a, chain.upper_a))
@@ -93,9 +106,21 @@ def solve_lm_batch(
     return out
 
 
-def _evaluate(chain: Chain, task: BatchTask, q: F64) -> BatchResidual:
-    T, J = jacobians(chain, q)
-    return residual_batch(task, J, T)
+def _evaluate(chain: Chain, task: Task[F64], q: F64) -> BatchResidual:
+    """The residuals of q (k, dof) [rad] for the k targets of ``task``, chunk by chunk."""
+    k, m = len(q), 3 + (task.pitch is not None) + 3 * (task.R is not None)
+    e, J, errors = np.empty((k, m)), np.empty((k, m, chain.dof)), np.empty((3, k))
+    for s in range(0, k, CHUNK):
+        at = slice(s, s + CHUNK)
+        r = residual(task.take(at), chain.lanes(list(q[at].T)))
+        assert r.cols is not None
+        for i, v in enumerate(r.e):
+            e[at, i] = v
+        for j, col in enumerate(r.cols):
+            for i, v in enumerate(col):
+                J[at, i, j] = v
+        errors[:, at] = r.position_error, r.angle_error, r.cost
+    return BatchResidual(e, J, errors[0], errors[1], errors[2])
 
 
 def _new_runs(owner: IDX, q: F64, r: BatchResidual, st: LMSettings) -> _Runs:
@@ -107,7 +132,7 @@ def _new_runs(owner: IDX, q: F64, r: BatchResidual, st: LMSettings) -> _Runs:
     )  # fmt: skip
 
 
-def _iterate(chain: Chain, task: BatchTask, s: _Runs, st: LMSettings) -> None:
+def _iterate(chain: Chain, task: Task[F64], s: _Runs, st: LMSettings) -> None:
     """One damped step for every run (in place); accepted where the cost fell."""
     lo, hi = chain.lower_a, chain.upper_a
     lam = s.mu * s.cost + 1e-12
@@ -132,7 +157,7 @@ def _iterate(chain: Chain, task: BatchTask, s: _Runs, st: LMSettings) -> None:
 
 def _respawn(
     chain: Chain,
-    task: BatchTask,
+    task: Task[F64],
     runs: _Runs,
     out: BatchOutcome,
     budget: NDArray[np.int64],
@@ -169,13 +194,13 @@ def _restart_owners(waiting: IDX, live: NDArray[np.int64], left: NDArray[np.int6
 
 
 def _restart_points(
-    chain: Chain, task: BatchTask, restarts: NDArray[np.int64], rng: np.random.Generator
+    chain: Chain, task: Task[F64], restarts: NDArray[np.int64], rng: np.random.Generator
 ) -> tuple[F64, BatchResidual]:
     """Per run, where it begins (as ``_lm._restart_point``): the lowest-cost of CANDIDATES
     random joint vectors for an odd restart count, else one uniform sample."""
-    k, c = len(task.P), CANDIDATES
+    k, c = len(restarts), CANDIDATES
     q = rng.uniform(chain.lower_a, chain.upper_a, size=(k, c, chain.dof))
-    cost = task_cost(task.take(np.repeat(np.arange(k), c)), poses(chain, q.reshape(k * c, -1)))
+    cost = costs(chain.lanes, task.take(np.repeat(np.arange(k), c)), q.reshape(k * c, -1))
     pick = np.where(restarts % 2 == 1, cost.reshape(k, c).argmin(axis=1), 0)
     start = q[np.arange(k), pick]
     return start, _evaluate(chain, task, start)

@@ -25,23 +25,23 @@ class Attempt:
     """
 
     q: list[float]
-    residual: Residual
+    residual: Residual[float]
     iterations: int
     restarts: int
     converged: bool
 
 
-def within(res: Residual, tol_pos: float, tol_ang: float) -> bool:
+def within(res: Residual[float], tol_pos: float, tol_ang: float) -> bool:
     """True when the position [m] and angle [rad] errors are inside the tolerances."""
     return res.position_error <= tol_pos and res.angle_error <= tol_ang
 
 
-def beyond_reach(chain: Chain, task: Task) -> bool:
+def beyond_reach(chain: Chain, task: Task[float]) -> bool:
     """True when the target point is farther from the base than any pose can reach."""
     return math.sqrt(sum(v * v for v in task.p)) > chain.reach
 
 
-def finish(chain: Chain, method: Method, task: Task, attempt: Attempt) -> IKResult:
+def finish(chain: Chain, method: Method, task: Task[float], attempt: Attempt) -> IKResult:
     """The ``IKResult`` of a converged attempt; raises otherwise.
 
     Raises:

@@ -12,7 +12,6 @@ written once over lanes: vectors are 3-tuples of floats (one target,
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -20,45 +19,41 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._chain import Chain
-from .._forward import poses
-from .._state import ChainState, Vec3
-from ._residual import Task
-from ._residual_batch import BatchTask, task_cost
+from .._forward import CHUNK
+from .._state import ChainState
+from ._residual import N, Ops, Task, costs
 
 F64 = NDArray[np.float64]
 V = tuple[Any, Any, Any]  # a vector: three floats, or three arrays (k,) of one component each
 
 
-def best_turn(task: Task, st: ChainState[float], i: int) -> float:
-    """The turn of joint i [rad] that best aligns the tool with the task."""
-    R = task.R
+def best_turn(task: Task[N], st: ChainState[N], i: int) -> N:
+    """The turn of joint i [rad] that best aligns the tool with the task (floats or lanes)."""
+    R, ops = task.R, task.ops
     goal_axes = None if R is None else tuple((R[k], R[3 + k], R[6 + k]) for k in range(3))
-    pairs = axis_pairs(st.R, goal_axes, task.pitch, task.p, math)
-    return float(turn_angle(st.jw[i], st.origins[i], st.p, task.p, task.weight, pairs, math.atan2))
+    pairs = axis_pairs(st.R, goal_axes, task.pitch, task.p, ops)
+    turn: N = turn_angle(st.jw[i], st.origins[i], st.p, task.p, task.weight, pairs, ops.atan2)
+    return turn
 
 
-def turn_first_joint(chain: Chain, task: BatchTask, q: F64) -> F64:
+def turn_first_joint(chain: Chain, task: Task[F64], q: F64) -> F64:
     """q (k, dof) [rad] with joint 0 turned to its best angle where that helps (as
     ``_lm._turn_first_joint``: where the best angle is outside the limits, the joint faces
     the opposite way instead, if that is inside them)."""
-    T = poses(chain, q)
-    st = chain.state(list(chain.home))  # joint 0's axis never moves
-    p, goal = _lanes(T[:, :3, 3]), _lanes(task.P)
-    tool_axes = tuple(_lanes(T[:, :3, k]) for k in range(3))
-    goal_axes = None if task.R is None else tuple(_lanes(task.R[:, :, k]) for k in range(3))
-    pairs = axis_pairs(tool_axes, goal_axes, task.pitch, goal, np)
     lo, hi = chain.lower[0], chain.upper[0]
     turned = q.copy()
-    turned[:, 0] += turn_angle(st.jw[0], st.origins[0], p, goal, task.weight, pairs, np.arctan2)
+    for s in range(0, len(q), CHUNK):
+        at = slice(s, s + CHUNK)
+        turned[at, 0] += best_turn(task.take(at), chain.lanes(list(q[at].T)), 0)
     flip = (turned[:, 0] < lo) | (turned[:, 0] > hi)
     turned[flip, 0] += np.where(turned[flip, 0] > hi, -np.pi, np.pi)
     inside = (turned[:, 0] >= lo) & (turned[:, 0] <= hi)
-    better = task_cost(task, poses(chain, turned)) < task_cost(task, T)
+    better = costs(chain.lanes, task, turned) < costs(chain.lanes, task, q)
     return np.where((inside & (flip | better))[:, None], turned, q)
 
 
 def turn_angle(
-    z: Vec3, o: Vec3, p: V, goal: V, weight: float, pairs: list[tuple[V, V]],
+    z: V, o: V, p: V, goal: V, weight: float, pairs: list[tuple[V, V]],
     atan2: Callable[[Any, Any], Any],
 ) -> Any:  # fmt: skip
     """The best turn [rad] about the axis z through o of tool point p towards ``goal`` [m],
@@ -75,30 +70,25 @@ def turn_angle(
 
 
 def axis_pairs(
-    tool: Sequence[V], goal: Sequence[V] | None, pitch: Any, p: V, xm: Any
+    tool: Sequence[V], goal: Sequence[V] | None, pitch: Any, p: V, ops: Ops
 ) -> list[tuple[V, V]]:
     """(tool axis, target axis) pairs for the angular part of the task, over lanes.
 
     Args:
         tool: the tool's axes x, y, z (its rotation's columns), as vectors.
         goal: the target's axes, or None; pitch: the target pitch [rad] or None.
-        p: the target point [m]. xm: ``math`` for floats, ``numpy`` for arrays.
+        p: the target point [m]. ops: ``FLOATS`` or ``LANES``.
     """
     if goal is not None:
         return list(zip(tool, goal, strict=True))
     if pitch is None:
         return []
     a = tool[0]  # the approach axis; its horizontal part stands in on the base axis
-    on_axis = xm.hypot(p[0], p[1]) < 1e-9
+    on_axis = ops.hypot(p[0], p[1]) < 1e-9
     hx, hy = p[0] + on_axis * (a[0] - p[0]), p[1] + on_axis * (a[1] - p[1])
-    rho = xm.hypot(hx, hy) + 1e-300  # 0 only with a vertical approach on the base axis
-    c, s = xm.cos(pitch), xm.sin(pitch)
+    rho = ops.hypot(hx, hy) + 1e-300  # 0 only with a vertical approach on the base axis
+    c, s = ops.cos(pitch), ops.sin(pitch)
     return [(a, (c * hx / rho, c * hy / rho, s))]
-
-
-def _lanes(M: F64) -> V:
-    """Rows of M (k, 3) as a vector of three arrays (k,)."""
-    return M[:, 0], M[:, 1], M[:, 2]
 
 
 def _sub(a: V, b: V) -> V:
@@ -117,7 +107,7 @@ def _cross(a: V, b: V) -> V:
     return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
 
-def _reject(a: V, z: Vec3) -> V:
+def _reject(a: V, z: V) -> V:
     """a minus its component along the unit vector z."""
     k = _dot(a, z)
     return (a[0] - k * z[0], a[1] - k * z[1], a[2] - k * z[2])
