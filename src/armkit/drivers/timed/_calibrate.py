@@ -80,8 +80,8 @@ def _calibrate_joint(
     j = driver.model.joint_index(name)
     out: list[Traverse] = []
     for n, pose in enumerate(driver.config.calibration_pose[name]):
-        for other, rest in pose.items():
-            _rest(driver, other, rest, say)
+        for other, rest in pose.items():  # a limit's name, or an angle [deg] in the file
+            _rest(driver, other, rest if isinstance(rest, str) else math.radians(rest), say)
         say(f"{name}: running it to its lower limit.")
         driver.drive_to_limit(name, -1, _waiter(ask, name, "lower"))
         for k in range(runs):

@@ -1,60 +1,14 @@
-"""The ``[drivers.owi535]`` table of a model file: defaults for a unit not yet
-calibrated, and 000's constant-rate timing model for comparison."""
+"""Timing models from the ``[drivers.owi535]`` table of a model file (``OwiSection``):
+defaults for a unit not yet calibrated, and 000's constant-rate model for comparison."""
 
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
-from dataclasses import dataclass
 
 from ...model import ArmModel, OwiSection, owi_section
 from ._timing import JointTiming, TimingModel
 
 JOINTS = ("base", "shoulder", "elbow", "wrist")
-
-
-@dataclass(frozen=True)
-class OwiConfig:
-    """Driver settings that are not timings.
-
-    Attributes:
-        teleop_step_s: one key press in keyboard mode [s].
-        base_reversed: byte-1 values swapped for this unit.
-        watchdog_margin_s: overrun of a move's plan after which the watchdog stops it [s].
-        rehome_order: joints in the order re-homing drives them.
-        rehome_to: {joint: "lower" | "upper"} limit each joint is driven against.
-        calibration_order: joints in the order calibration times them.
-        calibration_pose: {joint: [{other joint: "lower" | "upper" | angle [rad]}]}
-            poses in which that joint is timed (two with different load sides
-            separate direction from gravity).
-    """
-
-    teleop_step_s: float
-    base_reversed: bool
-    watchdog_margin_s: float
-    rehome_order: tuple[str, ...]
-    rehome_to: dict[str, str]
-    calibration_order: tuple[str, ...]
-    calibration_pose: dict[str, list[dict[str, str | float]]]
-
-
-def owi_config(model: ArmModel) -> OwiConfig:
-    """Non-timing settings from the model file (ModelError: not an OWI model or a bad field)."""
-    cfg = owi_section(model)
-    return OwiConfig(
-        teleop_step_s=cfg.teleop_step_ms / 1000.0,
-        base_reversed=cfg.base_reversed,
-        watchdog_margin_s=cfg.watchdog_margin_s,
-        rehome_order=cfg.rehome_order,
-        rehome_to=dict(cfg.rehome_to),
-        calibration_order=cfg.calibration_order,
-        calibration_pose={j: [_rests(p) for p in cfg.calibration_pose[j]] for j in JOINTS},
-    )
-
-
-def _rests(pose: Mapping[str, str | float]) -> dict[str, str | float]:
-    """{joint: "lower" | "upper" | angle [rad]} from the file's degrees."""
-    return {k: v if isinstance(v, str) else math.radians(v) for k, v in pose.items()}
 
 
 def constant_rate(model: ArmModel, traverse_s: dict[str, float] | None = None) -> TimingModel:

@@ -19,8 +19,8 @@ from numpy.typing import NDArray
 from ..._clock import Clock
 from ..._errors import InputError
 from ..._lock import exclusive
-from ...model import ArmModel, check_grip, check_joints, move_time
-from ._config import OwiConfig, default_timing, owi_config
+from ...model import ArmModel, OwiSection, check_grip, check_joints, move_time, owi_section
+from ._config import default_timing
 from ._estimate import recovered
 from ._journal import warn
 from ._motors import Device, Motors
@@ -59,7 +59,7 @@ class TimedDriver(TimedTurns):
         """
         self.durable = durable
         self.model, self.clock, self.path = model, clock, path
-        self.config: OwiConfig = owi_config(model)
+        self.config: OwiSection = owi_section(model)
         self._lock = exclusive(path, f"the OWI-535 unit {unit!r} ({path})")
         try:
             self._open(model, device, clock, unit)

@@ -66,7 +66,7 @@ def status_line(driver: TimedDriver) -> str:
 
 def run_keys(driver: TimedDriver, stdin: TextIO = sys.stdin, out: TextIO = sys.stdout) -> int:
     """The keyboard loop until 'q' (or end of input). The terminal is restored on every exit."""
-    step_s = driver.config.teleop_step_s
+    step_s = driver.config.teleop_step_ms / 1000.0
     out.write(HELP + "\n")
     with cbreak(stdin):
         _show(out, status_line(driver))

@@ -18,8 +18,7 @@ from numpy.typing import NDArray
 
 from ..._clock import Clock
 from ..._errors import ArmkitError, InputError
-from ...model import ArmModel
-from ._config import OwiConfig
+from ...model import ArmModel, OwiSection
 from ._estimate import MOVING, after_run, pending_of
 from ._journal import Until, journaled_run, raise_if_watchdog, write
 from ._motors import Motors, Run
@@ -45,7 +44,7 @@ class TimedTurns:
     clock: Clock
     path: Path
     durable: bool
-    config: OwiConfig
+    config: OwiSection
     motors: Motors
     state: ArmState
 
