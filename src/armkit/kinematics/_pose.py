@@ -25,14 +25,18 @@ def pitch_of(T: F64) -> F64:
     Returns:
         Pitch [rad], shape () or (N,), in (-pi, pi].
     """
-    a = T[..., :3, 0]
-    p = T[..., :3, 3]
-    rho = np.hypot(p[..., 0], p[..., 1])
+    a, p = T[..., :3, 0], T[..., :3, 3]
+    return np.asarray(pitch_lanes((a[..., 0], a[..., 1], a[..., 2]), (p[..., 0], p[..., 1])))
+
+
+def pitch_lanes(a: tuple[F64, F64, F64], p: tuple[F64, F64]) -> F64:
+    """``pitch_of`` for approach axes a and tool points' (x, y) p [m], given component by
+    component as arrays of any one shape (floats count as constant arrays) [rad]."""
+    (ax, ay, az), (px, py) = a, p
+    rho = np.hypot(px, py)
     on_axis = rho < 1e-9
-    safe = np.where(on_axis, 1.0, rho)
-    along = (a[..., 0] * p[..., 0] + a[..., 1] * p[..., 1]) / safe
-    along = np.where(on_axis, np.hypot(a[..., 0], a[..., 1]), along)
-    return np.asarray(np.arctan2(a[..., 2], along))
+    along = (ax * px + ay * py) / np.where(on_axis, 1.0, rho)
+    return np.asarray(np.arctan2(az, np.where(on_axis, np.hypot(ax, ay), along)))
 
 
 def pitch_scalar(a: Vec3, p: Vec3) -> float:

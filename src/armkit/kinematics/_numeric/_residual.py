@@ -21,7 +21,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._forward import CHUNK
-from .._pose import pitch_scalar
+from .._pose import pitch_lanes, pitch_scalar
 from .._state import ChainState, Lanes, Vec3
 
 F64 = NDArray[np.float64]
@@ -139,14 +139,9 @@ def wrap(angle: A) -> A:
 
 
 def _pitch(st: ChainState[Any], ops: Ops) -> Any:
-    """The tool's pitch [rad] (``pitch_of``): ``pitch_scalar``, or its form over lanes."""
-    (ax, ay, az), (px, py, _) = st.R[0], st.p
-    if ops is FLOATS:
-        return pitch_scalar(st.R[0], st.p)
-    rho = np.hypot(px, py)
-    on_axis = rho < 1e-9
-    along = (ax * px + ay * py) / np.where(on_axis, 1.0, rho)
-    return np.arctan2(az, np.where(on_axis, np.hypot(ax, ay), along))
+    """The tool's pitch [rad] (``pitch_of``), of one state or of lanes."""
+    a, p = st.R[0], st.p
+    return pitch_scalar(a, p) if ops is FLOATS else pitch_lanes(a, (p[0], p[1]))
 
 
 def pitch_gradient(st: ChainState[N], ops: Ops = FLOATS) -> list[N]:
