@@ -8,7 +8,6 @@ from numpy.typing import NDArray
 from armkit.kinematics import IKResult, Target, fk, pitch_of
 from armkit.kinematics._chain import chain_of
 from armkit.kinematics._numeric import solve_one
-from armkit.kinematics._target import Goal
 from armkit.model import ArmModel
 
 ARMS = ("owi535", "openmanipulator_x", "lynx6", "planar2", "al5d", "puma560")
@@ -48,7 +47,7 @@ def solve(
     """A numeric method on a valid target, with the restarts' random seed given."""
     p = tuple(np.asarray(target.position, dtype=float).tolist())
     R = None if target.orientation is None else tuple(np.ravel(target.orientation).tolist())
-    goal = Goal(p, target.pitch, R)  # type: ignore[arg-type]
+    goal = (p, target.pitch, R)
     return solve_one(method, chain_of(model), goal, seed.tolist(), tol_pos, tol_ang, rng_seed)  # type: ignore[arg-type]
 
 

@@ -8,7 +8,7 @@ import pytest
 from numeric_cases import ARMS, joint_vectors, target_for
 
 from armkit.kinematics._chain import chain_of
-from armkit.kinematics._numeric._residual import LANES, Task, residual, rotation_log
+from armkit.kinematics._residual import LANES, Task, residual, rotation_log
 from armkit.model import load_model
 
 

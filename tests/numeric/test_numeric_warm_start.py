@@ -13,9 +13,9 @@ from numeric_cases import ARMS, TOL_ANG, TOL_POS, joint_vectors, masks_for, targ
 from armkit.kinematics import fk, jacobian
 from armkit.kinematics._chain import chain_of
 from armkit.kinematics._numeric import _lm
-from armkit.kinematics._numeric._residual import Task, costs, residual
 from armkit.kinematics._numeric._sampling import clamp
 from armkit.kinematics._numeric._turn import best_turn, turn_first_joint
+from armkit.kinematics._residual import Task, costs, residual
 from armkit.model import load_model
 
 

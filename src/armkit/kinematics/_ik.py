@@ -18,7 +18,7 @@ from ._forward import CHUNK
 from ._numeric import solve_many, solve_one
 from ._pitch_range import free_batch, preferred
 from ._result import IKBatchResult, IKResult
-from ._target import Goal, Target
+from ._target import Target
 
 F64 = NDArray[np.float64]
 MethodName = Literal["auto", "analytic", "lm", "ccd", "jacobian", "random"]
@@ -116,7 +116,7 @@ def _numeric_ik(
     R = None if orientation is None else rotation(orientation, "orientation")
     if R is not None and pitch is not None:
         raise InputError("give pitch or orientation, not both")
-    goal = Goal(p, pitch, None if R is None else tuple(R.ravel().tolist()))
+    goal = (p, pitch, None if R is None else tuple(R.ravel().tolist()))
     tol = (tolerance(tols[0], "tol_m"), tolerance(tols[1], "tol_rad"))
     return solve_one(use, chain, goal, list(seed), *tol)
 

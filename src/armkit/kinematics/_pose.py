@@ -44,9 +44,3 @@ def pitch_scalar(a: Vec3, p: Vec3) -> float:
     rho = math.hypot(p[0], p[1])
     h = (a[0] * p[0] + a[1] * p[1]) / rho if rho >= 1e-9 else math.hypot(a[0], a[1])
     return math.atan2(a[2], h)
-
-
-def rotation_angle(R_goal: tuple[float, ...], cols: tuple[Vec3, Vec3, Vec3]) -> float:
-    """Angle [rad] of R_goal R^T, R_goal row-major, R given by its columns."""
-    trace = sum(R_goal[3 * i + k] * cols[k][i] for i in range(3) for k in range(3))
-    return math.acos(min(1.0, max(-1.0, 0.5 * (trace - 1.0))))

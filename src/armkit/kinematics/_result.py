@@ -10,7 +10,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ._chain import Chain
-from ._target import Aim, errors
+from ._residual import Residual, Task, residual
+from ._target import Aim
 
 F64 = NDArray[np.float64]
 Ranked = Sequence[tuple[float, tuple[float, ...]]]  # (distance to the seed, q) pairs
@@ -73,12 +74,17 @@ class IKResult:
     @property
     def position_error(self) -> float:
         """Distance from the tool point of ``q`` to the target [m], by forward kinematics."""
-        return errors(self.goal, self.chain.state(list(min(self.ranked)[1])))[0]
+        return self._residual().position_error
 
     @property
     def angle_error(self) -> float:
         """Pitch or orientation error of ``q`` [rad] (0 when none was asked for)."""
-        return errors(self.goal, self.chain.state(list(min(self.ranked)[1])))[1]
+        return self._residual().angle_error
+
+    def _residual(self) -> Residual[float]:
+        """The residual of ``q`` for the goal (the errors only)."""
+        p, pitch, R = self.goal
+        return residual(Task(p, pitch, R, 1.0), self.chain.state(list(min(self.ranked)[1])), False)
 
     def __repr__(self) -> str:
         q = np.round(np.degrees(self.q), 3).tolist()

@@ -12,13 +12,13 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._chain import Chain
+from .._residual import Task
 from .._result import IKBatchResult, IKResult, Method
-from .._target import Goal
+from .._target import Aim
 from ._baselines import solve_ccd, solve_jacobian, solve_random
 from ._lm import solve_lm
 from ._lm_batch import solve_lm_batch
 from ._outcome import Attempt, finish
-from ._residual import Task
 
 F64 = NDArray[np.float64]
 Solver = Callable[[Chain, Task[float], list[float], float, float, int], Attempt]
@@ -31,7 +31,7 @@ SOLVERS: dict[Method, Solver] = {
 
 
 def solve_one(
-    method: Method, chain: Chain, goal: Goal, seed: list[float], tol_pos: float, tol_ang: float,
+    method: Method, chain: Chain, goal: Aim, seed: list[float], tol_pos: float, tol_ang: float,
     rng_seed: int = 0,
 ) -> IKResult:  # fmt: skip
     """One checked target by a numeric method, from ``seed`` [rad] (clamped into the limits).

@@ -11,9 +11,9 @@ import random
 from collections.abc import Callable
 
 from .._chain import Chain
+from .._residual import Residual, Task, residual
 from ._dls import advance, dls_step
 from ._outcome import Attempt, within
-from ._residual import Residual, Task, residual
 from ._sampling import clamp
 from ._turn import best_turn
 

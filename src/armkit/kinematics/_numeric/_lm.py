@@ -19,10 +19,10 @@ from dataclasses import dataclass
 from operator import ge, le
 
 from .._chain import Chain
+from .._residual import Residual, Task, residual, task_jacobian
 from .._state import ChainState, State
 from ._dls import advance, dls_step
 from ._outcome import Attempt, beyond_reach, within
-from ._residual import Residual, Task, residual, task_jacobian
 from ._sampling import clamp, joint_sampler
 from ._turn import best_turn
 

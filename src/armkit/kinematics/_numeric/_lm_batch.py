@@ -14,9 +14,9 @@ from numpy.typing import NDArray
 
 from .._chain import Chain
 from .._forward import CHUNK
+from .._residual import Task, costs, residual
 from ._dls import damped_steps
 from ._lm import CANDIDATES, LMSettings
-from ._residual import Task, costs, residual
 from ._turn import turn_first_joint
 
 F64 = NDArray[np.float64]

@@ -9,9 +9,8 @@ import numpy as np
 
 from ..._errors import NoSolutionError, UnreachableError
 from .._chain import Chain
+from .._residual import Residual, Task
 from .._result import IKResult, Method
-from .._target import Goal
-from ._residual import Residual, Task
 
 
 @dataclass(slots=True)
@@ -51,7 +50,7 @@ def finish(chain: Chain, method: Method, task: Task[float], attempt: Attempt) ->
     """
     res = attempt.residual
     if attempt.converged:  # q's arrays are built when read (see IKResult)
-        goal = Goal(task.p, task.pitch, task.R)
+        goal = (task.p, task.pitch, task.R)
         ranked = ((0.0, tuple(attempt.q)),)
         return IKResult(ranked, goal, chain, method, attempt.iterations, attempt.restarts)
     q = np.array(attempt.q)

@@ -20,8 +20,8 @@ from numpy.typing import NDArray
 
 from .._chain import Chain
 from .._forward import CHUNK
+from .._residual import N, Ops, Task, costs
 from .._state import ChainState
-from ._residual import N, Ops, Task, costs
 
 F64 = NDArray[np.float64]
 V = tuple[Any, Any, Any]  # a vector: three floats, or three arrays (k,) of one component each

@@ -20,9 +20,9 @@ from typing import Any, Generic, NamedTuple, TypeVar
 import numpy as np
 from numpy.typing import NDArray
 
-from .._forward import CHUNK
-from .._pose import pitch_lanes, pitch_scalar
-from .._state import ChainState, Lanes, Vec3
+from ._forward import CHUNK
+from ._pose import pitch_lanes, pitch_scalar
+from ._state import ChainState, Lanes, Vec3
 
 F64 = NDArray[np.float64]
 N = TypeVar("N", float, F64)  # a float, or a lane: one value per target (k,)
