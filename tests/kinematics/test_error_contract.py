@@ -41,7 +41,7 @@ def test_empty_batch_gives_an_empty_result(arm: str, method: str) -> None:
 CALLS = [
     lambda: fk(OMX, [0.0, 0.0]),
     lambda: fk(OMX, "abcd"),
-    lambda: fk_frames(OMX, np.zeros((2, 4))),
+    lambda: fk_frames(OMX, np.zeros((2, 3))),
     lambda: jacobian(OMX, [np.nan] * 4),
     lambda: ik(OMX, (0.2, 0.0, 0.1), pitch="up"),
     lambda: ik(OMX, (0.2, 0.0, 0.1), pitch=np.float64(np.nan)),

@@ -56,6 +56,11 @@ def test_frames(name: str) -> None:
     assert frames.shape == (m.dof + 2, 4, 4)
     assert np.allclose(frames[0], np.eye(4))
     assert np.allclose(frames[-1], fk(m, q))
+    qs = np.random.default_rng(4).uniform(m.lower, m.upper, (7, m.dof))
+    many = fk_frames(m, qs)  # a batch: each pose's frames
+    assert many.shape == (7, m.dof + 2, 4, 4)
+    for i in range(7):
+        assert np.allclose(many[i], fk_frames(m, qs[i]), atol=1e-15)
 
 
 @pytest.mark.parametrize("name", ARMS)

@@ -123,3 +123,32 @@ def test_link_capsules_join_the_frames_the_clearance_check_uses(name: str, tmp_p
     assert gaps.min(axis=1).max() < 1e-9  # every sphere on a frame origin
     assert gaps.min(axis=0).max() < 1e-9  # every frame origin has a sphere
     assert len(centres) == 2 * len(m.link_radii)
+
+
+def test_an_arm_read_from_urdf_moves_in_the_simulator_and_is_checked_for_clearance(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A URDF has no driver table and no gripper: the generic simulated bus drives it,
+    grip is refused in one line, and the clearance check sees its base column (two
+    capsules of joint frames: the base to the waist joint, the waist up to the shoulder)
+    as the DH model's one, so it refuses what the DH model refuses."""
+    from armkit.scene import check_clear, link_names
+
+    m = load_model("openmanipulator_x")
+    path = tmp_path / "omx.urdf"
+    path.write_text(urdf_of(m))
+    back = load_model(path)
+    assert link_names(back)[:2] == ("base column", "base column")
+    up = ik(m, (0.2, 0.0, 0.1), 0.0).q
+    down = ik(m, (0.2, 0.0, -0.01), -1.2).q
+    for model in (m, back):
+        assert check_clear(model, model.home) is None and check_clear(model, up) is None
+        hit = check_clear(model, down)
+        assert hit is not None and hit.object == "table"
+    assert main(["--arm", str(path), "move", "200", "0", "100"]) == 0
+    assert "gripper at x 200.0 y 0.0 z 100.0 mm" in capsys.readouterr().out
+    assert main(["--arm", str(path), "move", "200", "0", "-10"]) == 2
+    assert "into the table" in capsys.readouterr().err
+    assert main(["--arm", str(path), "grip", "20"]) == 2
+    err = capsys.readouterr().err
+    assert "has no gripper" in err and err.count("\n") == 1

@@ -33,10 +33,11 @@ class Rig:
 
 
 def generic_config(model: ArmModel) -> DynamixelSection:
-    """The generic bus's setup: servo IDs 1..dof, the gripper next, extended position mode."""
+    """The generic bus's setup: servo IDs 1..dof, the gripper next (none if the model has
+    no gripper), extended position mode."""
     return DynamixelSection(
         ids=tuple(range(1, model.dof + 1)),
-        gripper_id=model.dof + 1,
+        gripper_id=model.dof + 1 if model.gripper.present else None,
         baudrate=GENERIC_BAUD,
         gripper_ticks=(1024, 3072),
         operating_mode="extended",

@@ -19,5 +19,7 @@ def calibration_points(
     points = [(sid, j, (center, center + per_rad), (0.0, 1.0)) for j, sid in enumerate(cfg.ids)]
     closed, opened = cfg.gripper_ticks
     g = model.gripper
-    points.append((cfg.gripper_id, -1, (float(closed), float(opened)), (g.width_min, g.width_max)))
+    if cfg.gripper_id is not None:
+        grip = (cfg.gripper_id, -1, (float(closed), float(opened)), (g.width_min, g.width_max))
+        points.append(grip)
     return points

@@ -95,6 +95,7 @@ class DynamixelDriver:
         self._extended = cfg.operating_mode == "extended"
         self.ids = list(cfg.ids)
         self.gripper_id = cfg.gripper_id
+        self.servos = [*self.ids] if cfg.gripper_id is None else [*self.ids, cfg.gripper_id]
         self._ticks_per_rad = cfg.ticks_per_turn / (2.0 * math.pi)
         self._center = cfg.center_tick
         self._grip_ticks = cfg.gripper_ticks
@@ -112,15 +113,16 @@ class DynamixelDriver:
         return self.model.joint_names
 
     def _setup(self, gripper_current: int) -> None:
-        self.bus.check_models([*self.ids, self.gripper_id])
+        self.bus.check_models(self.servos)
         mode = xm.MODE_EXTENDED_POSITION if self._extended else xm.MODE_POSITION
         for sid in self.ids:
             self.bus.set_operating_mode(sid, mode)
             self.bus.set_eeprom(sid, "Drive Mode", xm.DRIVE_MODE_TIME_BASED)  # normal direction
-        self.bus.set_eeprom(self.gripper_id, "Drive Mode", 0)
-        self.bus.set_operating_mode(self.gripper_id, xm.MODE_CURRENT_POSITION)
-        self.bus.write(self.gripper_id, "Goal Current", gripper_current)
-        self.bus.set_torque([*self.ids, self.gripper_id], True)
+        if self.gripper_id is not None:
+            self.bus.set_eeprom(self.gripper_id, "Drive Mode", 0)
+            self.bus.set_operating_mode(self.gripper_id, xm.MODE_CURRENT_POSITION)
+            self.bus.write(self.gripper_id, "Goal Current", gripper_current)
+        self.bus.set_torque(self.servos, True)
 
     def to_ticks(self, q: NDArray[np.float64]) -> NDArray[np.int64]:
         """Joint angles [rad], shape (dof,) -> goal ticks, shape (dof,)."""
@@ -248,6 +250,7 @@ class DynamixelDriver:
         """Open the gripper to ``width`` [m] and wait; a stall on an object is a grasp."""
         tick = self.grip_ticks(width)
         self._alive()
+        assert self.gripper_id is not None  # else the model has no gripper: grip_ticks refused
         self.bus.write(self.gripper_id, "Goal Position", tick)
         stopped(self.bus, self.clock, [self.gripper_id], 3.0)
 
@@ -274,13 +277,13 @@ class DynamixelDriver:
         """Torque off on every servo: the arm goes limp (support it first)."""
         self._alive()
         self._sent = None
-        self.bus.set_torque([*self.ids, self.gripper_id], False)
+        self.bus.set_torque(self.servos, False)
 
     def stiffen(self) -> None:
         """Torque on where every servo is now (after ``relax``): the arm holds that pose."""
         self._alive()
         self._sent = None
-        hold_here(self.bus, [*self.ids, self.gripper_id])
+        hold_here(self.bus, self.servos)
 
     def close(self) -> None:
         """Hold position (torque stays on, see the module notes), release the port. Safe twice."""

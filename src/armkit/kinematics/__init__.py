@@ -3,6 +3,7 @@
 from ._chain import joint_frames as joint_frames
 from ._forward import fk as fk
 from ._forward import fk_frames as fk_frames
+from ._forward import frames_on_base_axis as frames_on_base_axis
 from ._forward import jacobian as jacobian
 from ._ik import MethodName as MethodName
 from ._ik import ik as ik

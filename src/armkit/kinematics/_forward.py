@@ -14,7 +14,7 @@ from .._inputs import joints
 from ..model import ArmModel
 from ._chain import Chain, chain_of
 from ._state import ChainState
-from ._steps import rot
+from ._steps import dense_frames
 
 F64 = NDArray[np.float64]
 CHUNK = 4096  # poses per pass: keeps every temporary array in the CPU cache
@@ -39,22 +39,27 @@ def fk(model: ArmModel, q: ArrayLike) -> F64:
 
 
 def fk_frames(model: ArmModel, q: ArrayLike) -> F64:
-    """Every frame of the chain for one pose: world, one per joint, then the tool.
+    """Every frame of the chain: world, one per joint, then the tool.
 
     Args:
-        q: joint angles [rad], shape (dof,).
+        q: joint angles [rad], shape (dof,) or (N, dof).
 
     Returns:
-        Transforms [m], shape (dof + 2, 4, 4): index 0 is the world (base) frame,
-        index i + 1 joint i's frame (for DH models the frame after DH row i), the
-        last the tool frame.
+        Transforms [m], shape (dof + 2, 4, 4) or (N, dof + 2, 4, 4): index 0 is the
+        world (base) frame, index i + 1 joint i's frame (for DH models the frame
+        after DH row i), the last the tool frame.
     """
     chain = chain_of(model)
-    T, frames = np.eye(4), [np.eye(4)]
-    for step, v in zip(chain.steps, joints(q, chain.dof, batch=False).tolist(), strict=True):
-        T = T @ step.before.T @ rot("z", step.sign * v + step.offset)
-        frames.append(T @ step.link)
-    return np.stack([*frames, T @ chain.tool.T])
+    qa = joints(q, chain.dof)
+    out = dense_frames(chain.steps, chain.tool, np.atleast_2d(qa))
+    return out[0] if qa.ndim == 1 else out
+
+
+def frames_on_base_axis(model: ArmModel) -> int:
+    """How many frames of ``fk_frames``, from the world frame on, keep their origin on the
+    vertical axis through the base origin at every pose: the base column's frames (a DH
+    arm with a base yaw: 2, the world and the frame after row 0)."""
+    return chain_of(model).on_axis
 
 
 def jacobian(model: ArmModel, q: ArrayLike) -> F64:

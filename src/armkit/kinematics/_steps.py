@@ -122,3 +122,29 @@ def frames_of(steps: tuple[Step, ...]) -> tuple[JointFrame, ...]:
     return tuple(
         JointFrame(s.before.T @ rot("z", s.offset), (0.0, 0.0, float(s.sign))) for s in steps
     )
+
+
+def dense_frames(steps: tuple[Step, ...], tool: Fixed, q: F64) -> F64:
+    """Every frame (world, one per joint, the tool) of joint angles q (N, dof) [rad], shape
+    (N, dof + 2, 4, 4) [m]: the steps' transforms multiplied out, rotation and
+    translation apart (the reference the generated code is pinned to)."""
+    n = len(q)
+    out = np.zeros((n, len(steps) + 2, 4, 4))
+    out[:, :, 3, 3] = 1.0
+    out[:, 0, :3, :3] = np.eye(3)
+    R, p = np.broadcast_to(np.eye(3), (n, 3, 3)), np.zeros((n, 3))
+
+    def times(R: F64, M: F64) -> F64:  # R (n, 3, 3) times M (3, 3) or (3,): one product
+        return (R.reshape(3 * n, 3) @ M).reshape(n, 3, *M.shape[1:])
+
+    for i, (step, v) in enumerate(zip(steps, q.T, strict=True), 1):
+        B, L = step.before.T, step.link
+        p, Rb = p + times(R, B[:3, 3]), times(R, B[:3, :3])
+        theta = step.sign * v + step.offset
+        c, s = np.cos(theta)[:, None], np.sin(theta)[:, None]
+        x, y = Rb[:, :, 0], Rb[:, :, 1]
+        R = np.stack([c * x + s * y, c * y - s * x, Rb[:, :, 2]], axis=2)  # R_b Rz(theta)
+        out[:, i, :3, :3], out[:, i, :3, 3] = times(R, L[:3, :3]), p + times(R, L[:3, 3])
+    T = tool.T
+    out[:, -1, :3, :3], out[:, -1, :3, 3] = times(R, T[:3, :3]), p + times(R, T[:3, 3])
+    return out

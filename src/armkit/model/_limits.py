@@ -95,6 +95,10 @@ def _bounds(model: ArmModel) -> tuple[list[float], list[float]]:
 def check_grip(model: ArmModel, width: float) -> float:
     """``width`` [m] if it is inside the gripper's range, else GripWidthError in mm."""
     g = model.gripper
+    if not g.present:
+        raise GripWidthError(
+            f"{model.name} has no gripper: its model gives no [gripper] width_mm range"
+        )
     if not (math.isfinite(width) and g.width_min - SLACK <= width <= g.width_max + SLACK):
         raise GripWidthError(
             f"grip width {width * 1000:.1f} mm is outside {model.name}'s range "

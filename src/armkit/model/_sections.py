@@ -54,7 +54,7 @@ class DynamixelSection:
     """
 
     ids: tuple[int, ...]
-    gripper_id: int
+    gripper_id: int | None
     baudrate: int = 1_000_000
     ticks_per_turn: int = 4096
     center_tick: float = 2048.0

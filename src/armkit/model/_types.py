@@ -96,6 +96,11 @@ class Gripper:
     finger_length: float = 0.02
     finger_width: float = 0.02
 
+    @property
+    def present(self) -> bool:
+        """False for an arm without a gripper (its model gives no width range)."""
+        return self.width_max > self.width_min
+
     def length_at(self, width: float) -> float | None:
         """Grip length [m] at an opening ``width`` [m]; None if the length is fixed."""
         if not self.length_poly:

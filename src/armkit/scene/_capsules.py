@@ -11,13 +11,12 @@ surface (a pen on paper, the jaws around a cube) while the wrist keeps its radiu
 from __future__ import annotations
 
 import itertools
-import math
 from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..kinematics import fk_frames
+from ..kinematics import fk_frames, frames_on_base_axis
 from ..model import ArmModel
 
 F64 = NDArray[np.float64]
@@ -41,11 +40,21 @@ class Capsules:
 
 
 def link_names(model: ArmModel) -> tuple[str, ...]:
-    """A name for each capsule of ``arm_capsules``: base column, the links between
-    joints (``"shoulder-elbow link"``), the gripper."""
+    """A name for each capsule of ``arm_capsules``: base column (``column_links`` of
+    them), the links between joints (``"shoulder-elbow link"``), the gripper."""
     names = [j.name for j in model.joints]
     between = [f"{a}-{b} link" for a, b in itertools.pairwise(names)]
-    return ("base column", *between, "gripper")
+    k = column_links(model)
+    return ("base column",) * k + (*between, "gripper")[k - 1 :]
+
+
+def column_links(model: ArmModel) -> int:
+    """How many capsules, from the first, form the base column (at least one): both ends
+    on the vertical axis through the base origin at every pose, so standing on the base.
+    A DH chain has one (the base to the frame after row 0); a chain of joint frames
+    (URDF) whose first joint sits at the base origin has two (the base to that joint,
+    that joint up to the next)."""
+    return max(1, frames_on_base_axis(model) - 1)
 
 
 def arm_capsules(model: ArmModel, q: ArrayLike) -> Capsules:
@@ -55,11 +64,7 @@ def arm_capsules(model: ArmModel, q: ArrayLike) -> Capsules:
         Capsules with K = dof + 1 (ends (K, 3) or (N, K, 3)), radii ``model.link_radii``
         (15 mm each if the model gives none), in the arm's base frame [m].
     """
-    qa = np.asarray(q, dtype=np.float64)
-    if qa.ndim == 1:
-        origins = fk_frames(model, qa)[:, :3, 3]
-    else:
-        origins, _ = frame_origins(model, qa)
+    origins = fk_frames(model, q)[..., :3, 3]
     return Capsules(
         origins[..., :-1, :], origins[..., 1:, :], _radii(model), np.arange(model.dof + 1)
     )
@@ -96,35 +101,5 @@ def _radii(model: ArmModel) -> F64:
 def frame_origins(model: ArmModel, q: F64) -> tuple[F64, F64]:
     """Origins of every frame of ``fk_frames`` for N poses, shape (N, dof + 2, 3) [m],
     and the tool frame's rotation, shape (N, 3, 3) (column 0: the approach axis)."""
-    n = q.shape[0]
-    R = np.broadcast_to(np.eye(3), (n, 3, 3)).copy()
-    p = np.zeros((n, 3))
-    out = [p]
-    for row, qi in zip(model.dh, q.T, strict=True):
-        theta = row.sign * qi + row.theta_offset
-        A, t = _dh_batch(model.convention == "modified", row.a, row.alpha, row.d, theta)
-        p = p + (R @ t[:, :, None])[:, :, 0]
-        R = R @ A
-        out.append(p)
-    T = model.T_flange_tool
-    out.append(p + R @ T[:3, 3])
-    return np.stack(out, axis=1), R @ T[:3, :3]
-
-
-def _dh_batch(modified: bool, a: float, alpha: float, d: float, theta: F64) -> tuple[F64, F64]:
-    """Rotations (N, 3, 3) and translations (N, 3) of one DH row for N angles [rad]."""
-    ct, st = np.cos(theta), np.sin(theta)
-    ca, sa = math.cos(alpha), math.sin(alpha)
-    R = np.empty((theta.shape[0], 3, 3))
-    t = np.empty((theta.shape[0], 3))
-    if modified:  # Rx(alpha) Tx(a) Rz(theta) Tz(d)
-        R[:, 0, 0], R[:, 0, 1], R[:, 0, 2] = ct, -st, 0.0
-        R[:, 1, 0], R[:, 1, 1], R[:, 1, 2] = st * ca, ct * ca, -sa
-        R[:, 2, 0], R[:, 2, 1], R[:, 2, 2] = st * sa, ct * sa, ca
-        t[:, 0], t[:, 1], t[:, 2] = a, -sa * d, ca * d
-    else:  # Rz(theta) Tz(d) Tx(a) Rx(alpha)
-        R[:, 0, 0], R[:, 0, 1], R[:, 0, 2] = ct, -st * ca, st * sa
-        R[:, 1, 0], R[:, 1, 1], R[:, 1, 2] = st, ct * ca, -ct * sa
-        R[:, 2, 0], R[:, 2, 1], R[:, 2, 2] = 0.0, sa, ca
-        t[:, 0], t[:, 1], t[:, 2] = a * ct, a * st, d
-    return R, t
+    frames = fk_frames(model, q)
+    return frames[:, :, :3, 3], frames[:, -1, :3, :3]

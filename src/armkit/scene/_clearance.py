@@ -16,7 +16,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..model import ArmModel
-from ._capsules import Capsules, clearance_capsules, frame_origins, link_names
+from ._capsules import Capsules, clearance_capsules, column_links, frame_origins, link_names
 from ._distance import box_box_gap, box_corners, segment_box_distance
 from ._objects import Cube
 from ._obstacles import Obstacles, obstacles
@@ -80,7 +80,7 @@ def check_clear(
     table_z = scene.table_z if scene is not None else model.table_z
     caps = _moved(clearance_capsules(model, origins, R_tool), T)
     names = link_names(model)
-    found = [_table(caps, table_z, margin, names)]
+    found = [_table(caps, table_z, margin, names, column_links(model))]
     if scene is not None:
         found.append(_boxes(caps, obstacles(scene), ignore, model.dof, margin, names))
     if held is not None:
@@ -102,10 +102,10 @@ def _moved(caps: Capsules, T: F64) -> Capsules:
 
 
 def _table(
-    caps: Capsules, table_z: float, margin: float, names: tuple[str, ...]
+    caps: Capsules, table_z: float, margin: float, names: tuple[str, ...], column: int
 ) -> Collision | None:
     low = np.minimum(caps.p0[..., 2], caps.p1[..., 2]) - caps.radii - table_z  # (N, K)
-    low[:, caps.links == 0] = np.inf  # the base column stands on the table
+    low[:, caps.links < column] = np.inf  # the base column stands on the table
     return _first(low, caps.links, names, margin)
 
 

@@ -212,7 +212,7 @@ class Teach:
 
     def _add_grip(self) -> Any:
         g = self.arm.model.gripper
-        if g.width_max <= g.width_min:
+        if not g.present:
             return None
         lo, hi = g.width_min * 1000.0, g.width_max * 1000.0
         slider = self.view.server.gui.add_slider("gripper [mm]", lo, hi, 0.5, hi)
