@@ -114,7 +114,7 @@ def _run(parser: argparse.ArgumentParser, args: argparse.Namespace) -> int:
         code = int(args.func(args) or 0)
         sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's exit
         return code
-    except (ArmkitError, ValueError) as exc:
+    except ArmkitError as exc:
         print(f"armkit: error: {_one_line(exc)}", file=sys.stderr)
         return 2
     except BrokenPipeError:  # `armkit ... | head`: the reader left; stop quietly, as `cat` does
