@@ -60,7 +60,10 @@ def run_show(args: argparse.Namespace) -> int:
     print()
     print(_tool_line(m))
     g = m.gripper
-    print(f"gripper: {g.kind}, opening {g.width_min * 1000:.1f}..{g.width_max * 1000:.1f} mm")
+    if g.present:
+        print(f"gripper: {g.kind}, opening {g.width_min * 1000:.1f}..{g.width_max * 1000:.1f} mm")
+    else:
+        print("gripper: none (the model gives no [gripper] width_mm range)")
     pitch = "free" if m.default_pitch is None else f"{math.degrees(m.default_pitch):.1f} deg"
     family = "numeric" if why_no_closed_form(m) else "closed form (base yaw + planar chain)"
     print(f"pitch when none is given: {pitch}; inverse kinematics: {family}")
@@ -87,4 +90,5 @@ def _dh_rows(m: ArmModel) -> list[list[object]]:
 
 def _tool_line(m: ArmModel) -> str:
     x, y, z = (m.T_flange_tool[:3, 3] * 1000).round(2).tolist()
-    return f"tool: ({x}, {y}, {z}) mm from the last DH frame; its x axis is the approach direction"
+    frame = "joint's" if m.convention == "frames" else "DH"
+    return f"tool: ({x}, {y}, {z}) mm from the last {frame} frame; its x axis is the approach direction"
