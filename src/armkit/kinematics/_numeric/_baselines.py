@@ -42,13 +42,9 @@ def descend(
 
 
 def solve_ccd(
-    chain: Chain,
-    task: Task[float],
-    q_seed: list[float],
-    tol_pos: float,
-    tol_ang: float,
+    chain: Chain, task: Task[float], q_seed: list[float], tol_pos: float, tol_ang: float,
     rng_seed: int,
-) -> Attempt:
+) -> Attempt:  # fmt: skip
     """CCD from ``q_seed`` [rad]: sweep the joints from the tool back to the base, turning
     each one alone to the angle that best aligns the tool with the target (in closed
     form, see ``_turn``), clamped into its limits. ``rng_seed`` is unused."""
@@ -63,13 +59,9 @@ def solve_ccd(
 
 
 def solve_jacobian(
-    chain: Chain,
-    task: Task[float],
-    q_seed: list[float],
-    tol_pos: float,
-    tol_ang: float,
+    chain: Chain, task: Task[float], q_seed: list[float], tol_pos: float, tol_ang: float,
     rng_seed: int,
-) -> Attempt:
+) -> Attempt:  # fmt: skip
     """Resolved-rate iteration from ``q_seed`` [rad]: dq = J^+ e with J^+ = J^T (J J^T +
     eps I)^-1 (eps tiny, only to survive singular poses), shortened to at most
     ``JACOBIAN_STEP``, q clamped into the limits; no damping schedule, no line search:
@@ -85,13 +77,9 @@ def solve_jacobian(
 
 
 def solve_random(
-    chain: Chain,
-    task: Task[float],
-    q_seed: list[float],
-    tol_pos: float,
-    tol_ang: float,
+    chain: Chain, task: Task[float], q_seed: list[float], tol_pos: float, tol_ang: float,
     rng_seed: int,
-) -> Attempt:
+) -> Attempt:  # fmt: skip
     """Seed 003's random search from ``q_seed`` [rad], reproducible from ``rng_seed``: nudge
     every joint by a small random amount, keep the new angles only if the tool got closer.
 

@@ -65,13 +65,9 @@ class _Problem:
 
 
 def solve_lm(
-    chain: Chain,
-    task: Task[float],
-    q_seed: list[float],
-    tol_pos: float,
-    tol_ang: float,
+    chain: Chain, task: Task[float], q_seed: list[float], tol_pos: float, tol_ang: float,
     rng_seed: int,
-) -> Attempt:
+) -> Attempt:  # fmt: skip
     """LM from ``q_seed`` [rad] (clamped into the limits), restarting when stalled.
 
     Returns:
