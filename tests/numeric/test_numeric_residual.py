@@ -8,7 +8,8 @@ import pytest
 from numeric_cases import ARMS, joint_vectors, target_for
 
 from armkit.kinematics._chain import chain_of
-from armkit.kinematics._residual import LANES, Task, residual, rotation_log
+from armkit.kinematics._lanes import LANES
+from armkit.kinematics._residual import Task, residual, rotation_log
 from armkit.model import load_model
 
 

@@ -182,6 +182,10 @@ def _ways(
 ) -> tuple[tuple[float, float], ...] | Reason:
     """(plane radius r (signed) [m], base angle q0 [rad]) per base branch of the target
     (x, y, z) [m] (``_family.planes``), or why there is none."""
+    rho = math.hypot(x, y)
+    if fam.base is not None and not fam.lateral and rho >= 1e-12:  # as ``solve``'s ``plain``
+        heading = fam.base_sign * (math.atan2(y, x) - fam.azimuth_r)
+        return (rho, heading), (-rho, heading + fam.base_sign * math.pi)
     b = planes(fam, np.array([[x, y, z]]), np.array([seed]))
     if b.bad[0]:
         return "off_plane" if fam.base is None else "too_close"

@@ -10,27 +10,31 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from .._errors import Reason, UnreachableError
 from .._inputs import brief, mm
 from ._chain import Chain
-from ._closed_fast import Found, Misses, Q
+from ._closed_fast import Found, Misses, Q, _ways
 from ._closed_free import seed_pitch
 from ._family import PlanarFamily
-from ._pitch_range import limited_pitch
+from ._lanes import FLOATS
+from ._pitch_range import base_fits, boundary_pitch
 
 
 def limited(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
     """Position only, where a joint limit refuses ``chain.free``'s pitch: every solution at
-    the boundary pitch nearest the seed's at which the arm fits, unsorted; [] if none."""
-    want = preferred(chain, seed)
-    solve = chain.fixed
-    assert solve is not None and chain.family is not None
-    pitch, ok = limited_pitch(
-        chain, chain.family, np.array([[x, y, z]]), np.array([seed]), np.array([want])
-    )
-    return solve(x, y, z, float(pitch[0]), seed, None) if ok[0] else []
+    the boundary pitch nearest the seed's at which the arm fits, unsorted; [] if none.
+    The boundary search of ``_pitch_range`` in floats, one base branch at a time."""
+    fam, solve = chain.family, chain.fixed
+    assert fam is not None and solve is not None
+    ways = _ways(fam, x, y, z, seed)
+    if isinstance(ways, str):
+        return []
+    want, rho, gap, pitch = preferred(chain, seed), math.hypot(x, y), math.inf, 0.0
+    for r, q0 in ways:
+        if base_fits(chain, fam, q0):
+            g, at = boundary_pitch(chain, fam, r, z, rho, want, FLOATS)
+            gap, pitch = (g, at) if g < gap else (gap, pitch)
+    return solve(x, y, z, pitch, seed, None) if gap < math.inf else []
 
 
 def preferred(chain: Chain, seed: Q) -> float:

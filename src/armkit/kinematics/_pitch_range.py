@@ -26,9 +26,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ._chain import Chain
-from ._closed import TWO_PI, best, pitch_of_phi, solve, turn_of, wrap
+from ._closed import SLACK, TWO_PI, best, pitch_of_phi, solve, turn_of, wrap
 from ._family import PlanarFamily, Planes, planes
 from ._forward import CHUNK, poses
+from ._lanes import LANES, Ops
 from ._pose import pitch_of
 
 F64 = NDArray[np.float64]
@@ -111,39 +112,51 @@ def nearest_reachable(chain: Chain, fam: PlanarFamily, b: Planes, want: F64) -> 
 
 
 def boundary_pitch(
-    chain: Chain, fam: PlanarFamily, r: Lane, z: Lane, rho: Lane, want: Lane
+    chain: Chain, fam: PlanarFamily, r: Lane, z: Lane, rho: Lane, want: Lane, ops: Ops = LANES
 ) -> tuple[Lane, Lane]:
     """Per lane - one base branch of a target: plane radius r (signed), height z and
     horizontal distance rho [m] - the boundary point that fits nearest ``want`` [rad]: how
-    far (a number that grows with the distance; inf where none fits) and its pitch [rad]."""
+    far (a number that grows with the distance; inf where none fits) and its pitch [rad].
+    Written over lanes (``_lanes``): arrays with ``LANES``, one branch in floats with
+    ``FLOATS`` (the scalar solver's fallback, ``_closed_scalar.limited``)."""
     tx, tz = r - fam.c1[0], z - fam.c1[1]
     (v3x, v3z), l3 = fam.links[2], math.hypot(*fam.links[2])
     k = fam.phi0 - math.atan2(v3z, v3x)  # the approach's angle in the plane less link 3's
     ck, sk, ranges = math.cos(k) / l3, math.sin(k) / l3, _ranges(chain, fam)
-    on_axis, r_rho = (rho < 1e-12) | (abs(r) < 1e-12), r / np.where(rho < 1e-12, 1.0, rho)
+    on_axis, r_rho = (rho < 1e-12) | (abs(r) < 1e-12), r / ops.where(rho < 1e-12, 1.0, rho)
 
     def pitch(x: Lane, z: Lane) -> Lane:  # the pitch [rad] with link 3 at (x, z) [m]
         c, s = x * ck - z * sk, x * sk + z * ck  # the approach (see ``pitch_of_phi``)
-        return np.arctan2(s, np.where(on_axis, abs(c), c * r_rho))
+        return ops.atan2(s, ops.where(on_axis, abs(c), c * r_rho))
 
-    if fam.lateral or np.any(on_axis):  # the pitch's own distance from want
+    if fam.lateral or bool(np.any(on_axis)):  # the pitch's own distance from want
         wx3 = wz3 = None
     else:  # pitch = +-(approach angle) + a constant: nearest where link 3 is nearest want's
-        c, s = np.where(r > 0, 1.0, -1.0) * np.cos(want), np.sin(want)  # the approach at want
+        c, s = ops.where(r > 0, 1.0, -1.0) * ops.cos(want), ops.sin(want)  # the approach
         wx3, wz3 = c * math.cos(k) + s * math.sin(k), s * math.cos(k) - c * math.sin(k)
     gap, bx, bz = math.inf + 0.0 * tx, 0.0 * tx, 0.0 * tx
-    for wx, wz, ex, ez in _boundaries(chain, fam, tx, tz):
+    for wx, wz, ex, ez in _boundaries(chain, fam, tx, tz, ops):
         l3x, l3z = tx - wx, tz - wz
-        d = _gap(pitch(l3x, l3z), want) if wx3 is None else -(l3x * wx3 + l3z * wz3)
+        d = _gap(pitch(l3x, l3z), want, ops) if wx3 is None else -(l3x * wx3 + l3z * wz3)
         better = _fits(ranges, (ex, ez), (wx - ex, wz - ez), (l3x, l3z)) & (d < gap)
-        gap, bx, bz = np.where(better, d, gap), np.where(better, l3x, bx), np.where(better, l3z, bz)
+        w = ops.where
+        gap, bx, bz = w(better, d, gap), w(better, l3x, bx), w(better, l3z, bz)
     return gap, pitch(bx, bz)
 
 
-def _gap(pitch: Lane, want: Lane) -> Lane:
+def _gap(pitch: Lane, want: Lane, ops: Ops = LANES) -> Lane:
     """|pitch - want| [rad] round the circle, for pitches and ``want`` in [-pi, pi]."""
     d = abs(pitch - want)
-    return np.where(d > math.pi, TWO_PI - d, d)
+    return ops.where(d > math.pi, TWO_PI - d, d)
+
+
+def base_fits(chain: Chain, fam: PlanarFamily, q0: float) -> bool:
+    """Whether one base angle q0 [rad] is inside the base's limits by whole turns
+    (``_base_fits`` in floats)."""
+    if fam.base is None:
+        return True
+    lo, hi = chain.lower[fam.base], chain.upper[fam.base]
+    return hi - lo >= TWO_PI or q0 - TWO_PI * math.floor((q0 - lo + SLACK) / TWO_PI) <= hi + SLACK
 
 
 def _base_fits(chain: Chain, fam: PlanarFamily, q0: F64) -> Bool:
@@ -154,10 +167,7 @@ def _base_fits(chain: Chain, fam: PlanarFamily, q0: F64) -> Bool:
 
 
 def _boundaries(
-    chain: Chain,
-    fam: PlanarFamily,
-    tx: Lane,
-    tz: Lane,
+    chain: Chain, fam: PlanarFamily, tx: Lane, tz: Lane, ops: Ops
 ) -> Iterator[tuple[Lane, Lane, Lane, Lane]]:
     """Where the fit can change along the wrist circle about T = (tx, tz) [m]: per boundary
     point the wrist point W and the elbow point E, x and z each [m] (NaN where none)."""
@@ -169,31 +179,26 @@ def _boundaries(
         x, y = l1 + l2 * math.cos(b), l2 * math.sin(b)  # elbow at a limit, straight or folded:
         d = math.hypot(x, y)  # W at distance d, E turned from W by a constant
         if d > 1e-12:
-            for wx, wz in _meet(0.0, 0.0, d, tx, tz, l3):
+            for wx, wz in _meet(0.0, 0.0, d, tx, tz, l3, ops):
                 yield wx, wz, (x * wx + y * wz) * (l1 / d / d), (x * wz - y * wx) * (l1 / d / d)
     for a in (chain.lower[j1], chain.upper[j1]):  # shoulder at a limit: E fixed
         ex, ez = (
             math.cos(s1 * a) * v1x - math.sin(s1 * a) * v1z,
             math.sin(s1 * a) * v1x + math.cos(s1 * a) * v1z,
         )
-        for wx, wz in _meet(ex, ez, l2, tx, tz, l3):
+        for wx, wz in _meet(ex, ez, l2, tx, tz, l3, ops):
             yield wx, wz, ex + 0.0 * wx, ez + 0.0 * wz
     for a in (chain.lower[j3], chain.upper[j3]):  # wrist at a limit: links 2 and 3 make one
         c, s = math.cos(s3 * a), math.sin(s3 * a)  # rigid link U; R U = T - E, R turns link 2
         ux, uz = v2x + c * v3x - s * v3z, v2z + s * v3x + c * v3z
         u2 = ux * ux + uz * uz
-        for ex, ez in _meet(0.0, 0.0, l1, tx, tz, math.sqrt(u2)):
+        for ex, ez in _meet(0.0, 0.0, l1, tx, tz, math.sqrt(u2), ops):
             rc, rs = (ux * (tx - ex) + uz * (tz - ez)) / u2, (ux * (tz - ez) - uz * (tx - ex)) / u2
             yield ex + rc * v2x - rs * v2z, ez + rs * v2x + rc * v2z, ex, ez
 
 
 def _meet(
-    ax: float,
-    az: float,
-    ra: float,
-    bx: Lane,
-    bz: Lane,
-    rb: float,
+    ax: float, az: float, ra: float, bx: Lane, bz: Lane, rb: float, ops: Ops
 ) -> tuple[tuple[Lane, Lane], tuple[Lane, Lane]]:
     """Both points where the circle about (ax, az) of radius ra meets the circle about
     (bx, bz) of radius rb [m] (NaN where they do not)."""
@@ -201,7 +206,7 @@ def _meet(
     d2 = dx * dx + dz * dz + 1e-300
     along = (d2 + ra * ra - rb * rb) / (2.0 * d2)  # along the centre line, per its length
     h2 = ra * ra / d2 - along * along
-    h = np.where(h2 >= -1e-12, np.sqrt(abs(h2)), math.nan)
+    h = ops.where(h2 >= -1e-12, ops.sqrt(abs(h2)), math.nan)
     mx, mz = ax + along * dx, az + along * dz
     return (mx - h * dz, mz + h * dx), (mx + h * dz, mz - h * dx)
 

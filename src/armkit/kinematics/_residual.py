@@ -15,33 +15,19 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Generic, NamedTuple, TypeVar
+from typing import Any, Generic, TypeVar
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ._forward import CHUNK
+from ._lanes import FLOATS, LANES, Ops
 from ._pose import pitch_lanes, pitch_scalar
 from ._state import ChainState, Lanes, Vec3
 
 F64 = NDArray[np.float64]
 N = TypeVar("N", float, F64)  # a float, or a lane: one value per target (k,)
 A = TypeVar("A", float, F64)
-
-
-class Ops(NamedTuple):
-    """The few functions that differ between floats and lanes."""
-
-    sqrt: Any
-    hypot: Any
-    atan2: Any
-    maximum: Any
-    cos: Any
-    sin: Any
-
-
-FLOATS = Ops(math.sqrt, math.hypot, math.atan2, max, math.cos, math.sin)
-LANES = Ops(np.sqrt, np.hypot, np.arctan2, np.maximum, np.cos, np.sin)
 
 
 @dataclass(frozen=True, slots=True)

@@ -20,7 +20,8 @@ from numpy.typing import NDArray
 
 from .._chain import Chain
 from .._forward import CHUNK
-from .._residual import N, Ops, Task, costs
+from .._lanes import Ops
+from .._residual import N, Task, costs
 from .._state import ChainState
 
 F64 = NDArray[np.float64]
