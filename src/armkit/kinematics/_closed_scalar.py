@@ -3,7 +3,7 @@
 Without a pitch (3 planar joints) the pitch is the one nearest the seed's at
 which the arm fits (see ``_pitch_range``): first the nearest at which the wrist
 point is within the links' reach, by the chain's ``free``; where a joint limit
-refuses that one, the vectorised ``limited_pitch`` on this one target.
+refuses that one, ``_pitch_range.boundary_pitch`` in floats (``limited``).
 """
 
 from __future__ import annotations
