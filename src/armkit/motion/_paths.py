@@ -24,7 +24,7 @@ MAX_POINTS = 1_000_000  # points in one path: beyond this a spacing or a size is
 def line(start: ArrayLike, end: ArrayLike, spacing: float) -> F64:
     """Straight line from ``start`` to ``end`` [m], shape (3,) each."""
     p0, p1 = point3(start, "start"), point3(end, "end")
-    n = _count(float(np.linalg.norm(p1 - p0)), spacing)
+    n = _count(math.dist(p0.tolist(), p1.tolist()), spacing)  # no overflow warning at 1e308
     s = np.linspace(0.0, 1.0, n + 1)[:, None]
     return p0 + s * (p1 - p0)
 
