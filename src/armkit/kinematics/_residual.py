@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Generic, TypeVar
+from typing import Any, Generic
 
 import numpy as np
 from numpy.typing import NDArray
@@ -23,11 +23,9 @@ from numpy.typing import NDArray
 from ._forward import CHUNK
 from ._lanes import FLOATS, LANES, Ops
 from ._pose import pitch_lanes, pitch_scalar
-from ._state import ChainState, Lanes, Vec3
+from ._state import ChainState, Lanes, N, Vec3
 
 F64 = NDArray[np.float64]
-N = TypeVar("N", float, F64)  # a float, or a lane: one value per target (k,)
-A = TypeVar("A", float, F64)
 
 
 @dataclass(frozen=True, slots=True)
@@ -119,7 +117,7 @@ def task_jacobian(task: Task[N], st: ChainState[N]) -> list[tuple[N, ...]]:
     return jv  # type: ignore[return-value]
 
 
-def wrap(angle: A) -> A:
+def wrap(angle: N) -> N:
     """angle [rad] wrapped into [-pi, pi): a float, or an array of any shape."""
     return (angle + math.pi) % (2.0 * math.pi) - math.pi
 

@@ -21,8 +21,8 @@ from numpy.typing import NDArray
 from .._chain import Chain
 from .._forward import CHUNK
 from .._lanes import Ops
-from .._residual import N, Task, costs
-from .._state import ChainState
+from .._residual import Task, costs
+from .._state import ChainState, N
 
 F64 = NDArray[np.float64]
 V = tuple[Any, Any, Any]  # a vector: three floats, or three arrays (k,) of one component each
