@@ -7,6 +7,8 @@ steps' dense 4x4 transforms: the reference the tests pin both to.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
@@ -18,6 +20,11 @@ from ._steps import dense_frames
 
 F64 = NDArray[np.float64]
 CHUNK = 4096  # poses per pass: keeps every temporary array in the CPU cache
+
+
+def chunks(n: int) -> Iterator[slice]:
+    """Slices of at most ``CHUNK`` rows that cover rows 0..n-1 in order."""
+    return (slice(s, s + CHUNK) for s in range(0, n, CHUNK))
 
 
 def fk(model: ArmModel, q: ArrayLike) -> F64:
@@ -101,8 +108,8 @@ def _evaluate(chain: Chain, q: F64, J: F64 | None) -> F64:
     """The poses (N, 4, 4), chunk by chunk on lanes; the Jacobians into J if given."""
     T = np.zeros((len(q), 4, 4))
     T[:, 3, 3] = 1.0
-    for s in range(0, len(q), CHUNK):
-        st, at = chain.lanes(list(q[s : s + CHUNK].T)), slice(s, s + CHUNK)
+    for at in chunks(len(q)):
+        st = chain.lanes(list(q[at].T))
         for j, col in enumerate((*st.R, st.p)):
             for i in range(3):
                 T[at, i, j] = col[i]

@@ -14,7 +14,7 @@ from ..model import ArmModel
 from ._chain import _CHAINS, Chain, chain_of
 from ._closed import best, reasons, solve
 from ._closed_scalar import limited, refusal, too_far
-from ._forward import CHUNK
+from ._forward import chunks
 from ._numeric import solve_many, solve_one
 from ._pitch_range import free_batch, preferred
 from ._result import IKBatchResult, IKResult
@@ -212,13 +212,9 @@ def _closed_batch(chain: Chain, fam: Any, P: F64, pitch: F64 | None, seed: F64) 
         q, ok = free_batch(chain, fam, P, seed)
     else:
         q, ok = np.full((len(P), chain.dof), np.nan), np.zeros(len(P), dtype=bool)
-        for s in range(0, len(P), CHUNK):
-            part, sd, at = (
-                P[s : s + CHUNK],
-                seed[s : s + CHUNK],
-                None if pitch is None else pitch[s : s + CHUNK],
-            )
-            q[s : s + CHUNK], ok[s : s + CHUNK] = best(solve(chain, fam, part, at, sd), sd)
+        for rows in chunks(len(P)):
+            part = solve(chain, fam, P[rows], None if pitch is None else pitch[rows], seed[rows])
+            q[rows], ok[rows] = best(part, seed[rows])
     reason = np.full(len(P), "", dtype="<U11")
     bad = np.flatnonzero(~ok)
     if bad.size:  # why not: the candidates at the asked (or the seed's) pitch

@@ -28,7 +28,7 @@ from numpy.typing import NDArray
 from ._chain import Chain
 from ._closed import SLACK, TWO_PI, best, pitch_of_phi, solve, turn_of, wrap
 from ._family import PlanarFamily, Planes, planes
-from ._forward import CHUNK, poses
+from ._forward import CHUNK, chunks, poses
 from ._lanes import LANES, Ops
 from ._pose import pitch_of
 
@@ -42,11 +42,10 @@ def free_batch(chain: Chain, fam: PlanarFamily, P: F64, seed: F64) -> tuple[F64,
     """Best solution per target [rad] (N, dof) (NaN rows where none) and ok (N,)."""
     q, ok = np.full((len(P), chain.dof), np.nan), np.zeros(len(P), dtype=bool)
     want, has = preferred(chain, seed), np.zeros(len(P), dtype=bool)
-    for s in range(0, len(P), CHUNK):
-        part, sd = P[s : s + CHUNK], seed[s : s + CHUNK]
-        b = planes(fam, part, sd)
-        pitch, has[s : s + CHUNK] = nearest_reachable(chain, fam, b, want[s : s + CHUNK])
-        q[s : s + CHUNK], ok[s : s + CHUNK] = best(solve(chain, fam, part, pitch, sd, b), sd)
+    for rows in chunks(len(P)):
+        b = planes(fam, P[rows], seed[rows])
+        pitch, has[rows] = nearest_reachable(chain, fam, b, want[rows])
+        q[rows], ok[rows] = best(solve(chain, fam, P[rows], pitch, seed[rows], b), seed[rows])
     hard = np.flatnonzero(~ok & has)
     for s in range(0, len(hard), 4 * CHUNK):  # large lanes: boundary_pitch loops per point
         i = hard[s : s + 4 * CHUNK]

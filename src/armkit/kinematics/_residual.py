@@ -20,7 +20,7 @@ from typing import Any, Generic
 import numpy as np
 from numpy.typing import NDArray
 
-from ._forward import CHUNK
+from ._forward import chunks
 from ._lanes import FLOATS, LANES, Ops
 from ._pose import pitch_lanes, pitch_scalar
 from ._state import ChainState, Lanes, N, Vec3
@@ -98,8 +98,7 @@ def residual(task: Task[N], st: ChainState[N], jac: bool = True) -> Residual[N]:
 def costs(lanes: Lanes, task: Task[F64], q: F64) -> F64:
     """|e|^2 of joint vectors q (k, dof) [rad] for the k targets of ``task``, shape (k,)."""
     out = np.empty(len(q))
-    for s in range(0, len(q), CHUNK):
-        at = slice(s, s + CHUNK)
+    for at in chunks(len(q)):
         out[at] = residual(task.take(at), lanes(list(q[at].T)), jac=False).cost
     return out
 

@@ -13,7 +13,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._chain import Chain
-from .._forward import CHUNK
+from .._forward import chunks
 from .._residual import Task, costs, residual
 from ._dls import damped_steps
 from ._lm import CANDIDATES, LMSettings
@@ -110,8 +110,7 @@ def _evaluate(chain: Chain, task: Task[F64], q: F64) -> BatchResidual:
     """The residuals of q (k, dof) [rad] for the k targets of ``task``, chunk by chunk."""
     k, m = len(q), 3 + (task.pitch is not None) + 3 * (task.R is not None)
     e, J, errors = np.empty((k, m)), np.empty((k, m, chain.dof)), np.empty((3, k))
-    for s in range(0, k, CHUNK):
-        at = slice(s, s + CHUNK)
+    for at in chunks(k):
         r = residual(task.take(at), chain.lanes(list(q[at].T)))
         assert r.cols is not None
         for i, v in enumerate(r.e):

@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._chain import Chain
-from .._forward import CHUNK
+from .._forward import chunks
 from .._lanes import Ops
 from .._residual import Task, costs
 from .._state import ChainState, N
@@ -43,8 +43,7 @@ def turn_first_joint(chain: Chain, task: Task[F64], q: F64) -> F64:
     the opposite way instead, if that is inside them)."""
     lo, hi = chain.lower[0], chain.upper[0]
     turned = q.copy()
-    for s in range(0, len(q), CHUNK):
-        at = slice(s, s + CHUNK)
+    for at in chunks(len(q)):
         turned[at, 0] += best_turn(task.take(at), chain.lanes(list(q[at].T)), 0)
     flip = (turned[:, 0] < lo) | (turned[:, 0] > hi)
     turned[flip, 0] += np.where(turned[flip, 0] > hi, -np.pi, np.pi)
