@@ -126,7 +126,7 @@ def test_link_capsules_join_the_frames_the_clearance_check_uses(name: str, tmp_p
 
 
 def test_an_arm_read_from_urdf_moves_in_the_simulator_and_is_checked_for_clearance(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """A URDF has no driver table and no gripper: the generic simulated bus drives it,
     grip is refused in one line, and the clearance check sees its base column (two
@@ -134,6 +134,7 @@ def test_an_arm_read_from_urdf_moves_in_the_simulator_and_is_checked_for_clearan
     as the DH model's one, so it refuses what the DH model refuses."""
     from armkit.scene import check_clear, link_names
 
+    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path / "config"))  # the sim's kept state
     m = load_model("openmanipulator_x")
     path = tmp_path / "omx.urdf"
     path.write_text(urdf_of(m))
