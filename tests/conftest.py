@@ -1,4 +1,5 @@
-"""Suite-wide: tests that talk to an emulator over a pseudo-terminal in wall-clock time.
+"""Suite-wide: every test's own armkit config folder (``_own_config_dir``), and the tests
+that talk to an emulator over a pseudo-terminal in wall-clock time.
 
 Those tests check bytes and protocol behaviour, never a time, but the other end is a
 thread of this process answering through the kernel's pty: on a machine whose cores
@@ -27,6 +28,16 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
         fixtures = set(getattr(item, "fixturenames", ()))
         if fixtures & PTY_FIXTURES or item.path.name in PTY_MODULES:
             item.add_marker(pytest.mark.flaky(reruns=2, reruns_delay=0.5))
+
+
+@pytest.fixture(autouse=True)
+def _own_config_dir(
+    tmp_path_factory: pytest.TempPathFactory, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Every test keeps armkit's files (simulated arms' state, calibrations, locks) in a
+    folder of its own, never in the user's ``~/.config/armkit`` (a package's conftest may
+    point it elsewhere)."""
+    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path_factory.mktemp("armkit-config")))
 
 
 @pytest.fixture(autouse=True)
