@@ -15,7 +15,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ._chain import Chain
-from ._family import PlanarFamily, Planes, planes
+from ._family import PlanarFamily, Planes, planes, turn_of
+from ._pose import pitch_of_phi
 
 F64 = NDArray[np.float64]
 Bool = NDArray[np.bool_]
@@ -44,33 +45,6 @@ class Candidates:
     def valid(self) -> Bool:
         """Where each candidate fits, (N, K)."""
         return self.fits.T
-
-
-def turn_of(fam: PlanarFamily, pitch: F64, b: Planes) -> tuple[F64, F64, F64]:
-    """cos, sin and angle [rad] of the plane turn (from q = 0) that gives ``pitch`` (N,)
-    [rad] in each base branch of ``b`` (B * N,) (see ``pitch_of``); NaN on the base axis
-    beyond +-90 deg, where no pitch is possible."""
-    count, axis = len(b.r) // len(pitch), (b.rho < 1e-12) | (np.abs(b.r) < 1e-12)
-    pitch = np.tile(pitch, count)
-    pitch = np.where((b.rho < 1e-12) & (np.abs(pitch) > np.pi / 2 + 1e-12), np.nan, pitch)
-    sp, cp = np.sin(pitch), np.cos(pitch)
-    cp = np.where(axis | (b.r > 0), cp, -cp)  # reaching back the approach points the other way
-    if fam.lateral:
-        sp = sp * np.where(axis, 1.0, np.abs(b.r) / np.where(axis, 1.0, b.rho))
-        norm = np.sqrt(sp * sp + cp * cp)
-        sp, cp = sp / norm, cp / norm
-        phi = np.arctan2(sp, cp)
-    else:  # the approach angle in the plane is the pitch, or pi - pitch reaching back
-        phi = np.where(axis | (b.r > 0), pitch, np.pi - pitch)
-    c0, s0 = np.cos(fam.phi0), np.sin(fam.phi0)
-    return cp * c0 + sp * s0, sp * c0 - cp * s0, phi - fam.phi0
-
-
-def pitch_of_phi(c: F64, s: F64, r: F64, rho: F64) -> F64:
-    """Inverse of ``turn_of``: the pitch [rad] in [-pi, pi] of plane approach angles given
-    by their cosines c and sines s, at plane radii r (signed) and distances rho [m]."""
-    axis = (np.abs(r) < 1e-12) | (rho < 1e-12)
-    return np.asarray(np.arctan2(s, np.where(axis, np.abs(c), c * r / np.where(axis, 1.0, rho))))
 
 
 def solve(
@@ -128,7 +102,7 @@ def _branches(
     wx, wz = b.r - fam.c1[0], b.z - fam.c1[1]
     if three:
         assert pitch is not None
-        c, s, turn = turn_of(fam, pitch, b)
+        c, s, turn = turn_of(fam, np.tile(pitch, len(b.r) // len(pitch)), b.r, b.rho)
         (v3x, v3z) = fam.links[2]
         wx, wz = wx - (c * v3x - s * v3z), wz - (s * v3x + c * v3z)
     l1, l2 = fam.l1, fam.l2

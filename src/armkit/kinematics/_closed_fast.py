@@ -14,7 +14,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .._errors import Reason
-from ._family import PlanarFamily, planes
+from ._family import PlanarFamily, planes, turn_of
+from ._lanes import FLOATS
+from ._pose import pitch_of_phi
 
 Q = tuple[float, ...]
 Found = list[tuple[float, Q]]  # (squared joint distance to the seed, solution)
@@ -40,15 +42,6 @@ def miss(v: float, lo: float, hi: float, j: int, misses: Misses) -> None:
     excess and its value at the turn nearest the range."""
     near = 0.5 * (lo + hi) + math.remainder(v - 0.5 * (lo + hi), _TWO_PI)
     misses.violations.append((max(lo - near, near - hi), j, near))
-
-
-def pitch_for_phi(phi: float, r: float, rho: float) -> float:
-    """Pitch [rad] of plane approach angle ``phi`` [rad] at plane radius r (signed) and
-    horizontal distance rho [m] (see ``pitch_of``)."""
-    c = math.cos(phi)
-    if abs(r) < 1e-12 or rho < 1e-12:
-        return math.atan2(math.sin(phi), abs(c))
-    return math.atan2(math.sin(phi), c * r / rho)
 
 
 def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
@@ -101,17 +94,15 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
                 q0 = lo0 if w < lo0 else (hi0 if w > hi0 else w)
             wx, wz, turn = r - c1x, z - c1z, 0.0
             if three:  # the wrist point, from the plane turn that gives the pitch
-                if plain or not (lat or rho < 1e-12 or -1e-12 < r < 1e-12):
-                    ca, sa = (cp if r > 0.0 else -cp), sp
-                    turn = (pv if r > 0.0 else pi - pv) - phi0  # as ``_closed.turn_of``
-                else:
-                    ca, sa = cp, sp
-                    if lat and rho >= 1e-12 and not -1e-12 < r < 1e-12:
-                        sa = sp * abs(r) / rho
-                        n = sqrt(sa * sa + cp * cp)
-                        ca, sa = (cp if r > 0.0 else -cp) / n, sa / n
-                    turn = atan2(sa, ca) - phi0
-                c, s = ca * c0 + sa * s0, sa * c0 - ca * s0
+                if plain or not (lat or rho < 1e-12 or -1e-12 < r < 1e-12):  # ``turn_of``
+                    ca = cp if r > 0.0 else -cp
+                    c, s, turn = (
+                        ca * c0 + sp * s0,
+                        sp * c0 - ca * s0,
+                        (pv if r > 0.0 else pi - pv) - phi0,
+                    )
+                else:  # a lateral offset, or on the base axis
+                    c, s, turn = turn_of(fam, pv, r, rho, FLOATS)
                 wx, wz = wx - (c * v3x - s * v3z), wz - (s * v3x + c * v3z)
             cg = (wx * wx + wz * wz - k0) / k1
             if not -1.0 - 1e-12 <= cg <= 1.0 + 1e-12:
@@ -125,7 +116,7 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
             for gg, tt in ((g, t), (-g, -t)) if g > 1e-12 else ((g, t),):
                 a1, a2 = aim - tt, gg - bend
                 if given:
-                    got = pitch_for_phi(phi0 + a1 + a2, r, rho)
+                    got = pitch_of_phi(cos(phi0 + a1 + a2), sin(phi0 + a1 + a2), r, rho, FLOATS)
                     if abs(rem(got - pitch, tp)) > 1e-7:  # type: ignore[operator]
                         if misses is not None:
                             misses.reasons.append("pitch")

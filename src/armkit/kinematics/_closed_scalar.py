@@ -31,7 +31,7 @@ def limited(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
         return []
     want, rho, gap, pitch = preferred(chain, seed), math.hypot(x, y), math.inf, 0.0
     for r, q0 in ways:
-        if base_fits(chain, fam, q0):
+        if base_fits(chain, fam, q0, FLOATS):
             g, at = boundary_pitch(chain, fam, r, z, rho, want, FLOATS)
             gap, pitch = (g, at) if g < gap else (gap, pitch)
     return solve(x, y, z, pitch, seed, None) if gap < math.inf else []

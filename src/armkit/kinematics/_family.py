@@ -19,10 +19,13 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from ._lanes import LANES, Ops
+
 F64 = NDArray[np.float64]
 Bool = NDArray[np.bool_]
 Vec2 = tuple[float, float]
 Vec3 = tuple[float, float, float]
+Lane = Any  # a float, or an array: one value per lane
 _EPS = 1e-9
 MIN_LINK = 1e-6  # [m]
 MAX_LINK = 1e4  # [m]
@@ -195,3 +198,23 @@ def planes(fam: PlanarFamily, P: F64, seed: F64) -> Planes:
     heading = np.tile(np.arctan2(y, x) - fam.azimuth_r, 2)
     q0 = np.where(axis, np.tile(seed[:, fam.base], 2) + turn, fam.base_sign * (heading - lean))
     return Planes(r, q0, np.tile(rho, 2), np.tile(z, 2), r2 < -1e-18)
+
+
+def turn_of(fam: PlanarFamily, pitch: Lane, r: Lane, rho: Lane, ops: Ops = LANES) -> Any:
+    """cos, sin and angle [rad] of the plane turn (from q = 0) that gives ``pitch`` [rad] in
+    the base branch of plane radius r (signed) and horizontal distance rho [m] (see
+    ``pitch_of``), over lanes; NaN on the base axis beyond +-90 deg, where no pitch is
+    possible."""
+    axis = (rho < 1e-12) | (abs(r) < 1e-12)
+    pitch = ops.where((rho < 1e-12) & (abs(pitch) > math.pi / 2 + 1e-12), math.nan, pitch)
+    sp, cp = ops.sin(pitch), ops.cos(pitch)
+    cp = ops.where(axis | (r > 0), cp, -cp)  # reaching back the approach points the other way
+    if fam.lateral:
+        sp = sp * ops.where(axis, 1.0, abs(r) / ops.where(axis, 1.0, rho))
+        norm = ops.sqrt(sp * sp + cp * cp)
+        sp, cp = sp / norm, cp / norm
+        phi = ops.atan2(sp, cp)
+    else:  # the approach angle in the plane is the pitch, or pi - pitch reaching back
+        phi = ops.where(axis | (r > 0), pitch, math.pi - pitch)
+    c0, s0 = math.cos(fam.phi0), math.sin(fam.phi0)
+    return cp * c0 + sp * s0, sp * c0 - cp * s0, phi - fam.phi0

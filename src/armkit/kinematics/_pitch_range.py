@@ -26,11 +26,11 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ._chain import Chain
-from ._closed import SLACK, TWO_PI, best, pitch_of_phi, solve, turn_of, wrap
-from ._family import PlanarFamily, Planes, planes
+from ._closed import SLACK, TWO_PI, best, solve
+from ._family import PlanarFamily, Planes, planes, turn_of
 from ._forward import CHUNK, chunks, poses
 from ._lanes import LANES, Ops
-from ._pose import pitch_of
+from ._pose import pitch_of, pitch_of_phi
 
 F64 = NDArray[np.float64]
 Bool = NDArray[np.bool_]
@@ -64,7 +64,7 @@ def limited_pitch(
     count = len(b.r) // len(P)
     with np.errstate(invalid="ignore", divide="ignore"):  # NaN: no boundary point there
         gap, at = boundary_pitch(chain, fam, b.r, b.z, b.rho, np.tile(want, count))
-    gap = b.per_target(np.where(_base_fits(chain, fam, b.q0) & ~np.tile(b.bad, count), gap, np.inf))
+    gap = b.per_target(np.where(base_fits(chain, fam, b.q0) & ~np.tile(b.bad, count), gap, np.inf))
     k = np.argmin(gap, axis=0)
     cols = np.arange(len(P))
     return b.per_target(at)[k, cols], np.isfinite(gap[k, cols])
@@ -90,15 +90,15 @@ def nearest_reachable(chain: Chain, fam: PlanarFamily, b: Planes, want: F64) -> 
     big = np.sqrt(tx * tx + tz * tz)
     k = np.maximum(2.0 * big * l3, 1e-300)
     c_lo, c_hi = (big * big + l3 * l3 - hi_d * hi_d) / k, (big * big + l3 * l3 - lo_d * lo_d) / k
-    empty = (c_lo > 1.0 + 1e-12) | (c_hi < -1.0 - 1e-12) | ~_base_fits(chain, fam, b.q0)
+    empty = (c_lo > 1.0 + 1e-12) | (c_hi < -1.0 - 1e-12) | ~base_fits(chain, fam, b.q0)
     cs, ss = (tx * ck + tz * sk) / big, (tz * ck - tx * sk) / big  # where W is nearest
-    c, s, _ = turn_of(fam, want, b)
+    wants = np.tile(want, len(b.r) // len(want))
+    c, s, _ = turn_of(fam, wants, b.r, b.rho)
     cu, su = c * cs + s * ss, s * cs - c * ss  # u at want
     clamped = np.clip(cu, c_lo, c_hi)
     with np.errstate(invalid="ignore"):
         su = np.where(clamped == cu, su, np.copysign(np.sqrt(1.0 - clamped * clamped), su))
     ct, st = clamped * cs - su * ss, su * cs + clamped * ss  # the turn at u
-    wants = np.tile(want, len(b.r) // len(want))
     pitch = np.where(
         clamped == cu, wants, pitch_of_phi(ct * cp - st * sp, st * cp + ct * sp, b.r, b.rho)
     )
@@ -122,13 +122,13 @@ def boundary_pitch(
     (v3x, v3z), l3 = fam.links[2], math.hypot(*fam.links[2])
     k = fam.phi0 - math.atan2(v3z, v3x)  # the approach's angle in the plane less link 3's
     ck, sk, ranges = math.cos(k) / l3, math.sin(k) / l3, _ranges(chain, fam)
-    on_axis, r_rho = (rho < 1e-12) | (abs(r) < 1e-12), r / ops.where(rho < 1e-12, 1.0, rho)
 
     def pitch(x: Lane, z: Lane) -> Lane:  # the pitch [rad] with link 3 at (x, z) [m]
-        c, s = x * ck - z * sk, x * sk + z * ck  # the approach (see ``pitch_of_phi``)
-        return ops.atan2(s, ops.where(on_axis, abs(c), c * r_rho))
+        return pitch_of_phi(x * ck - z * sk, x * sk + z * ck, r, rho, ops)
 
-    if fam.lateral or bool(np.any(on_axis)):  # the pitch's own distance from want
+    if fam.lateral or bool(
+        np.any((rho < 1e-12) | (abs(r) < 1e-12))
+    ):  # the pitch's own distance from want
         wx3 = wz3 = None
     else:  # pitch = +-(approach angle) + a constant: nearest where link 3 is nearest want's
         c, s = ops.where(r > 0, 1.0, -1.0) * ops.cos(want), ops.sin(want)  # the approach
@@ -149,20 +149,12 @@ def _gap(pitch: Lane, want: Lane, ops: Ops = LANES) -> Lane:
     return ops.where(d > math.pi, TWO_PI - d, d)
 
 
-def base_fits(chain: Chain, fam: PlanarFamily, q0: float) -> bool:
-    """Whether one base angle q0 [rad] is inside the base's limits by whole turns
-    (``_base_fits`` in floats)."""
+def base_fits(chain: Chain, fam: PlanarFamily, q0: Lane, ops: Ops = LANES) -> Lane:
+    """Where base angles q0 [rad] are inside the base's limits by whole turns (as ``wrap``)."""
     if fam.base is None:
-        return True
-    lo, hi = chain.lower[fam.base], chain.upper[fam.base]
-    return hi - lo >= TWO_PI or q0 - TWO_PI * math.floor((q0 - lo + SLACK) / TWO_PI) <= hi + SLACK
-
-
-def _base_fits(chain: Chain, fam: PlanarFamily, q0: F64) -> Bool:
-    """Where the base angles q0 [rad] are inside the base's limits by whole turns."""
-    if fam.base is None or chain.upper[fam.base] - chain.lower[fam.base] >= TWO_PI:
-        return np.ones(len(q0), dtype=bool)
-    return wrap(q0, chain.lower[fam.base], chain.upper[fam.base])[1]
+        return q0 == q0  # everywhere, as a bool or an array of them (q0 is 0 there)
+    lo, hi = chain.lower[fam.base], chain.upper[fam.base]  # a turn or more: always true
+    return q0 - TWO_PI * ops.floor((q0 - lo + SLACK) / TWO_PI) <= hi + SLACK
 
 
 def _boundaries(

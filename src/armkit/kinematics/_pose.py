@@ -3,9 +3,12 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
+
+from ._lanes import LANES, Ops
 
 F64 = NDArray[np.float64]
 Vec3 = tuple[float, float, float]
@@ -44,3 +47,11 @@ def pitch_scalar(a: Vec3, p: Vec3) -> float:
     rho = math.hypot(p[0], p[1])
     h = (a[0] * p[0] + a[1] * p[1]) / rho if rho >= 1e-9 else math.hypot(a[0], a[1])
     return math.atan2(a[2], h)
+
+
+def pitch_of_phi(c: Any, s: Any, r: Any, rho: Any, ops: Ops = LANES) -> Any:
+    """The pitch [rad] in [-pi, pi] of plane approach angles given by their cosines c and
+    sines s, at plane radii r (signed) and horizontal distances rho [m] (see ``pitch_of``),
+    over lanes (``_lanes``)."""
+    axis = (abs(r) < 1e-12) | (rho < 1e-12)
+    return ops.atan2(s, ops.where(axis, abs(c), c * r / ops.where(axis, 1.0, rho)))
