@@ -142,3 +142,24 @@ def test_limit_message_names_the_nearest_miss() -> None:
         UnreachableError, match=r"wrist would be -64\.\d deg, allowed -60\.0\.\.60\.0"
     ):
         ik(load_model("owi535"), (0.2, 0.0, 0.05))
+
+
+@pytest.mark.parametrize("name", ["owi535", "openmanipulator_x", "lynx6", "al5d", "planar2"])
+@pytest.mark.parametrize("pitch", [None, 0.3, 2.0])
+def test_batch_reasons_are_the_errors_of_ik(name: str, pitch: float | None) -> None:
+    """ik_batch says why a target fails as ik's error does: the same reason, by the same
+    ranking (a joint limit in any branch first, then too far, too close, the pitch)."""
+    m = load_model(name)
+    rng = np.random.default_rng(7)
+    P = rng.uniform(-0.6, 0.6, (400, 3))
+    P[:40, :2] = 0.0  # on the base axis: beyond +-90 deg no pitch is possible there
+    if name == "planar2":
+        P[:, 1] = 0.0
+    batch = ik_batch(m, P, pitch)
+    for p, got in zip(P, batch.reason, strict=True):
+        try:
+            ik(m, p, pitch)
+            want = ""
+        except UnreachableError as e:
+            want = e.reason
+        assert got == want, (p, pitch)

@@ -23,17 +23,32 @@ Bool = NDArray[np.bool_]
 TWO_PI = 2.0 * np.pi
 SLACK = 1e-9  # [rad] a joint this far beyond a limit counts as at it
 STRAIGHT = 1.0 - 1e-12  # cos of the elbow beyond it: straight or folded (1e-13 m)
+# Why a branch fails, ranked as ``_closed_scalar.refusal`` ranks ``Misses``: the highest
+# code among a target's branches names it; 0 (nothing recorded) reads as too far.
+PITCH, TOO_CLOSE, TOO_FAR, JOINT_LIMIT = 1, 2, 3, 4
+WHY = np.array(["too_far", "pitch", "too_close", "too_far", "joint_limit"])
+
+
+@dataclass(frozen=True)
+class Checks:
+    """What ``_branches`` found per base branch (B * N,), kept to say why not: the elbow's
+    cosine (NaN: no pitch possible), where the base fits, and per elbow where the
+    geometry (and a given pitch) fits, before the joint limits."""
+
+    cos_g: F64
+    base: Bool
+    geometry: tuple[Bool, ...]
 
 
 @dataclass(frozen=True)
 class Candidates:
     """K candidates for each of N targets as lanes: joint angles (dof, K, N) [rad] and
-    where each fits (K, N); per target (N,): beyond reach, and with no base branch (off
-    the plane, or inside the lateral offset)."""
+    where each fits (K, N), with the checks that say why not; per target (N,): with no
+    base branch (off the plane, or inside the lateral offset)."""
 
     lanes: F64
     fits: Bool
-    far: Bool
+    checks: Checks
     bad: Bool
 
     @property
@@ -57,10 +72,10 @@ def solve(
     count = len(b.r) // len(P)
     lanes = np.empty((chain.dof, 2, len(b.r)))
     lanes[:] = np.tile(seed.T, count)[:, None, :]
-    fits, far = _branches(chain, fam, b, pitch, lanes)
+    fits, checks = _branches(chain, fam, b, pitch, lanes)
     fits = fits.reshape(2 * count, len(P)) & ~b.bad
     lanes = lanes.reshape(chain.dof, 2 * count, len(P))
-    return Candidates(lanes, fits, np.asarray(b.per_target(far).any(axis=0)), b.bad)
+    return Candidates(lanes, fits, checks, b.bad)
 
 
 def best(c: Candidates, seed: F64) -> tuple[F64, Bool]:
@@ -76,9 +91,17 @@ def best(c: Candidates, seed: F64) -> tuple[F64, Bool]:
 
 
 def reasons(fam: PlanarFamily, c: Candidates) -> NDArray[np.str_]:
-    """Why each target of ``c`` has no valid candidate ('' where it has one), shape (N,)."""
-    reason = np.full(len(c.far), "joint_limit", dtype="<U11")
-    reason[c.far] = "too_far"
+    """Why each target of ``c`` has no valid candidate ('' where it has one), shape (N,):
+    the highest ``WHY`` code among its branches, as ``_closed_scalar.refusal`` says it."""
+    cos_g, base, geometry = c.checks.cos_g, c.checks.base, c.checks.geometry
+    why = np.select([cos_g > 1.0 + 1e-12, cos_g < -1.0 - 1e-12], [TOO_FAR, TOO_CLOSE], 0)
+    why[~(base | np.isnan(cos_g))] = JOINT_LIMIT
+    ok = (np.abs(cos_g) <= 1.0 + 1e-12) & base
+    for geometry_ok, fits in zip(geometry, c.fits.reshape(len(geometry), -1), strict=True):
+        why[ok & ~geometry_ok] = np.maximum(why[ok & ~geometry_ok], PITCH)
+        why[geometry_ok & ~fits] = JOINT_LIMIT
+    why[np.isnan(cos_g)] = PITCH  # on the base axis beyond +-90 deg: nothing else counts
+    reason: NDArray[np.str_] = WHY[why.reshape(-1, len(c.bad)).max(axis=0)].astype("<U11")
     reason[c.bad] = "off_plane" if fam.base is None else "too_close"
     reason[c.valid.any(axis=1)] = ""
     return reason
@@ -95,9 +118,9 @@ def wrap(v: F64, lo: float, hi: float) -> tuple[F64, Bool]:
 
 def _branches(
     chain: Chain, fam: PlanarFamily, b: Planes, pitch: F64 | None, out: F64
-) -> tuple[Bool, Bool]:
+) -> tuple[Bool, Checks]:
     """Fill both elbow candidates (dof, 2, B * N) of every base branch; return where each
-    fits (2, B * N) and where the branch is beyond reach (B * N,)."""
+    fits (2, B * N) and the checks that say why not."""
     three = len(fam.planar) == 3
     wx, wz = b.r - fam.c1[0], b.z - fam.c1[1]
     if three:
@@ -111,20 +134,22 @@ def _branches(
     g = np.arccos(cg)
     t = np.arctan2(l2 * np.sqrt(1.0 - cg * cg), l1 + l2 * cg)
     aim = np.arctan2(wz, wx) - fam.ang1
-    ok = np.abs(cos_g) <= 1.0 + 1e-12
+    ok, base = np.abs(cos_g) <= 1.0 + 1e-12, np.ones(len(cos_g), dtype=bool)
     if fam.base is not None:
-        out[fam.base], fits = wrap(b.q0, chain.lower[fam.base], chain.upper[fam.base])
-        ok &= fits
+        out[fam.base], base = wrap(b.q0, chain.lower[fam.base], chain.upper[fam.base])
+        ok &= base
+    geometry = []
     valid = np.empty((2, len(ok)), dtype=bool)
     for e, sign in enumerate((1.0, -1.0)):
         a1, a2 = aim - sign * t, sign * g - fam.bend
         alphas = (a1, a2, turn - a1 - a2) if three else (a1, a2)
         fit = ok if three or pitch is None else ok & _pitch_ok(fam, a1 + a2, b, pitch)
+        geometry.append(fit)
         for j, s_j, a in zip(fam.planar, fam.sigma, alphas, strict=True):
             out[j, e], inside = wrap(s_j * a, chain.lower[j], chain.upper[j])
             fit = fit & inside
         valid[e] = fit
-    return valid, np.asarray(cos_g > 1.0 + 1e-12)
+    return valid, Checks(cos_g, base, tuple(geometry))
 
 
 def _pitch_ok(fam: PlanarFamily, turn: F64, b: Planes, pitch: F64) -> Bool:
