@@ -37,8 +37,17 @@ def test_off_plane_for_planar_arm() -> None:
 
 def test_planar2_pitch_follows_position() -> None:
     m = load_model("planar2")
-    with pytest.raises(UnreachableError) as exc:
+    with pytest.raises(
+        UnreachableError, match=r"follows from the position.*leave the pitch out"
+    ) as exc:
         ik(m, (0.5, 0.0, 0.5), 1.234)
+    assert exc.value.reason == "pitch"
+
+
+def test_on_the_base_axis_the_pitch_is_within_90_deg() -> None:
+    m = load_model("openmanipulator_x")
+    with pytest.raises(UnreachableError, match=r"base axis .* within -90..90 deg") as exc:
+        ik(m, (0.0, 0.0, 0.3), math.radians(120))
     assert exc.value.reason == "pitch"
 
 

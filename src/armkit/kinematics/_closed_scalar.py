@@ -62,9 +62,8 @@ def refusal(
             reason="joint_limit",
         )
     reason: Reason = next((r for r in EXPLAIN if r in misses.reasons), "too_far")
-    return UnreachableError(
-        f"{chain.name} cannot reach {where(p, pitch)}: {EXPLAIN[reason]}", reason=reason
-    )
+    why = EXPLAIN[reason] if reason != "pitch" or len(fam.planar) == 3 else TWO_PLANAR
+    return UnreachableError(f"{chain.name} cannot reach {where(p, pitch)}: {why}", reason=reason)
 
 
 def too_far(chain: Chain, p: Q, pitch: float | None) -> UnreachableError:
@@ -83,6 +82,9 @@ EXPLAIN: dict[Reason, str] = {
     "too_far": "too far away for the arm's links; try a point nearer the base",
     "too_close": "too close to the base for the arm's links; try a point further out",
     "off_plane": "the point is outside the arm's plane of motion",
-    "pitch": "the arm cannot have that pitch there (on the base axis it is within -90..90 deg;"
-    " an arm with two planar joints cannot choose it: leave the pitch out)",
+    "pitch": "on the base axis the gripper's pitch is within -90..90 deg; give one in that"
+    " range, or move the point off the axis",
 }
+TWO_PLANAR = (
+    "the pitch follows from the position on an arm with two planar joints; leave the pitch out"
+)
