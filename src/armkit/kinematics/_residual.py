@@ -146,9 +146,8 @@ def rotation_log(
 ) -> tuple[Any, Any, Any]:
     """Rotation vector [rad] of R_goal R^T (world frame), R_goal row-major, R given by its
     columns; rotations by about pi from the symmetric part (``_log_near_pi``)."""
-    E = [
-        [sum(R_goal[3 * i + k] * cols[k][j] for k in range(3)) for j in range(3)] for i in range(3)
-    ]
+    g, rows = R_goal, tuple(zip(*cols, strict=True))  # R's rows
+    E = [[g[i] * x + g[i + 1] * y + g[i + 2] * z for x, y, z in rows] for i in (0, 3, 6)]
     vx, vy, vz = E[2][1] - E[1][2], E[0][2] - E[2][0], E[1][0] - E[0][1]
     s = 0.5 * ops.sqrt(vx * vx + vy * vy + vz * vz)
     c = 0.5 * (E[0][0] + E[1][1] + E[2][2] - 1.0)
