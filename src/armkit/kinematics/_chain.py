@@ -22,7 +22,7 @@ from .._errors import ModelError
 from ..model import ArmModel, JointFrame
 from ._closed_fast import FixedSolver, Q, fixed_solver
 from ._closed_free import FreeSolver, free_solver
-from ._family import PlanarFamily, detect, wrist_range
+from ._family import PlanarFamily, Range, detect, joint_ranges, wrist_range
 from ._pose import pitch_scalar
 from ._state import Lanes, State, compile_state
 from ._steps import Fixed, Step, dense_frames, frames_of, steps_of
@@ -50,6 +50,7 @@ class Chain:
         home_pitch: the tool's pitch at home [rad].
         wrist_reach: (min, max) distance [m] from the first planar joint to the end of
             link 2 that the elbow's limits allow (family arms; else (0, 0)).
+        ranges: the planar joints' limits as ``_pitch_range`` checks them (``joint_ranges``).
         on_axis: how many frames of ``fk_frames``, from the world frame on, keep their
             origin on the vertical axis through the base origin at every pose (checked on
             home, zero and 4 random poses, fixed seed): the base column's.
@@ -80,6 +81,7 @@ class Chain:
     why_not: str
     home_pitch: float
     wrist_reach: tuple[float, float]
+    ranges: tuple[Range, ...]
     on_axis: int
     fixed: FixedSolver | None
     free: FreeSolver | None
@@ -157,6 +159,7 @@ def compile_chain(model: ArmModel) -> Chain:
         why_not="" if isinstance(family, PlanarFamily) else f"{model.name} {family}",
         home_pitch=home_pitch,
         wrist_reach=wrist,
+        ranges=joint_ranges(fam, lower, upper) if fam else (),
         on_axis=_on_axis(steps, tool, np.array(lower), np.array(upper), np.array(home)),
         fixed=fixed,
         free=free,

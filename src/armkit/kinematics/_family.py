@@ -29,6 +29,8 @@ Lane = Any  # a float, or an array: one value per lane
 _EPS = 1e-9
 MIN_LINK = 1e-6  # [m]
 MAX_LINK = 1e4  # [m]
+_CHECK = 0.5e-9  # [rad]: a boundary point fits within half the solvers' slack
+Vec = tuple[float, ...]
 
 
 @dataclass(frozen=True)
@@ -218,3 +220,23 @@ def turn_of(fam: PlanarFamily, pitch: Lane, r: Lane, rho: Lane, ops: Ops = LANES
         phi = ops.where(axis | (r > 0), pitch, math.pi - pitch)
     c0, s0 = math.cos(fam.phi0), math.sin(fam.phi0)
     return cp * c0 + sp * s0, sp * c0 - cp * s0, phi - fam.phi0
+
+
+Range = tuple[int, float, float, float]  # link k, its middle direction's cos, sin, least dot
+
+
+def joint_ranges(fam: PlanarFamily, lower: Vec, upper: Vec) -> tuple[Range, ...]:
+    """Per planar joint with a range under a turn: the direction its range's middle gives
+    its link k (from the plane's r axis, or the previous link), and the least dot product of
+    the link with it inside the range (lengths times the cosine of half the range) [m^2],
+    for ``_pitch_range``'s boundary points; ``lower``, ``upper``: the joints' limits [rad]."""
+    out = []
+    angles = [math.atan2(vz, vx) for vx, vz in fam.links]
+    for k, (j, s) in enumerate(zip(fam.planar, fam.sigma, strict=True)):
+        lo, hi = sorted((s * lower[j], s * upper[j]))
+        half = 0.5 * (hi - lo) + _CHECK
+        if half < math.pi:
+            mid = 0.5 * (lo + hi) + angles[k] - (angles[k - 1] if k else 0.0)
+            lengths = math.hypot(*fam.links[k]) * (math.hypot(*fam.links[k - 1]) if k else 1.0)
+            out.append((k, math.cos(mid), math.sin(mid), lengths * math.cos(half)))
+    return tuple(out)

@@ -27,7 +27,7 @@ from numpy.typing import NDArray
 
 from ._chain import Chain
 from ._closed import SLACK, TWO_PI, best, solve
-from ._family import PlanarFamily, Planes, planes, turn_of
+from ._family import PlanarFamily, Planes, Range, planes, turn_of
 from ._forward import CHUNK, chunks, poses
 from ._lanes import LANES, Ops
 from ._pose import pitch_of, pitch_of_phi
@@ -35,7 +35,6 @@ from ._pose import pitch_of, pitch_of_phi
 F64 = NDArray[np.float64]
 Bool = NDArray[np.bool_]
 Lane = Any  # an array of floats: one value per lane
-_CHECK = 0.5e-9  # [rad]: a boundary point fits within half the solvers' slack
 
 
 def free_batch(chain: Chain, fam: PlanarFamily, P: F64, seed: F64) -> tuple[F64, Bool]:
@@ -121,15 +120,14 @@ def boundary_pitch(
     tx, tz = r - fam.c1[0], z - fam.c1[1]
     (v3x, v3z), l3 = fam.links[2], math.hypot(*fam.links[2])
     k = fam.phi0 - math.atan2(v3z, v3x)  # the approach's angle in the plane less link 3's
-    ck, sk, ranges = math.cos(k) / l3, math.sin(k) / l3, _ranges(chain, fam)
+    ck, sk, ranges = math.cos(k) / l3, math.sin(k) / l3, chain.ranges
 
     def pitch(x: Lane, z: Lane) -> Lane:  # the pitch [rad] with link 3 at (x, z) [m]
         return pitch_of_phi(x * ck - z * sk, x * sk + z * ck, r, rho, ops)
 
-    if fam.lateral or bool(
-        np.any((rho < 1e-12) | (abs(r) < 1e-12))
-    ):  # the pitch's own distance from want
-        wx3 = wz3 = None
+    axis = (rho < 1e-12) | (abs(r) < 1e-12)
+    if fam.lateral or (axis.any() if isinstance(axis, np.ndarray) else axis):
+        wx3 = wz3 = None  # the pitch's own distance from want
     else:  # pitch = +-(approach angle) + a constant: nearest where link 3 is nearest want's
         c, s = ops.where(r > 0, 1.0, -1.0) * ops.cos(want), ops.sin(want)  # the approach
         wx3, wz3 = c * math.cos(k) + s * math.sin(k), s * math.cos(k) - c * math.sin(k)
@@ -202,26 +200,7 @@ def _meet(
     return (mx - h * dz, mz + h * dx), (mx + h * dz, mz - h * dx)
 
 
-Range = tuple[int, float, float, float]  # link k, its middle direction's cos, sin, least dot
-
-
-def _ranges(chain: Chain, fam: PlanarFamily) -> list[Range]:
-    """Per planar joint with a range under a turn: the direction its range's middle gives
-    its link k (from the plane's r axis, or the previous link), and the least dot product of
-    the link with it inside the range (lengths times the cosine of half the range) [m^2]."""
-    out = []
-    angles = [math.atan2(vz, vx) for vx, vz in fam.links]
-    for k, (j, s) in enumerate(zip(fam.planar, fam.sigma, strict=True)):
-        lo, hi = sorted((s * chain.lower[j], s * chain.upper[j]))
-        half = 0.5 * (hi - lo) + _CHECK
-        if half < math.pi:
-            mid = 0.5 * (lo + hi) + angles[k] - (angles[k - 1] if k else 0.0)
-            lengths = math.hypot(*fam.links[k]) * (math.hypot(*fam.links[k - 1]) if k else 1.0)
-            out.append((k, math.cos(mid), math.sin(mid), lengths * math.cos(half)))
-    return out
-
-
-def _fits(ranges: list[Range], *links: tuple[Lane, Lane]) -> Lane:
+def _fits(ranges: tuple[Range, ...], *links: tuple[Lane, Lane]) -> Lane:
     """Where every planar joint is inside its range, given links 1 (= E), 2 and 3 as vectors
     [m]: each link's dot product with the direction of its range's middle."""
     ok = links[2][0] == links[2][0]  # not NaN: the boundary point exists
