@@ -135,7 +135,10 @@ def boundary_pitch(
     for wx, wz, ex, ez in _boundaries(chain, fam, tx, tz, ops):
         l3x, l3z = tx - wx, tz - wz
         d = _gap(pitch(l3x, l3z), want, ops) if wx3 is None else -(l3x * wx3 + l3z * wz3)
-        better = _fits(ranges, (ex, ez), (wx - ex, wz - ez), (l3x, l3z)) & (d < gap)
+        better = d < gap
+        if better is False:  # one branch in floats, and no nearer: no need to check it
+            continue
+        better = better & _fits(ranges, (ex, ez), (wx - ex, wz - ez), (l3x, l3z))
         w = ops.where
         gap, bx, bz = w(better, d, gap), w(better, l3x, bx), w(better, l3z, bz)
     return gap, pitch(bx, bz)
