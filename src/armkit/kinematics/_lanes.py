@@ -17,9 +17,7 @@ class Ops(NamedTuple):
     hypot: Any
     atan2: Any
     maximum: Any
-    minimum: Any
     floor: Any
-    copysign: Any
     cos: Any
     sin: Any
     where: Any  # where(condition, a, b): a where the condition holds, else b
@@ -29,11 +27,5 @@ def _where(condition: bool, a: float, b: float) -> float:
     return a if condition else b
 
 
-FLOATS = Ops(
-    math.sqrt, math.hypot, math.atan2, max, min, math.floor, math.copysign, math.cos, math.sin,
-    _where,
-)  # fmt: skip
-LANES = Ops(
-    np.sqrt, np.hypot, np.arctan2, np.maximum, np.minimum, np.floor, np.copysign, np.cos, np.sin,
-    np.where,
-)  # fmt: skip
+FLOATS = Ops(math.sqrt, math.hypot, math.atan2, max, math.floor, math.cos, math.sin, _where)
+LANES = Ops(np.sqrt, np.hypot, np.arctan2, np.maximum, np.floor, np.cos, np.sin, np.where)
