@@ -72,6 +72,19 @@ def test_coarse_spacing_that_leaves_the_path_is_refused(omx: ArmModel) -> None:
     assert info.value.index == 0 and info.value.reason == "discontinuous"
 
 
+def test_a_jump_at_a_chosen_pitch_names_the_joint_and_the_pitch() -> None:
+    """Without a pitch the solver picks one per point; where the arm would flip there the
+    refusal names the joint, the pitches it chose, and suggests giving one."""
+    lynx6 = load_model("lynx6")
+    pts = circle([0.15, 0.0, 0.02], 0.02, 0.002)
+    with pytest.raises(
+        PathError, match=r"the \w+ turns [\d.]+ deg: .* at the pitches it chose"
+    ) as info:
+        plan_path(lynx6, pts, None, lynx6.home)
+    assert info.value.reason == "discontinuous" and "give a pitch" in str(info.value)
+    plan_path(lynx6, pts, math.radians(-60), lynx6.home)  # a fixed pitch draws it
+
+
 def test_timed_path_keeps_joint_limits_and_stops_at_corners(omx: ArmModel) -> None:
     pts = rectangle([0.17, 0.0, 0.05], 0.08, 0.08, 0.002)
     timed = time_path(omx, plan_path(omx, pts, DOWN, omx.home), speed=0.5, accel=5.0)

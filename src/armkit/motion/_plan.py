@@ -18,7 +18,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError, Reason, UnreachableError
 from .._inputs import mm
-from ..kinematics import fk, ik
+from ..kinematics import fk, ik, pitch_of
 from ..model import ArmModel
 
 F64 = NDArray[np.float64]
@@ -65,7 +65,7 @@ def plan_path(
     if p.ndim != 2 or p.shape[1] != 3 or p.shape[0] < 1 or not np.all(np.isfinite(p)):
         raise InputError(f"points must be finite, shape (N, 3), got {p.shape}")
     q, failure = _solve_all(model, p, pitch, np.asarray(q_start, dtype=np.float64))
-    _check_between(model, p[: q.shape[0]], q, tolerance)
+    _check_between(model, p[: q.shape[0]], q, tolerance, free=pitch is None)
     if failure is not None:
         raise failure
     return JointPath(p, q)
@@ -86,8 +86,9 @@ def _solve_all(
     return out, None
 
 
-def _check_between(model: ArmModel, p: F64, q: F64, tolerance: float) -> None:
-    """Refuse the path where FK halfway between samples strays from the segment."""
+def _check_between(model: ArmModel, p: F64, q: F64, tolerance: float, free: bool) -> None:
+    """Refuse the path where FK halfway between samples strays from the segment; ``free``:
+    no pitch was given (the solver chose one per point)."""
     if p.shape[0] < 2:
         return
     mid = fk(model, (q[:-1] + q[1:]) / 2.0)[:, :3, 3]
@@ -95,11 +96,17 @@ def _check_between(model: ArmModel, p: F64, q: F64, tolerance: float) -> None:
     bad = np.flatnonzero(off > tolerance)
     if bad.size:
         i = int(bad[0])
-        step = math.degrees(float(np.max(np.abs(q[i + 1] - q[i]))))
+        turn = np.abs(q[i + 1] - q[i])
+        j = int(np.argmax(turn))
+        why, fix = "an elbow flip or a singularity", "use a smaller spacing or another path"
+        if free and model.default_pitch is None and model.dof > 2:  # the solver chose it
+            a, b = np.degrees(pitch_of(fk(model, q[i : i + 2])))
+            why += f", at the pitches it chose there, {a:.1f} and {b:.1f} deg"
+            fix = "give a pitch, a smaller spacing or another path"
         raise PathError(
             f"between point {i} at {mm(p[i])} and point {i + 1} the arm would leave the path "
-            f"by {off[i] * 1000:.2f} mm (a joint turns {step:.1f} deg: elbow flip or "
-            f"singularity); use a smaller spacing or another path",
+            f"by {off[i] * 1000:.2f} mm (the {model.joint_names[j]} turns "
+            f"{math.degrees(turn[j]):.1f} deg: {why}); {fix}",
             reason="discontinuous",
             index=i,
         )
