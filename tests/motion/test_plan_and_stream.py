@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from armkit.connect import open_driver
-from armkit.kinematics import fk
+from armkit.kinematics import fk, pitch_of
 from armkit.model import ArmModel, load_model
 from armkit.motion import (
     EarlyStreaming,
@@ -72,17 +72,27 @@ def test_coarse_spacing_that_leaves_the_path_is_refused(omx: ArmModel) -> None:
     assert info.value.index == 0 and info.value.reason == "discontinuous"
 
 
-def test_a_jump_at_a_chosen_pitch_names_the_joint_and_the_pitch() -> None:
-    """Without a pitch the solver picks one per point; where the arm would flip there the
-    refusal names the joint, the pitches it chose, and suggests giving one."""
+def test_a_path_that_flips_at_chosen_pitches_is_planned_at_one_pitch() -> None:
+    """Without a pitch the solver picks one per point; where the Lynx6 would flip on
+    this circle (the wrist turning 103 deg), the path is planned at one pitch."""
     lynx6 = load_model("lynx6")
     pts = circle([0.15, 0.0, 0.02], 0.02, 0.002)
-    with pytest.raises(
-        PathError, match=r"the \w+ turns [\d.]+ deg: .* at the pitches it chose"
-    ) as info:
+    path = plan_path(lynx6, pts, None, lynx6.home)
+    pitches = pitch_of(fk(lynx6, path.q))
+    assert np.ptp(pitches) < 1e-6
+    assert np.allclose(fk(lynx6, path.q)[:, :3, 3], pts, atol=1e-9)
+
+
+def test_a_flip_at_chosen_pitches_names_the_joint_and_the_pitches(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    import armkit.motion._plan as plan
+
+    monkeypatch.setattr(plan, "PITCHES_TRIED", 0)  # no whole-path pitch: the flip is refused
+    lynx6 = load_model("lynx6")
+    pts = circle([0.15, 0.0, 0.02], 0.02, 0.002)
+    with pytest.raises(PathError, match=r"the wrist turns [\d.]+ deg: .* at the pitches it chose"):
         plan_path(lynx6, pts, None, lynx6.home)
-    assert info.value.reason == "discontinuous" and "give a pitch" in str(info.value)
-    plan_path(lynx6, pts, math.radians(-60), lynx6.home)  # a fixed pitch draws it
 
 
 def test_timed_path_keeps_joint_limits_and_stops_at_corners(omx: ArmModel) -> None:

@@ -6,6 +6,11 @@ nearest the arm's current angles), so the elbow never flips mid-path. Between
 two samples the arm moves in joint space; the check evaluates FK halfway
 between them and refuses the path if the arm would leave the straight piece by
 more than ``tolerance`` (a branch flip, a singularity, too coarse a spacing).
+
+Without a pitch (and no default one) each point's pitch is the one nearest the
+previous point's at which the arm fits; where that would flip the arm, the path
+is planned at one pitch throughout instead: the nearest the first point's, in
+5 deg steps, at which every point is reachable and the arm does not flip.
 """
 
 from __future__ import annotations
@@ -18,11 +23,13 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError, Reason, UnreachableError
 from .._inputs import mm
-from ..kinematics import fk, ik, pitch_of
+from ..kinematics import fk, ik, ik_batch, pitch_of
 from ..model import ArmModel
 
 F64 = NDArray[np.float64]
 DEFAULT_TOLERANCE = 0.2e-3  # [m]
+PITCH_STEP = math.radians(5.0)  # between the pitches tried for a whole path
+PITCHES_TRIED = 8  # reachable ones, nearest first, before the path is refused
 
 
 @dataclass(frozen=True)
@@ -54,8 +61,8 @@ def plan_path(
     tolerance: float = DEFAULT_TOLERANCE,
 ) -> JointPath:
     """Joint angles for every point of ``points`` [m], shape (N, 3), at ``pitch``
-    [rad] (None: the model's default, else free), starting on the branch nearest
-    ``q_start`` [rad], shape (dof,).
+    [rad] (None: the model's default, else chosen: see the module docstring),
+    starting on the branch nearest ``q_start`` [rad], shape (dof,).
 
     Raises:
         PathError: naming the first point that is unreachable or where the arm
@@ -64,11 +71,37 @@ def plan_path(
     p = np.asarray(points, dtype=np.float64)
     if p.ndim != 2 or p.shape[1] != 3 or p.shape[0] < 1 or not np.all(np.isfinite(p)):
         raise InputError(f"points must be finite, shape (N, 3), got {p.shape}")
-    q, failure = _solve_all(model, p, pitch, np.asarray(q_start, dtype=np.float64))
+    start = np.asarray(q_start, dtype=np.float64)
+    try:
+        return _plan(model, p, pitch, start, tolerance)
+    except PathError as error:
+        if error.reason != "discontinuous" or pitch is not None or model.default_pitch is not None:
+            raise
+        for fixed in _whole_path_pitches(model, p, start)[:PITCHES_TRIED]:
+            try:
+                return _plan(model, p, fixed, start, tolerance)
+            except PathError:
+                continue
+        raise
+
+
+def _plan(model: ArmModel, p: F64, pitch: float | None, start: F64, tolerance: float) -> JointPath:
+    """``plan_path`` at ``pitch`` [rad] (None: each point's, as ``ik`` chooses it)."""
+    q, failure = _solve_all(model, p, pitch, start)
     _check_between(model, p[: q.shape[0]], q, tolerance, free=pitch is None)
     if failure is not None:
         raise failure
     return JointPath(p, q)
+
+
+def _whole_path_pitches(model: ArmModel, p: F64, start: F64) -> list[float]:
+    """Pitches [rad] in ``PITCH_STEP``s at which every point of ``p`` [m] is reachable,
+    the nearest the first point's chosen pitch first."""
+    first = float(pitch_of(fk(model, ik(model, p[0], None, start).q)))
+    grid = np.arange(-math.pi, math.pi, PITCH_STEP)
+    grid = grid[np.argsort(np.abs(np.remainder(grid - first + math.pi, 2 * math.pi) - math.pi))]
+    every = ik_batch(model, np.tile(p, (len(grid), 1)), np.repeat(grid, len(p)), start)
+    return [float(a) for a in grid[every.ok.reshape(len(grid), len(p)).all(axis=1)]]
 
 
 def _solve_all(
@@ -102,7 +135,7 @@ def _check_between(model: ArmModel, p: F64, q: F64, tolerance: float, free: bool
         if free and model.default_pitch is None and model.dof > 2:  # the solver chose it
             a, b = np.degrees(pitch_of(fk(model, q[i : i + 2])))
             why += f", at the pitches it chose there, {a:.1f} and {b:.1f} deg"
-            fix = "give a pitch, a smaller spacing or another path"
+            fix = "no pitch for the whole path fits either: try another pitch, a smaller spacing or another path"
         raise PathError(
             f"between point {i} at {mm(p[i])} and point {i + 1} the arm would leave the path "
             f"by {off[i] * 1000:.2f} mm (the {model.joint_names[j]} turns "
