@@ -8,9 +8,10 @@ between them and refuses the path if the arm would leave the straight piece by
 more than ``tolerance`` (a branch flip, a singularity, too coarse a spacing).
 
 Without a pitch (and no default one) each point's pitch is the one nearest the
-previous point's at which the arm fits; where that would flip the arm, the path
-is planned at one pitch throughout instead: the nearest the first point's, in
-5 deg steps, at which every point is reachable and the arm does not flip.
+previous point's at which the arm fits; where that would flip an arm solved in
+closed form, the path is planned at one pitch throughout instead: the nearest
+the first point's, in 5 deg steps, at which every point is reachable and the
+arm does not flip.
 """
 
 from __future__ import annotations
@@ -23,7 +24,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError, Reason, UnreachableError
 from .._inputs import mm
-from ..kinematics import fk, ik, ik_batch, pitch_of
+from ..kinematics import fk, ik, ik_batch, pitch_of, why_no_closed_form
 from ..model import ArmModel
 
 F64 = NDArray[np.float64]
@@ -75,7 +76,8 @@ def plan_path(
     try:
         return _plan(model, p, pitch, start, tolerance)
     except PathError as error:
-        if error.reason != "discontinuous" or pitch is not None or model.default_pitch is not None:
+        chosen = pitch is None and model.default_pitch is None and not why_no_closed_form(model)
+        if error.reason != "discontinuous" or not chosen:  # closed form: cheap to search
             raise
         for fixed in _whole_path_pitches(model, p, start)[:PITCHES_TRIED]:
             try:
