@@ -12,6 +12,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
+from ..kinematics import fk, pitch_of
+from ..model import ArmModel
 from ..motion import (
     EarlyStreaming,
     NaiveStepping,
@@ -131,13 +133,22 @@ def _draw(args: argparse.Namespace) -> int:
         check_output(args.record, "--record")
     with open_arm(args) as arm:
         t0 = arm.clock.now()
-        arm.follow(points, args.pitch, streamer=streamer)
+        path = arm.follow(points, args.pitch, streamer=streamer)
         took = arm.clock.now() - t0
-        print(f"drew {args.shape}: {len(points)} points in {took:.2f} s ({args.mode} mode)")
+        print(f"drew {args.shape}: {len(points)} points in {took:.2f} s ({args.mode} mode)"
+              f"{'' if args.pitch is not None else _pitches(arm.model, path.q)}")  # fmt: skip
         if args.record and arm.world is not None:
             rows = arm.world.recording().between(t0, arm.clock.now()).write_csv(args.record)
             print(f"recorded {rows} samples (1 ms apart) to {args.record}")
     return 0
+
+
+def _pitches(model: ArmModel, q: F64) -> str:
+    """The pitch the solver chose along a path q (N, dof) [rad], as ', pitch P deg' or a
+    range (planar2: the pitch follows from the position)."""
+    pitches = np.degrees(pitch_of(fk(model, q)))
+    lo, hi = float(pitches.min()), float(pitches.max())
+    return f", pitch {lo:.1f} deg" if hi - lo < 0.05 else f", pitch {lo:.1f}..{hi:.1f} deg"
 
 
 def _shape_length(args: argparse.Namespace) -> float:
