@@ -92,7 +92,11 @@ def _center_option(p: argparse.ArgumentParser) -> None:
 
 def _draw_options(p: argparse.ArgumentParser) -> None:
     p.add_argument(
-        "--pitch", type=angle, metavar="DEG", help="gripper pitch [deg] (0 level, -90 down)"
+        "--pitch",
+        type=angle,
+        metavar="DEG",
+        help="gripper pitch [deg] (0 level, -90 down); default: the arm's own, else chosen"
+        " per point, or one for the whole path where that would flip the arm",
     )
     p.add_argument("--mode", choices=MODES, default="timed", help="how waypoints are sent")
     p.add_argument(
