@@ -172,10 +172,9 @@ class Arm:
         self, points_mm: ArrayLike, pitch: float | None = None, *, streamer: Streamer | None = None
     ) -> JointPath:
         """Draw through ``points_mm`` [mm], shape (N, 3), at ``pitch`` [deg] (None: the
-        arm's own, else chosen per point, or one for the whole path where that would flip
-        the arm; see ``motion.plan_path``): the whole path is planned and checked first
-        (PathError names the first bad point), then the arm moves to its start and
-        ``streamer`` (default timed) runs it."""
+        arm's own, else one for the whole path where one fits; see ``motion.plan_path``):
+        the whole path is planned and checked first (PathError names the first bad
+        point), then the arm moves to its start and ``streamer`` (default timed) runs it."""
         pts = numbers(points_mm, "points_mm [mm]") / 1000.0
         pitch_rad = None if pitch is None else math.radians(pitch)
         path = plan_path(self._kin, pts, pitch_rad, self.driver.read())

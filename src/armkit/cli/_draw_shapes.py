@@ -95,8 +95,8 @@ def _draw_options(p: argparse.ArgumentParser) -> None:
         "--pitch",
         type=angle,
         metavar="DEG",
-        help="gripper pitch [deg] (0 level, -90 down); default: the arm's own, else chosen"
-        " per point, or one for the whole path where that would flip the arm",
+        help="gripper pitch [deg] (0 level, -90 down); default: the arm's own, else one"
+        " pitch for the whole path, the nearest the first point's that fits",
     )
     p.add_argument("--mode", choices=MODES, default="timed", help="how waypoints are sent")
     p.add_argument(

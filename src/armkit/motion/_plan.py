@@ -7,11 +7,13 @@ two samples the arm moves in joint space; the check evaluates FK halfway
 between them and refuses the path if the arm would leave the straight piece by
 more than ``tolerance`` (a branch flip, a singularity, too coarse a spacing).
 
-Without a pitch (and no default one) each point's pitch is the one nearest the
-previous point's at which the arm fits; where that would flip an arm solved in
-closed form, the path is planned at one pitch throughout instead: the nearest
-the first point's, in 5 deg steps, at which every point is reachable and the
-arm does not flip.
+Without a pitch (and no default one) an arm solved in closed form keeps one
+pitch throughout: the first point's own (the one nearest the arm's), else the
+nearest to it in 5 deg steps at which every point is reachable and the arm does
+not flip. Only where no such pitch is found does each point get its own, the
+nearest the previous point's at which the arm fits. One pitch is what a pen
+wants, and it keeps the wrist from racing: on the OpenManipulator-X a 40 mm
+circle took 5.7 s at one pitch and 34 s with the pitch chosen point by point.
 """
 
 from __future__ import annotations
@@ -73,18 +75,14 @@ def plan_path(
     if p.ndim != 2 or p.shape[1] != 3 or p.shape[0] < 1 or not np.all(np.isfinite(p)):
         raise InputError(f"points must be finite, shape (N, 3), got {p.shape}")
     start = np.asarray(q_start, dtype=np.float64)
-    try:
-        return _plan(model, p, pitch, start, tolerance)
-    except PathError as error:
-        chosen = pitch is None and model.default_pitch is None and not why_no_closed_form(model)
-        if error.reason != "discontinuous" or not chosen:  # closed form: cheap to search
-            raise
-        for fixed in _whole_path_pitches(model, p, start)[:PITCHES_TRIED]:
-            try:
-                return _plan(model, p, fixed, start, tolerance)
-            except PathError:
-                continue
-        raise
+    chosen = pitch is None and model.default_pitch is None and model.dof > 2
+    chosen = chosen and not why_no_closed_form(model)  # a closed form: quick to search
+    for one in _whole_path_pitches(model, p, start)[:PITCHES_TRIED] if chosen else ():
+        try:
+            return _plan(model, p, one, start, tolerance)
+        except PathError:
+            continue
+    return _plan(model, p, pitch, start, tolerance)
 
 
 def _plan(model: ArmModel, p: F64, pitch: float | None, start: F64, tolerance: float) -> JointPath:
@@ -97,11 +95,15 @@ def _plan(model: ArmModel, p: F64, pitch: float | None, start: F64, tolerance: f
 
 
 def _whole_path_pitches(model: ArmModel, p: F64, start: F64) -> list[float]:
-    """Pitches [rad] in ``PITCH_STEP``s at which every point of ``p`` [m] is reachable,
-    the nearest the first point's chosen pitch first."""
-    first = float(pitch_of(fk(model, ik(model, p[0], None, start).q)))
-    grid = np.arange(-math.pi, math.pi, PITCH_STEP)
-    grid = grid[np.argsort(np.abs(np.remainder(grid - first + math.pi, 2 * math.pi) - math.pi))]
+    """Pitches [rad] at which every point of ``p`` [m] is reachable: the first point's
+    chosen pitch, then the others in ``PITCH_STEP``s, the nearest to it first."""
+    try:
+        first = float(pitch_of(fk(model, ik(model, p[0], None, start).q)))
+    except UnreachableError:
+        return []  # the point by point plan says why
+    grid = np.concatenate([[first], np.arange(-math.pi, math.pi, PITCH_STEP)])
+    gap = np.abs(np.remainder(grid - first + math.pi, 2 * math.pi) - math.pi)
+    grid = grid[np.argsort(gap, kind="stable")]
     every = ik_batch(model, np.tile(p, (len(grid), 1)), np.repeat(grid, len(p)), start)
     return [float(a) for a in grid[every.ok.reshape(len(grid), len(p)).all(axis=1)]]
 

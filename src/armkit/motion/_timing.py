@@ -1,6 +1,13 @@
 """Time along a joint path: a Cartesian trapezoidal speed profile between stops
 (the ends and every corner), slowed uniformly where a joint would exceed its
-velocity or acceleration limit."""
+acceleration limit or ``VELOCITY_SHARE`` of its velocity limit.
+
+The share leaves room for the bus: a streamed segment sent a little late (a
+status read, a USB frame) must still reach its point within its period, and
+the drivers refuse a segment faster than the limit. At the full limit the
+OpenManipulator-X's 100 Hz stream was refused mid-circle (a 10 ms segment
+starting 0.25 ms late needed 10.25 ms).
+"""
 
 from __future__ import annotations
 
@@ -16,6 +23,7 @@ from ._paths import corners
 from ._plan import JointPath
 
 F64 = NDArray[np.float64]
+VELOCITY_SHARE = 0.9  # of each joint's velocity limit, at the most, along a timed path
 
 
 @dataclass(frozen=True)
@@ -43,7 +51,7 @@ class TimedPath:
 def time_path(model: ArmModel, path: JointPath, speed: float, accel: float) -> TimedPath:
     """Times for ``path``: tool speed up to ``speed`` [m/s] with acceleration
     ``accel`` [m/s^2], stopping at every corner, then stretched until no joint
-    exceeds its model velocity or acceleration limit."""
+    exceeds its model acceleration limit or ``VELOCITY_SHARE`` of its velocity limit."""
     if not (speed > 0 and accel > 0):
         raise InputError(f"speed and acceleration must be > 0, got {speed}, {accel}")
     s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(path.points, axis=0), axis=1))])
@@ -75,7 +83,7 @@ def _stretch(model: ArmModel, t: F64, q: F64) -> float:
     dt = np.diff(t)
     ok = dt > 1e-12
     vel = np.diff(q, axis=0)[ok] / dt[ok, None]
-    vmax = np.array([j.max_velocity for j in model.joints])
+    vmax = VELOCITY_SHARE * np.array([j.max_velocity for j in model.joints])
     amax = np.array([j.max_acceleration for j in model.joints])
     by_vel = float(np.max(np.abs(vel) / vmax, initial=0.0))
     mid = (t[:-1] + t[1:])[ok] / 2.0
