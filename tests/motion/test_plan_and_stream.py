@@ -136,3 +136,25 @@ def test_streamed_drawing_stays_near_the_path(mode: str, arm_name: str) -> None:
     np.testing.assert_allclose(true[-1], pts[-1], atol=0.5e-3)  # servos settle to 0.05 deg
     assert world.now() - t0 > 0.5  # it really took (simulated) time to draw 126 mm
     arm.close()
+
+
+def test_a_stream_at_the_joints_speed_limit_is_not_refused_mid_path(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Where a joint's limit binds, the timed path is slowed to 90 % of it: a 100 Hz
+    segment sent a bus exchange late still fits its period. At the full limit the
+    OpenManipulator-X's driver refused this circle mid-path (10.25 ms needed for 10)."""
+    import armkit.motion._plan as plan
+
+    monkeypatch.setattr(plan, "PITCHES_TRIED", 0)  # the pitch point by point: the wrist races
+    model = load_model("openmanipulator_x")
+    arm = open_driver(model, "sim")
+    path = plan_path(model, circle([0.17, 0.0, 0.05], 0.04, 0.002), None, arm.read())
+    timed = time_path(model, path, speed=0.05, accel=0.5)
+    vel = np.diff(timed.q, axis=0) / np.diff(timed.t)[:, None]
+    vmax = np.array([j.max_velocity for j in model.joints])
+    assert np.max(np.abs(vel) / vmax) == pytest.approx(0.9)  # the limit binds, at 90 %
+    arm.move(path.q[0])
+    TimedStreaming(rate=100.0, speed=0.05, accel=0.5).run(arm, model, path, arm.clock)
+    np.testing.assert_allclose(arm.read(), path.q[-1], atol=np.radians(0.1))
+    arm.close()
