@@ -204,8 +204,8 @@ def move_time(
     needed = constant_speed_time(model, q0, q1, frac)
     if duration < needed - 1e-9:
         raise InputError(
-            f"duration {duration:.3f} s is too short: the joints' speed limits need "
-            f"{needed:.3f} s or more for this move"
+            f"duration {duration:.4g} s is too short: the joints' speed limits need "
+            f"{needed:.4g} s or more for this move"
         )
     return duration
 
