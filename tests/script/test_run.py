@@ -57,6 +57,16 @@ def test_plan_time_matches_the_simulated_time(arm: tuple[Arm, CountingDriver]) -
     assert took == pytest.approx(result.plan.total, rel=0.1)
 
 
+def test_plan_time_counts_a_line_s_move_onto_its_start(arm: tuple[Arm, CountingDriver]) -> None:
+    """A line at another pitch than the arm's first turns the arm onto its start (as
+    ``Arm.follow`` does); the plan counts that move (it was 0.75 s short of 7.36 s)."""
+    a, _ = arm
+    t0 = a.clock.now()
+    text = "move xyz 180 0 80\nline xyz 180 80 80\nline xyz 120 -60 60\nhome\n"
+    result = _run(a, text)
+    assert a.clock.now() - t0 == pytest.approx(result.plan.total, rel=0.03)
+
+
 class _Failing(CountingDriver):
     def __init__(self, inner: Any, fail_at: int) -> None:
         super().__init__(inner)

@@ -199,7 +199,8 @@ class ModelArm:
         for q in path.q:
             self._check_table(q, "along the line ")
         took = time_path(self.model, path, self.state.tool_speed, TOOL_ACCEL).duration
-        self._step(path.q[-1].copy(), took)
+        onto = self._joint_time(q0, path.q[0], 1.0) or 0.0  # ``follow``'s move onto its start
+        self._step(path.q[-1].copy(), onto + took)
 
     def _check_pose(self, q: F64, only: tuple[int, float] | None = None) -> None:
         """Joint limits and the table for ``q`` [rad]; with ``only`` = (joint, angle),
@@ -236,13 +237,14 @@ class ModelArm:
         k = frame if self.model.convention == "standard" else frame - 1
         return f"{self.model.joint_names[k]} joint"
 
-    def _joint_time(self, q0: F64 | None, q1: F64) -> float | None:
+    def _joint_time(self, q0: F64 | None, q1: F64, speed: float | None = None) -> float | None:
+        """How long the joint move q0 -> q1 [rad] takes at ``speed`` (None: the script's)."""
         if q0 is None:
             return None
         if self.model.gripper.kind == "timed":  # one joint at a time (the OWI's driver)
             v = np.array([j.max_velocity for j in self.model.joints])
             return float(np.sum(np.abs(q1 - q0) / v))
-        return trapezoid(self.model, q0, q1, self.state.speed).duration
+        return trapezoid(self.model, q0, q1, self.state.speed if speed is None else speed).duration
 
     def _step(self, q: F64 | None, duration: float | None) -> None:
         self.state = replace(self.state, q=q)
