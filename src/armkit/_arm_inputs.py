@@ -3,6 +3,7 @@ and the timing options of a move (InputError naming the argument otherwise)."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -53,3 +54,8 @@ def number(value: object, what: str, *, finite: bool = True) -> float:
     if a.shape != ():
         raise InputError(f"{what} must be one number, got {value!r}")
     return float(a)
+
+
+def pitch_radians(pitch: object) -> float | None:
+    """A pitch given in degrees, checked, in radians (None stays None: no pitch)."""
+    return None if pitch is None else math.radians(number(pitch, "pitch [deg]"))

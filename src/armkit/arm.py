@@ -16,7 +16,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._arm_inputs import Timing, number, numbers, timing_of
+from ._arm_inputs import Timing, number, numbers, pitch_radians, timing_of
 from ._closing import close_after
 from ._errors import DeviceError, InputError, UnreachableError
 from .connect import World, open_driver, world_of
@@ -108,9 +108,8 @@ class Arm:
         Raises:
             UnreachableError: the point (and pitch) is out of reach or the joint limits.
         """
-        pitch_rad = None if pitch is None else math.radians(number(pitch, "pitch [deg]"))
         target = numbers([x, y, z], "x, y, z [mm]") / 1000.0
-        q = ik(self._kin, target, pitch_rad, self.driver.read()).q
+        q = ik(self._kin, target, pitch_radians(pitch), self.driver.read()).q
         self._move(q, timing_of(speed, duration, wait, timeout))
 
     def move_joints(
@@ -176,8 +175,7 @@ class Arm:
         the whole path is planned and checked first (PathError names the first bad
         point), then the arm moves to its start and ``streamer`` (default timed) runs it."""
         pts = numbers(points_mm, "points_mm [mm]") / 1000.0
-        pitch_rad = None if pitch is None else math.radians(pitch)
-        path = plan_path(self._kin, pts, pitch_rad, self.driver.read())
+        path = plan_path(self._kin, pts, pitch_radians(pitch), self.driver.read())
         self._check_clear(path.q)
         follow(self.driver, self._kin, path, streamer or TimedStreaming(), self.clock)
         return path
@@ -185,7 +183,7 @@ class Arm:
     def approach(self, x: float, y: float, z: float, pitch: float | None = None) -> None:
         """Come down onto (x, y, z) [mm] from above (001): a joint move to 30 mm
         above it, then three waypoints straight down. The whole way is checked first."""
-        self._step_through(approach(np.array([x, y, z]) / 1000.0), pitch)
+        self._step_through(approach(numbers([x, y, z], "x, y, z [mm]") / 1000.0), pitch)
 
     def retreat(self, pitch: float | None = None) -> None:
         """Leave the current point the way ``approach`` came: three waypoints up to
@@ -254,8 +252,9 @@ class Arm:
 
     def _step_through(self, points_m: F64, pitch: float | None) -> None:
         """Plan ``points_m`` [m] (1 mm tolerance between waypoints), then step through them."""
-        pitch_rad = None if pitch is None else math.radians(pitch)
-        path = plan_path(self._kin, points_m, pitch_rad, self.driver.read(), tolerance=1e-3)
+        path = plan_path(
+            self._kin, points_m, pitch_radians(pitch), self.driver.read(), tolerance=1e-3
+        )
         self._check_clear(path.q)
         follow(self.driver, self._kin, path, NaiveStepping(), self.clock)
 

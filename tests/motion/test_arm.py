@@ -9,7 +9,7 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from armkit._errors import DeviceError, JointLimitError, UnreachableError
+from armkit._errors import DeviceError, InputError, JointLimitError, UnreachableError
 from armkit.arm import Arm
 from armkit.kinematics import fk, pitch_of
 from armkit.model import load_model
@@ -91,6 +91,19 @@ def test_refused_path_moves_nothing() -> None:
         assert world.now() == 0.0
         assert len(world.recording().t) == 1
         assert arm.angles() == start
+
+
+@pytest.mark.parametrize("pitch", ["down", [1, 2], float("nan")])
+def test_a_bad_pitch_of_a_path_is_an_input_error_and_moves_nothing(pitch: object) -> None:
+    with Arm(OMX, "sim") as arm:
+        world = _world(arm)
+        pts = circle([0.17, 0.0, 0.05], 0.02, 0.002) * 1000
+        for call in (lambda: arm.follow(pts, pitch), lambda: arm.approach(170, 0, 50, pitch)):  # type: ignore[arg-type]
+            with pytest.raises(InputError, match=r"pitch \[deg\]"):
+                call()
+        with pytest.raises(InputError, match=r"x, y, z \[mm\]"):
+            arm.approach(170, 0, "low")  # type: ignore[arg-type]
+        assert world.now() == 0.0
 
 
 def test_follow_draws_the_path() -> None:
