@@ -132,7 +132,7 @@ class Arm:
     def turn_by(self, joint: str, deg: float, *, speed: float | None = None) -> None:
         """Turn one joint by ``deg`` [deg] from where it is now."""
         self.model.joint_index(joint)
-        self.move_joints({joint: self.angles()[joint] + deg}, speed=speed)
+        self.move_joints({joint: self.angles()[joint] + number(deg, f"{joint} [deg]")}, speed=speed)
 
     def grip(self, width_mm: float) -> None:
         """Open the gripper to ``width_mm`` [mm] (the grip point moves with it on
@@ -174,6 +174,11 @@ class Arm:
         arm's own, else one for the whole path where one fits; see ``motion.plan_path``):
         the whole path is planned and checked first (PathError names the first bad
         point), then the arm moves to its start and ``streamer`` (default timed) runs it."""
+        if streamer is not None and not callable(getattr(streamer, "run", None)):
+            raise InputError(
+                "streamer must be NaiveStepping(), EarlyStreaming() or TimedStreaming() "
+                f"(armkit.motion), got {streamer!r}"
+            )
         pts = numbers(points_mm, "points_mm [mm]") / 1000.0
         path = plan_path(self._kin, pts, pitch_radians(pitch), self.driver.read())
         self._check_clear(path.q)
@@ -217,7 +222,7 @@ class Arm:
         if isinstance(angles, Mapping):
             q = np.degrees(self.driver.read())
             for name, deg in angles.items():
-                q[self.model.joint_index(name)] = deg
+                q[self.model.joint_index(name)] = number(deg, f"{name} [deg]", finite=False)
         else:
             q = numbers(angles, "joint angles [deg]", finite=False)
             if q.shape != (self.model.dof,):

@@ -106,6 +106,18 @@ def test_a_bad_pitch_of_a_path_is_an_input_error_and_moves_nothing(pitch: object
         assert world.now() == 0.0
 
 
+def test_bad_joint_angles_and_streamers_are_input_errors() -> None:
+    with Arm(OMX, "sim") as arm:
+        world = _world(arm)
+        with pytest.raises(InputError, match=r"waist \[deg\]"):
+            arm.move_joints({"waist": "x"})  # type: ignore[dict-item]
+        with pytest.raises(InputError, match=r"elbow \[deg\]"):
+            arm.turn_by("elbow", [1, 2])  # type: ignore[arg-type]
+        with pytest.raises(InputError, match="streamer must be NaiveStepping"):
+            arm.follow([[170, 0, 50], [180, 0, 50]], streamer="fast")  # type: ignore[arg-type]
+        assert world.now() == 0.0
+
+
 def test_follow_draws_the_path() -> None:
     with Arm(OMX, "sim") as arm:
         pts = circle([0.17, 0.0, 0.05], 0.02, 0.002) * 1000
