@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from scene_fakes import FakeDriver, FakeWorld
 
-from armkit import Arm, ik, load_model, tasks
+from armkit import Arm, InputError, ik, load_model, tasks
 from armkit.scene import load_scene
 from armkit.scene._load import build_scene
 from armkit.tasks import Calibration, CalibrationError, TaskError, load_calibration
@@ -95,6 +95,12 @@ def test_rotations_turn_the_cube_each_way() -> None:
         )
     side = next(s for s in fwd.steps if s.label == "pick green from the side: down 3/3")
     assert side.point[2] * 1000 == pytest.approx(8.0 + 15.0 + 2.0)  # clear of the holders
+
+
+def test_stack_of_one_name_says_it_needs_two_cubes() -> None:
+    arm, _ = _arm()
+    with pytest.raises(InputError, match=r"two or more different cubes, got \['red'\]"):
+        tasks.stack(arm, load_scene("board_001"), "red", dry_run=True)  # not its letters
 
 
 def test_stack_rotates_all_then_stacks_one_cube_higher_each() -> None:

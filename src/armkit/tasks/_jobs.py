@@ -226,7 +226,7 @@ def stack(
     ``"backward"`` or None), then stack them on the first one, each one cube
     higher than the last."""
     scene = live_scene(arm, scene, dry_run, "stack")
-    names = list(cubes)
+    names = [cubes] if isinstance(cubes, str) else list(cubes)  # one name: not its letters
     if len(names) < 2 or len(set(names)) != len(names):
         raise InputError(f"stack needs two or more different cubes, got {names}")
 
