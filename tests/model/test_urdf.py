@@ -27,6 +27,18 @@ def test_shipped_arms_round_trip_with_identical_fk(name: str, tmp_path: Path) ->
     assert (why_no_closed_form(back) == "") == (why_no_closed_form(m) == "")
 
 
+@pytest.mark.parametrize("name", shipped_models())
+def test_a_urdf_arm_s_home_is_inside_its_limits(name: str, tmp_path: Path) -> None:
+    """URDF has no home: 0 where it lies strictly inside a joint's limits, else the middle
+    (the Lynx6's 0 deg stops would start it folded against them)."""
+    path = tmp_path / f"{name}.urdf"
+    path.write_text(urdf_of(load_model(name)))
+    back = load_model(path)
+    assert np.all((back.lower < back.home) & (back.home < back.upper))
+    middle = (back.lower + back.upper) / 2
+    assert np.all((back.home == 0.0) | (back.home == middle))
+
+
 def test_the_cli_writes_a_urdf_that_the_cli_reads(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:

@@ -134,7 +134,7 @@ def _model(path: Path, name: str, chain: list[Any], tool: F64) -> ArmModel:
                     f"{path}: <joint name='{j.name}'>: <limit> lower must be < upper, got {lo:.6g}, {hi:.6g}"
                 )
         speed = j.limit.velocity if j.limit is not None and j.limit.velocity else math.radians(90)
-        home = 0.0 if lo <= 0.0 <= hi else 0.5 * (lo + hi)
+        home = 0.0 if lo < 0.0 < hi else 0.5 * (lo + hi)  # zero at a limit: the middle
         joints.append(Joint(j.name, lo, hi, home, max_velocity=float(speed)))
         frames.append(
             JointFrame(
