@@ -45,6 +45,8 @@ def timing_of(
         None if v is None else number(v, name, finite=False)
         for v, name in ((speed, "speed"), (duration, "duration [s]"), (timeout, "timeout [s]"))
     ]
+    if not isinstance(wait, bool | np.bool_):  # "no" would read as true
+        raise InputError(f"wait must be True or False, got {wait!r}")
     return Timing(values[0], values[1], bool(wait), values[2])
 
 

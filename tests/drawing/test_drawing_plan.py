@@ -101,6 +101,8 @@ def test_files_are_told_apart_by_suffix(tmp_path: Path) -> None:
     assert len(plan_drawing(EXAMPLES / "seed001.gcode", A5, Fit.as_is()).strokes) == 4
     with pytest.raises(DrawingError, match=r"\.svg or a G-code file"):
         read_drawing(tmp_path / "x.dxf")
+    with pytest.raises(DrawingError, match=r"must be a file path \(str or Path\), got 5"):
+        read_drawing(5)  # type: ignore[arg-type]
     (tmp_path / "empty.gcode").write_text("G0 X1\n")
     with pytest.raises(DrawingError, match="nothing to draw"):
         plan_drawing(tmp_path / "empty.gcode", A5)

@@ -115,6 +115,8 @@ def test_bad_joint_angles_and_streamers_are_input_errors() -> None:
             arm.turn_by("elbow", [1, 2])  # type: ignore[arg-type]
         with pytest.raises(InputError, match="streamer must be NaiveStepping"):
             arm.follow([[170, 0, 50], [180, 0, 50]], streamer="fast")  # type: ignore[arg-type]
+        with pytest.raises(InputError, match="wait must be True or False, got 'no'"):
+            arm.move_to(170, 0, 50, wait="no")  # type: ignore[arg-type]
         assert world.now() == 0.0
 
 

@@ -162,6 +162,10 @@ def test_load_score_by_suffix(tmp_path: Path) -> None:
     assert load_score(tmp_path / "a.txt", transpose=-12).notes[0].pitch == 48
     with pytest.raises(ScoreError, match=r"a\.doc:0:0: unknown score format; .*\.mid"):
         load_score(tmp_path / "a.doc")
+    with pytest.raises(ScoreError, match=r"a\.txt: transpose is whole semitones, got 'x'"):
+        load_score(tmp_path / "a.txt", transpose="x")  # type: ignore[arg-type]
+    with pytest.raises(ScoreError, match="a score is a file path"):
+        load_score(5)  # type: ignore[arg-type]
     with pytest.raises(ScoreError, match=r"missing\.txt: cannot read the file: [^()]*$"):
         load_score(tmp_path / "missing.txt")  # the whole file: no line, column or token
     with pytest.raises(ScoreError, match=r"missing\.mid: cannot read the file: [^()]*$"):

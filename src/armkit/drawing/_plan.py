@@ -100,6 +100,8 @@ class DrawingPlan:
 
 def read_drawing(path: str | Path, *, z_down: float = 0.0) -> Figure:
     """Read an SVG or G-code file (by its suffix) into a ``Figure``."""
+    if not isinstance(path, str | Path):
+        raise DrawingError(f"the drawing must be a file path (str or Path), got {path!r}")
     suffix = Path(path).suffix.lower()
     if suffix == ".svg":
         return read_svg(path)

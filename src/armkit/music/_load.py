@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from numbers import Integral
 from pathlib import Path
 
 from ._midi import read_midi
@@ -21,6 +22,10 @@ def load_score(path: str | Path, transpose: int = 0) -> Score:
     Raises:
         ScoreError: unknown suffix, unreadable file, or a mistake in it (file:line:column, token).
     """
+    if not isinstance(path, str | Path):
+        raise ScoreError.whole(str(path), "a score is a file path (str or Path)")
+    if not isinstance(transpose, Integral) or isinstance(transpose, bool):
+        raise ScoreError.whole(str(path), f"transpose is whole semitones, got {transpose!r}")
     source, suffix = str(path), Path(path).suffix.lower()
     if suffix in MIDI_SUFFIXES:
         score = read_midi(path)
@@ -34,7 +39,7 @@ def load_score(path: str | Path, transpose: int = 0) -> Score:
         raise ScoreError(
             source, 0, 0, suffix, f"unknown score format; name the file with one of {known}"
         )
-    return score.transposed(transpose) if transpose else score
+    return score.transposed(int(transpose)) if transpose else score
 
 
 def read_text(path: str | Path) -> str:
