@@ -75,8 +75,7 @@ def plan_path(
     if p.ndim != 2 or p.shape[1] != 3 or p.shape[0] < 1 or not np.all(np.isfinite(p)):
         raise InputError(f"points must be finite, shape (N, 3), got {p.shape}")
     start = np.asarray(q_start, dtype=np.float64)
-    chosen = pitch is None and model.default_pitch is None and model.dof > 2
-    chosen = chosen and not why_no_closed_form(model)  # a closed form: quick to search
+    chosen = pitch is None and _chooses_pitch(model)
     for one in _whole_path_pitches(model, p, start)[:PITCHES_TRIED] if chosen else ():
         try:
             return _plan(model, p, one, start, tolerance)
@@ -92,6 +91,12 @@ def _plan(model: ArmModel, p: F64, pitch: float | None, start: F64, tolerance: f
     if failure is not None:
         raise failure
     return JointPath(p, q)
+
+
+def _chooses_pitch(model: ArmModel) -> bool:
+    """Whether a path without a pitch gets one for the whole path (see the module
+    docstring): no default pitch, a pitch to choose, and a closed form, quick to search."""
+    return model.default_pitch is None and model.dof > 2 and not why_no_closed_form(model)
 
 
 def _whole_path_pitches(model: ArmModel, p: F64, start: F64) -> list[float]:
@@ -136,7 +141,7 @@ def _check_between(model: ArmModel, p: F64, q: F64, tolerance: float, free: bool
         turn = np.abs(q[i + 1] - q[i])
         j = int(np.argmax(turn))
         why, fix = "an elbow flip or a singularity", "use a smaller spacing or another path"
-        if free and model.default_pitch is None and model.dof > 2:  # the solver chose it
+        if free and _chooses_pitch(model):  # point by point, after no whole-path pitch fit
             a, b = np.degrees(pitch_of(fk(model, q[i : i + 2])))
             why += f", at the pitches it chose there, {a:.1f} and {b:.1f} deg"
             fix = "no pitch for the whole path fits either: try another pitch, a smaller spacing or another path"
