@@ -142,5 +142,6 @@ def mm(p: Any) -> str:
 
 
 def brief(v: float) -> str:
-    """A number for a message: one decimal, or 3 significant digits when huge."""
-    return f"{v:.1f}" if abs(v) < 1e6 else f"{v:.3g}"
+    """A number for a message: one decimal, or 3 significant digits when huge (no -0.0)."""
+    text = f"{v:.1f}" if abs(v) < 1e6 else f"{v:.3g}"
+    return "0.0" if text == "-0.0" else text

@@ -153,11 +153,39 @@ def test_limit_message_names_the_nearest_miss() -> None:
         ik(load_model("owi535"), (0.2, 0.0, 0.05))
 
 
+@pytest.mark.parametrize(
+    ("position", "reason", "match"),
+    [
+        ((0.25, 0.0, 0.25), "too_far", "too far away"),  # was "base would be 180.0 deg"
+        ((0.15, -0.05, 0.04), "joint_limit", r"wrist would be -86\.6 deg"),  # was the base
+        ((0.03, 0.0, 0.05), "joint_limit", r"wrist would be -112\.5 deg"),  # was the base
+    ],
+)
+def test_a_base_out_of_its_limits_the_other_way_round_is_not_the_reason(
+    position: tuple[float, float, float], reason: str, match: str
+) -> None:
+    """The OWI's base turns +-135 deg, so reaching back over the shoulder is closed to it
+    for a target ahead; the error says what goes wrong facing the target, in ik and
+    ik_batch alike."""
+    m = load_model("owi535")
+    with pytest.raises(UnreachableError, match=match) as exc:
+        ik(m, position)
+    assert exc.value.reason == reason
+    assert ik_batch(m, [position]).reason.tolist() == [reason]
+
+
+def test_the_base_is_named_when_no_way_round_fits() -> None:
+    """The Lynx6's base turns 15..165 deg: a target straight to its right fits neither way."""
+    with pytest.raises(UnreachableError, match=r"base would be 0\.0 deg, allowed 15\.0\.\.165"):
+        ik(load_model("lynx6"), (0.0, -0.3, 0.05))
+
+
 @pytest.mark.parametrize("name", ["owi535", "openmanipulator_x", "lynx6", "al5d", "planar2"])
 @pytest.mark.parametrize("pitch", [None, 0.3, 2.0])
 def test_batch_reasons_are_the_errors_of_ik(name: str, pitch: float | None) -> None:
     """ik_batch says why a target fails as ik's error does: the same reason, by the same
-    ranking (a joint limit in any branch first, then too far, too close, the pitch)."""
+    ranking (a joint limit in a branch whose base fits first, then too far, too close, the
+    pitch, and a base outside its limits last)."""
     m = load_model(name)
     rng = np.random.default_rng(7)
     P = rng.uniform(-0.6, 0.6, (400, 3))

@@ -24,9 +24,10 @@ TWO_PI = 2.0 * np.pi
 SLACK = 1e-9  # [rad] a joint this far beyond a limit counts as at it
 STRAIGHT = 1.0 - 1e-12  # cos of the elbow beyond it: straight or folded (1e-13 m)
 # Why a branch fails, ranked as ``_closed_scalar.refusal`` ranks ``Misses``: the highest
-# code among a target's branches names it; 0 (nothing recorded) reads as too far.
-PITCH, TOO_CLOSE, TOO_FAR, JOINT_LIMIT = 1, 2, 3, 4
-WHY = np.array(["too_far", "pitch", "too_close", "too_far", "joint_limit"])
+# code among a target's branches names it; 0 (nothing recorded) reads as too far. A base
+# outside its limits ranks last: that way round is closed, the other way says why.
+BASE, PITCH, TOO_CLOSE, TOO_FAR, JOINT_LIMIT = 1, 2, 3, 4, 5
+WHY = np.array(["too_far", "joint_limit", "pitch", "too_close", "too_far", "joint_limit"])
 
 
 @dataclass(frozen=True)
@@ -95,7 +96,7 @@ def reasons(fam: PlanarFamily, c: Candidates) -> NDArray[np.str_]:
     the highest ``WHY`` code among its branches, as ``_closed_scalar.refusal`` says it."""
     cos_g, base, geometry = c.checks.cos_g, c.checks.base, c.checks.geometry
     why = np.select([cos_g > 1.0 + 1e-12, cos_g < -1.0 - 1e-12], [TOO_FAR, TOO_CLOSE], 0)
-    why[~(base | np.isnan(cos_g))] = JOINT_LIMIT
+    why[~(base | np.isnan(cos_g))] = BASE
     ok = (np.abs(cos_g) <= 1.0 + 1e-12) & base
     for geometry_ok, fits in zip(geometry, c.fits.reshape(len(geometry), -1), strict=True):
         why[ok & ~geometry_ok] = np.maximum(why[ok & ~geometry_ok], PITCH)

@@ -46,14 +46,16 @@ def refusal(
     chain: Chain, fam: PlanarFamily, p: Q, pitch: float | None, seed: Q
 ) -> UnreachableError:
     """Why no solution fits ``p`` [m] at ``pitch`` [rad] (None: at the seed's pitch):
-    the joint and limit when only the limits are in the way, else the reason."""
+    the joint and limit when only the limits are in the way, else the reason. A base
+    outside its limits is named only when no way round gives another reason."""
     assert chain.fixed is not None
     if pitch is None and len(fam.planar) == 3:
         pitch = preferred(chain, seed)
     misses = Misses()
     chain.fixed(p[0], p[1], p[2], pitch, seed, misses)
-    if misses.violations:
-        _, i, value = min(misses.violations)
+    limits = [v for v in misses.violations if v[1] != fam.base]
+    if limits or (misses.violations and not misses.reasons):
+        _, i, value = min(limits or misses.violations)
         lo, hi = math.degrees(chain.lower[i]), math.degrees(chain.upper[i])
         return UnreachableError(
             f"{chain.name} cannot reach {where(p, pitch)} inside its limits: "
