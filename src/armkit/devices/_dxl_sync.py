@@ -3,20 +3,23 @@
 present state of many servos in one SYNC_READ. Values in the control table's units
 (``_xm430``), signed registers signed.
 
-A mixin of ``DynamixelBus``, as ``_dxl_settings`` is: it works on the bus's protocol,
-port and packet handler, with the bus's attempts and status check.
+``DynamixelBus`` holds one ``SyncInstructions``, given its client, port and packet
+handler, and two functions of its own: the attempts (which settle the line between
+tries) and the status check (which reads a servo's hardware error).
 """
 
 from __future__ import annotations
 
-from abc import ABC, abstractmethod
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 from .._errors import DeviceError
 from . import _xm430 as xm
 from ._dxl_sdk import COMM_SUCCESS, Protocol, comm_fault, sync_read_replies
+
+Attempts = Callable[[], Iterable[int]]  # attempt numbers 0..retries, the line settled between
+CheckStatus = Callable[[int, str, int], None]  # (servo ID, what, error byte): raises if bad
 
 
 @dataclass(frozen=True, slots=True)
@@ -28,30 +31,52 @@ class ServoState:
     current: int
 
 
-class SyncInstructions(ABC):
-    """SYNC_WRITE and SYNC_READ (mixed into ``DynamixelBus``)."""
+class SyncInstructions:
+    """SYNC_WRITE and SYNC_READ on one bus, the SDK's group objects kept for reuse.
 
-    protocol: Protocol
-    retries: int
-    _port: Any
-    _ph: Any
-    _groups: dict[tuple[Any, ...], Any]
+    Args:
+        protocol: the client (the SDK or armkit's own) whose group classes are used.
+        port: the bus's port handler.
+        packet_handler: the bus's packet handler (reads the SYNC_READ replies).
+        attempts: the bus's attempts, for retrying a SYNC_READ.
+        check: the bus's status check, for each SYNC_READ reply's error byte.
+    """
 
-    @abstractmethod
-    def _attempts(self) -> Iterator[int]:
-        """Attempt numbers 0..retries, settling the line between attempts."""
-
-    @abstractmethod
-    def _check(self, servo_id: int, what: str, error: int) -> None:
-        """Raise for a status error byte: refused instruction or hardware alert."""
+    def __init__(
+        self,
+        protocol: Protocol,
+        port: Any,
+        packet_handler: Any,
+        attempts: Attempts,
+        check: CheckStatus,
+    ) -> None:
+        self._protocol, self._port, self._ph = protocol, port, packet_handler
+        self._attempts, self._check = attempts, check
+        self._groups: dict[tuple[Any, ...], Any] = {}
 
     def sync_write(self, name: str, values: Mapping[int, int]) -> None:
         """{ID: value} of one register in one SYNC_WRITE, sent exactly once."""
         reg = xm.register(name)
-        self._sync_write(reg.address, reg.size, {s: reg.encode(v) for s, v in values.items()})
+        self.write_block(reg.address, reg.size, {s: reg.encode(v) for s, v in values.items()})
 
-    def _sync_write(self, address: int, size: int, data: Mapping[int, bytes]) -> None:
-        group = self._group(self.protocol.group_sync_write, address, size)
+    def sync_read(self, name: str, ids: Sequence[int]) -> dict[int, int]:
+        """{ID: value} of one register, signed if the register is."""
+        reg = xm.register(name)
+        raw = self.read_block(reg.address, reg.size, ids)
+        return {sid: reg.decode(data) for sid, data in raw.items()}
+
+    def read_states(self, ids: Sequence[int]) -> dict[int, ServoState]:
+        """Present current, velocity and position of ``ids`` in one SYNC_READ (126..135)."""
+        cur, vel, pos = (xm.register(f"Present {n}") for n in ("Current", "Velocity", "Position"))
+        raw = self.read_block(cur.address, pos.address + pos.size - cur.address, ids)
+        return {
+            sid: ServoState(pos.decode(d[6:10]), vel.decode(d[2:6]), cur.decode(d[0:2]))
+            for sid, d in raw.items()
+        }
+
+    def write_block(self, address: int, size: int, data: Mapping[int, bytes]) -> None:
+        """One SYNC_WRITE of ``size`` bytes at ``address``: {ID: bytes}, sent exactly once."""
+        group = self._group(self._protocol.group_sync_write, address, size)
         group.clearParam()
         for sid, raw in data.items():
             group.addParam(sid, list(raw))
@@ -60,33 +85,20 @@ class SyncInstructions(ABC):
         if result != COMM_SUCCESS:
             raise DeviceError(f"servos {list(data)}: SYNC_WRITE failed: {comm_fault(result)}")
 
-    def sync_read(self, name: str, ids: Sequence[int]) -> dict[int, int]:
-        """{ID: value} of one register, signed if the register is."""
-        reg = xm.register(name)
-        raw = self._sync_read(reg.address, reg.size, ids)
-        return {sid: reg.decode(data) for sid, data in raw.items()}
-
-    def read_states(self, ids: Sequence[int]) -> dict[int, ServoState]:
-        """Present current, velocity and position of ``ids`` in one SYNC_READ (126..135)."""
-        cur, vel, pos = (xm.register(f"Present {n}") for n in ("Current", "Velocity", "Position"))
-        raw = self._sync_read(cur.address, pos.address + pos.size - cur.address, ids)
-        return {
-            sid: ServoState(pos.decode(d[6:10]), vel.decode(d[2:6]), cur.decode(d[0:2]))
-            for sid, d in raw.items()
-        }
-
-    def _sync_read(self, address: int, size: int, ids: Sequence[int]) -> dict[int, bytes]:
-        """SYNC_READ, retried as a whole; raises naming the servo that failed."""
-        failed, result = ids[0], COMM_SUCCESS
+    def read_block(self, address: int, size: int, ids: Sequence[int]) -> dict[int, bytes]:
+        """{ID: ``size`` bytes at ``address``} in one SYNC_READ, retried as a whole;
+        raises naming the servo that failed."""
+        failed, result, tries = ids[0], COMM_SUCCESS, 0
         for _ in self._attempts():
-            group = self._group(self.protocol.group_sync_read, address, size, tuple(ids))
+            tries += 1
+            group = self._group(self._protocol.group_sync_read, address, size, tuple(ids))
             failed, result, replies = sync_read_replies(group, self._ph, self._port, ids)
             if result == COMM_SUCCESS:
                 for sid, (_, error) in replies.items():
                     self._check(sid, f"SYNC_READ at {address}", error)
                 return {sid: data for sid, (data, _) in replies.items()}
         raise DeviceError(
-            f"servo {failed}: SYNC_READ at {address} failed after {self.retries + 1} tries:"
+            f"servo {failed}: SYNC_READ at {address} failed after {tries} tries:"
             f" {comm_fault(result)}; check its power, cable and ID"
         )
 

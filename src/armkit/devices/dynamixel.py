@@ -19,7 +19,8 @@ Retry policy (bounded by ``retries``):
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Mapping, Sequence
+from contextlib import AbstractContextManager
 from typing import Any
 
 from .._clock import Clock, WallClock
@@ -42,8 +43,12 @@ from ._dxl_sync import ServoState as ServoState
 from ._dxl_sync import SyncInstructions
 
 
-class DynamixelBus(SyncInstructions, ServoSettings):
+class DynamixelBus:
     """A serial port with XM430 servos on it (Protocol 2.0).
+
+    The bus does the unicast instructions (PING, READ, WRITE, REBOOT) and the retry
+    policy itself; its group instructions are a ``SyncInstructions`` and its servo
+    settings a ``ServoSettings``, both made of the bus's port and functions.
 
     Args:
         port: device path (``/dev/ttyUSB0``, an emulator's pty path).
@@ -94,17 +99,25 @@ class DynamixelBus(SyncInstructions, ServoSettings):
     def on_handlers(cls, port_handler: Any, packet_handler: Any, retries: int = 3) -> DynamixelBus:
         """A bus over already-open SDK handlers (benchmarks, custom ports)."""
         bus = cls.__new__(cls)
-        bus._attach(sdk_protocol(), port_handler, retries, None)
-        bus._ph = packet_handler
+        bus._attach(sdk_protocol(), port_handler, retries, None, packet_handler)
         return bus
 
-    def _attach(self, proto: Protocol, port: Any, retries: int, clock: Clock | None) -> None:
-        self.protocol, self._port, self._ph = proto, GuardedPort(port), proto.packet_handler()
+    def _attach(
+        self,
+        proto: Protocol,
+        port: Any,
+        retries: int,
+        clock: Clock | None,
+        packet_handler: Any = None,
+    ) -> None:
+        self.protocol, self._port = proto, GuardedPort(port)
+        self._ph = proto.packet_handler() if packet_handler is None else packet_handler
         self.clock = clock or WallClock()
         self.retries = retries
         self.settle_s = 0.1  # after a failed exchange: wait for late replies, then drop them
         self._lock = None  # held while a port opened by path is open
-        self._groups: dict[tuple[Any, ...], Any] = {}
+        self._sync = SyncInstructions(proto, self._port, self._ph, self._attempts, self._check)
+        self._settings = ServoSettings(self.read, self.write, self._sync.write_block)
 
     def _open(self, port: str, baudrate: int) -> None:
         try:
@@ -242,3 +255,41 @@ class DynamixelBus(SyncInstructions, ServoSettings):
                 f"servo {servo_id}: still in hardware error after REBOOT"
                 f" ({xm.describe_hardware_error(bits)}; reboot status: {comm_fault(result)})"
             )
+
+    # -- group instructions (``_dxl_sync``) --------------------------------
+    def sync_write(self, name: str, values: Mapping[int, int]) -> None:
+        """{ID: value} of one register in one SYNC_WRITE, sent exactly once."""
+        self._sync.sync_write(name, values)
+
+    def sync_read(self, name: str, ids: Sequence[int]) -> dict[int, int]:
+        """{ID: value} of one register, signed if the register is (retried as a whole)."""
+        return self._sync.sync_read(name, ids)
+
+    def read_states(self, ids: Sequence[int]) -> dict[int, ServoState]:
+        """Present current, velocity and position of ``ids`` in one SYNC_READ (126..135)."""
+        return self._sync.read_states(ids)
+
+    # -- servo settings (``_dxl_settings``) --------------------------------
+    def set_torque(self, ids: Iterable[int], on: bool) -> None:
+        """Torque Enable on every servo in ``ids``."""
+        self._settings.set_torque(ids, on)
+
+    def torque(self, ids: Sequence[int], on: bool) -> AbstractContextManager[None]:
+        """Set torque for the block, then put every servo back as it was."""
+        return self._settings.torque(ids, on)
+
+    def set_operating_mode(self, servo_id: int, mode: int) -> None:
+        """Operating Mode (3 position, 4 extended, 5 current-based position, ...)."""
+        self._settings.set_operating_mode(servo_id, mode)
+
+    def set_eeprom(self, servo_id: int, name: str, value: int) -> None:
+        """Write an EEPROM register if it differs, torque off around it, then restored."""
+        self._settings.set_eeprom(servo_id, name, value)
+
+    def set_time_based(self, ids: Iterable[int], on: bool) -> None:
+        """Drive Mode bit 2: profiles in ms (True) or in velocity/acceleration units."""
+        self._settings.set_time_based(ids, on)
+
+    def set_profiles(self, profiles: Mapping[int, tuple[int, int]]) -> None:
+        """{ID: (acceleration, velocity)} in one SYNC_WRITE of Profile Acceleration..Velocity."""
+        self._settings.set_profiles(profiles)
