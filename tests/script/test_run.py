@@ -174,6 +174,33 @@ def test_owi_timed_rotation_and_light() -> None:
         a.close()
 
 
+OWI_PROGRAM = """\
+run shoulder forward 1.5s
+run elbow forward 1s
+grip close
+grip close
+grip open
+turn wrist by -20
+turn base by 3
+move xyz 200 0 150
+home
+"""
+
+
+def test_owi_plan_time_is_the_timed_driver_s() -> None:
+    """The check times an OWI script as its driver runs it (gravity, overshoot, battery,
+    two-leg short turns, a gripper already closed), not at each joint's top speed."""
+    a, _ = counting_arm("owi535")
+    try:
+        t0 = a.clock.now()
+        result = _run(a, OWI_PROGRAM)
+        took = a.clock.now() - t0  # simulated seconds, not wall time
+        assert result.plan.unknown == 0
+        assert result.plan.total == pytest.approx(took, rel=0.02)
+    finally:
+        a.close()
+
+
 def test_grip_open_and_close_use_the_gripper_range(arm: tuple[Arm, CountingDriver]) -> None:
     a, _ = arm
     _run(a, "grip close\ngrip open\ngrip 1in\n")

@@ -3,7 +3,10 @@
 It follows the script statement by statement, solving every target (reach,
 joint limits, the table plane, straight lines point by point) and timing every
 motion with ``armkit.motion``, so a script is known good, and how long it
-takes, before anything moves.
+takes, before anything moves. An OWI-535 (timed motors) is timed as its driver
+will run it instead: the runs ``armkit.drivers.timed.forecast_move`` plans with
+the timing model a new unit starts with (``default_timing``), one joint at a
+time, gravity, overshoot and battery included.
 """
 
 from __future__ import annotations
@@ -17,6 +20,13 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import JointLimitError, UnreachableError
+from ..drivers.timed import (
+    Forecast,
+    default_timing,
+    forecast_move,
+    forecast_run,
+    grip_seconds,
+)
 from ..kinematics import fk, fk_frames, ik
 from ..model import ArmModel
 from ..motion import line, plan_path, time_path, trapezoid
@@ -36,13 +46,15 @@ TABLE_TOLERANCE = 1e-4  # [m]
 @dataclass(frozen=True)
 class ArmState:
     """What the checker knows of the arm; None = not known before it runs (``grip``:
-    not set yet, the model's own grip length)."""
+    not set yet, the model's own grip length). ``motor_s``: motor-seconds a timed
+    arm has used [s] (its battery's count)."""
 
     q: F64 | None
     grip: float | None
     speed: float = 1.0
     tool_speed: float = 0.05
     light: bool | None = None
+    motor_s: float = 0.0
 
 
 class ModelArm:
@@ -53,6 +65,8 @@ class ModelArm:
         self.state = ArmState(None if q0 is None else np.array(q0, dtype=np.float64), grip0)
         self.plan = Plan(model.joint_names)
         self.time = 0.0  # sum of the known durations so far [s]
+        # an OWI-535's timing as its driver gives a unit not yet calibrated; None: not one
+        self.timing = default_timing(model) if "owi535" in model.drivers else None
         self._line, self._context, self._recording = 0, "", True
 
     def begin(self, stmt: Statement, frames: tuple[Frame, ...]) -> None:
@@ -71,8 +85,7 @@ class ModelArm:
         elif straight and q0 is not None:
             self._line_to(q0, self._point(target))
         else:
-            q1 = self._solve(target)
-            self._step(q1, self._joint_time(q0, q1))
+            self._joint_move(q0, self._solve(target))
 
     def turn(self, joint: str, angle: float | None, relative: bool) -> None:
         q0 = self.state.q
@@ -85,18 +98,17 @@ class ModelArm:
         q1 = q0.copy()
         q1[j] = q0[j] + angle if relative else angle
         self._check_pose(q1)
-        self._step(q1, self._joint_time(q0, q1))
+        self._joint_move(q0, q1)
 
     def grip(self, width: float | None) -> None:
-        before = self.model.gripper.width_max if self.state.grip is None else self.state.grip
-        took = None if width is None else abs(width - before) / GRIP_SPEED
+        took = None if width is None else self._grip_time(width)
         self.state = replace(self.state, grip=width)
         self._step(self.state.q, took)
 
     def home(self) -> None:
         q1 = self.model.home
         self._check_pose(q1)
-        self._step(q1, self._joint_time(self.state.q, q1))
+        self._joint_move(self.state.q, q1)
 
     def wait(self, seconds: float | None) -> None:
         self._step(self.state.q, seconds)
@@ -117,6 +129,9 @@ class ModelArm:
             self._step(None, seconds)
             return
         j = self.model.joint_index(joint)
+        if self.timing is not None:
+            self._forecast(forecast_run(self.timing, q0, j, direction, seconds, self.state.motor_s))
+            return
         q1 = q0.copy()
         limit = self.model.joints[j]
         q1[j] = float(
@@ -199,7 +214,7 @@ class ModelArm:
         for q in path.q:
             self._check_table(q, "along the line ")
         took = time_path(self.model, path, self.state.tool_speed, TOOL_ACCEL).duration
-        onto = self._joint_time(q0, path.q[0], 1.0) or 0.0  # ``follow``'s move onto its start
+        onto = self._onto_time(q0, path.q[0])  # ``follow``'s move onto its start
         self._step(path.q[-1].copy(), onto + took)
 
     def _check_pose(self, q: F64, only: tuple[int, float] | None = None) -> None:
@@ -237,14 +252,39 @@ class ModelArm:
         k = frame if self.model.convention == "standard" else frame - 1
         return f"{self.model.joint_names[k]} joint"
 
-    def _joint_time(self, q0: F64 | None, q1: F64, speed: float | None = None) -> float | None:
-        """How long the joint move q0 -> q1 [rad] takes at ``speed`` (None: the script's)."""
+    # -- timing ----------------------------------------------------------
+    def _joint_move(self, q0: F64 | None, q1: F64) -> None:
+        """Step by a joint move q0 -> q1 [rad]: a timed arm as its driver runs it (and
+        where its estimate ends), any other arm's trapezoid at the script's speed."""
         if q0 is None:
-            return None
-        if self.model.gripper.kind == "timed":  # one joint at a time (the OWI's driver)
-            v = np.array([j.max_velocity for j in self.model.joints])
-            return float(np.sum(np.abs(q1 - q0) / v))
-        return trapezoid(self.model, q0, q1, self.state.speed if speed is None else speed).duration
+            self._step(q1, None)
+        elif self.timing is not None:
+            self._forecast(forecast_move(self.timing, self.model, q0, q1, self.state.motor_s))
+        else:
+            self._step(q1, trapezoid(self.model, q0, q1, self.state.speed).duration)
+
+    def _onto_time(self, q0: F64, q1: F64) -> float:
+        """How long a full-speed joint move q0 -> q1 [rad] takes [s] (the battery count
+        of a timed arm goes on)."""
+        if self.timing is None:
+            return trapezoid(self.model, q0, q1, 1.0).duration
+        ahead = forecast_move(self.timing, self.model, q0, q1, self.state.motor_s)
+        self.state = replace(self.state, motor_s=ahead.motor_s)
+        return ahead.seconds
+
+    def _grip_time(self, width: float) -> float:
+        """How long opening the gripper to ``width`` [m] takes [s]."""
+        before = self.state.grip
+        if self.timing is not None:
+            return grip_seconds(self.timing, self.model, before, width)
+        return (
+            abs(width - (self.model.gripper.width_max if before is None else before)) / GRIP_SPEED
+        )
+
+    def _forecast(self, ahead: Forecast) -> None:
+        """Step to where a timed arm's driver will estimate it after ``ahead``'s runs."""
+        self.state = replace(self.state, motor_s=ahead.motor_s)
+        self._step(ahead.q, ahead.seconds)
 
     def _step(self, q: F64 | None, duration: float | None) -> None:
         self.state = replace(self.state, q=q)

@@ -1,5 +1,9 @@
 """The OWI-535's driver: timed motors, joints that know their angle, a
-calibrated timing model and a state file that is never lost (seed 000)."""
+calibrated timing model and a state file that is never lost (seed 000).
+
+``forecast_move``, ``forecast_run`` and ``grip_seconds`` tell what the driver
+will do (its runs, their times, the estimate after them) without a device: the
+script checker times OWI scripts with them."""
 
 from __future__ import annotations
 
@@ -10,11 +14,16 @@ from ._calibrate import run_calibration as run_calibration
 from ._config import constant_rate as constant_rate
 from ._config import default_timing as default_timing
 from ._driver import TimedDriver as TimedDriver
+from ._forecast import Forecast as Forecast
+from ._forecast import forecast_move as forecast_move
+from ._forecast import forecast_run as forecast_run
+from ._forecast import grip_seconds as grip_seconds
 from ._journal import UncertainEstimateWarning as UncertainEstimateWarning
 from ._keys import run_keys as run_keys
 from ._keys import status_line as status_line
 from ._plan import MoveReport as MoveReport
 from ._plan import ShortMoveError as ShortMoveError
+from ._plan import Step as Step
 from ._rehome import rehome as rehome
 from ._state import ArmState as ArmState
 from ._state import load as load_state
@@ -23,10 +32,10 @@ from ._timing import JointTiming as JointTiming
 from ._timing import TimingModel as TimingModel
 
 __all__ = [
-    "ArmState", "Clock", "JointTiming", "MoveReport", "ShortMoveError",
+    "ArmState", "Clock", "Forecast", "JointTiming", "MoveReport", "ShortMoveError", "Step",
     "TimedDriver", "TimingModel", "UncertainEstimateWarning", "constant_rate", "default_timing",
-    "load_state", "open_driver", "rehome", "run_calibration", "run_keys", "state_path",
-    "status_line",
+    "forecast_move", "forecast_run", "grip_seconds", "load_state", "open_driver", "rehome",
+    "run_calibration", "run_keys", "state_path", "status_line",
 ]  # fmt: skip
 
 

@@ -1,0 +1,107 @@
+"""What the OWI-535's driver will do, worked out before it does it: the motor runs
+of a move, a timed run or a grip, how long they take and where the estimate ends,
+from a pose and the motor-seconds used so far, with no device, clock or state file.
+
+Moves are planned by the pieces ``TimedDriver.move_report`` runs (``safe_order``,
+``plan_legs``, ``plan_turns`` and so ``TimingModel.duration``), one joint at a
+time, each from the pose and battery the previous run left: the same runs the
+driver will make, for the script checker (``armkit.script``) to time a script the
+way it will run.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ...model import ArmModel
+from ._order import safe_order
+from ._plan import ShortMoveError, Step, plan_turns
+from ._short import plan_legs
+from ._timing import TimingModel
+
+F64 = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Forecast:
+    """The runs one command will make, and the driver's estimate after them.
+
+    Attributes:
+        steps: the motor runs, one after another (one joint each).
+        q: estimated joint angles after them [rad], shape (4,).
+        motor_s: motor-seconds used after them [s] (what drains the battery).
+        notes: joints left where they are (within the 0.5 deg resolution).
+    """
+
+    steps: tuple[Step, ...]
+    q: F64
+    motor_s: float
+    notes: tuple[str, ...] = ()
+
+    @property
+    def seconds(self) -> float:
+        """How long the runs take [s]."""
+        return float(sum(s.seconds for s in self.steps))
+
+
+def forecast_move(
+    timing: TimingModel, model: ArmModel, q0: F64, q1: F64, motor_s: float = 0.0
+) -> Forecast:
+    """The runs of ``TimedDriver.move(q1)`` from the estimate ``q0`` [rad], shape (4,),
+    with ``motor_s`` [s] used: joints in the order that keeps the arm off the table,
+    short turns as two legs, each run timed from where the one before left the arm.
+
+    Raises:
+        JointLimitError: a target is outside the unit's limits.
+        UnreachableError: every order sweeps the arm through the table.
+        ShortMoveError: a turn too small for the motors, with no room for two legs.
+    """
+    names = model.joint_names
+    start = np.array(q0, dtype=np.float64)
+    goal = np.asarray(q1, dtype=np.float64)
+    plan_turns(timing, names, start, dict(enumerate(goal)), 0.0, clamp=False, skip_short=True)
+    order = safe_order(start, goal, timing.lengths, model.dh[0].d)
+    notes: list[str] = []
+    legs = plan_legs(timing, names, start, (order, goal), motor_s, model.dh[0].d, notes)
+    steps: list[Step] = []
+    pose, used = start.copy(), motor_s
+    for j, target in legs:
+        part = plan_turns(timing, names, pose, {j: target}, used, clamp=False, skip_short=True)
+        for s in part.steps:  # the driver's estimate after a run: its target (to 1e-15)
+            pose[j] = s.target
+            used += s.seconds
+        steps += part.steps
+        notes += part.notes
+    return Forecast(tuple(steps), pose, used, tuple(notes))
+
+
+def forecast_run(
+    timing: TimingModel, q0: F64, j: int, direction: int, seconds: float, motor_s: float = 0.0
+) -> Forecast:
+    """``TimedDriver.turn_for``: joint ``j``'s motor run ``seconds`` [s] in ``direction``
+    (+1/-1) from ``q0`` [rad]; the angle as the timing model advances it, clamped.
+
+    Raises:
+        ShortMoveError: ``seconds`` under the motors' shortest reliable run.
+    """
+    if seconds < timing.min_move_s:
+        raise ShortMoveError(
+            f"a run of {seconds * 1000:.0f} ms is under the {timing.min_move_s * 1000:.0f} ms "
+            "minimum; run it longer"
+        )
+    q = np.array(q0, dtype=np.float64)
+    q[j] = timing.advance(q, j, direction, seconds, motor_s)
+    return Forecast((Step(j, direction, seconds, float(q[j])),), q, motor_s + seconds)
+
+
+def grip_seconds(timing: TimingModel, model: ArmModel, before: float | None, width: float) -> float:
+    """How long ``TimedDriver.grip(width)`` [m] runs the gripper [s]: its timed period,
+    or 0 when it is already open (or closed) as asked. ``before``: the width it was last
+    set to [m] (None: unknown, so it runs)."""
+    middle = (model.gripper.width_min + model.gripper.width_max) / 2
+    if before is not None and (before > middle) == (width > middle):
+        return 0.0
+    return timing.gripper_s
