@@ -29,14 +29,16 @@ from ._plan import MoveReport, plan_turns
 from ._safety import ExitGuard
 from ._short import plan_legs
 from ._state import ArmState, load
+from ._timing import TimingModel
 from ._turns import TimedTurns
 
 F64 = NDArray[np.float64]
 
 
-class TimedDriver(TimedTurns):
+class TimedDriver:
     """A :class:`~armkit.drivers.Driver` for the OWI-535 (open-loop timed motors); its own
-    turns, gripper and light (``turn_to``, ``drive_to_limit``, ...) are ``TimedTurns``'."""
+    turns, gripper and light (``turn_to``, ``drive_to_limit``, ...) are those of the
+    ``TimedTurns`` it holds, which owns the estimate and its state file."""
 
     def __init__(
         self,
@@ -79,17 +81,44 @@ class TimedDriver(TimedTurns):
             base_reversed=self.config.base_reversed,
             watchdog_margin_s=self.config.watchdog_margin_s,
         )
-        self.state = load(self.path) if self.path.exists() else _fresh_state(model, unit)
-        self.motors.light = self.state.light
+        state = load(self.path) if self.path.exists() else _fresh_state(model, unit)
+        self._turns = TimedTurns(
+            model, clock, self.config, self.motors, self.path, state, durable=self.durable
+        )
+        self.motors.light = state.light
         self._guard = ExitGuard(self.motors.stop)
         self._guard.install()
         self._closed = False
         self.simulation: object | None = None  # the OwiSim behind a simulated device
         self.motors.stop()
-        if self.state.pending is not None:
-            self._save(recovered(self.state, time.time()))
+        if state.pending is not None:
+            self._turns.set_state(recovered(state, time.time()))
 
-    # -- Driver protocol (joint_names and read: TimedTurns) --------------
+    # -- the estimate (``TimedTurns``) ---------------------------------------
+    @property
+    def state(self) -> ArmState:
+        """The unit's estimate, as last saved (replace it with :meth:`set_state`)."""
+        return self._turns.state
+
+    @property
+    def timing(self) -> TimingModel:
+        """The unit's timing model."""
+        return self._turns.timing
+
+    @property
+    def joint_names(self) -> tuple[str, ...]:
+        """base, shoulder, elbow, wrist."""
+        return self._turns.joint_names
+
+    def read(self) -> F64:
+        """Estimated joint angles [rad], shape (4,)."""
+        return self._turns.read()
+
+    def set_state(self, state: ArmState) -> None:
+        """Replace the unit's state (calibration, re-homing) and save it."""
+        self._turns.set_state(state)
+
+    # -- Driver protocol -----------------------------------------------------
     def move(
         self,
         q: F64,
@@ -150,8 +179,8 @@ class TimedDriver(TimedTurns):
         if planned:
             self._warn_if_uncertain()
         for j, target in planned:
-            part = self._plan({j: target}, clamp=False, skip_short=True)
-            report.steps += self._run_steps(part.steps)
+            part = self._turns.plan({j: target}, clamp=False, skip_short=True)
+            report.steps += self._turns.run_steps(part.steps)
         return report
 
     @property
@@ -171,7 +200,9 @@ class TimedDriver(TimedTurns):
     def grip(self, width: float) -> None:
         """Open (``width`` [m] over half the gripper's range) or close the gripper."""
         check_grip(self.model, width)
-        self.open_gripper(width > (self.model.gripper.width_min + self.model.gripper.width_max) / 2)
+        self._turns.open_gripper(
+            width > (self.model.gripper.width_min + self.model.gripper.width_max) / 2
+        )
 
     def stop(self) -> None:
         """Stop every motor now (the light keeps its state)."""
@@ -181,6 +212,41 @@ class TimedDriver(TimedTurns):
         """Every motor off: the OWI's DC motors hold nothing and run only during a move,
         so this is ``stop`` (for the tasks that switch an arm off at the end)."""
         self.motors.stop()
+
+    # -- the OWI's own turns, gripper and light (``TimedTurns``) ---------------
+    def turn_to(self, joint: str, angle: float, *, clamp: bool = True) -> MoveReport:
+        """Turn ``joint`` to ``angle`` [rad]; beyond a limit it is clamped (noted) or, with
+        ``clamp=False``, refused. Moves under the minimum time are refused (ShortMoveError)."""
+        return self._turns.turn_to(joint, angle, clamp=clamp)
+
+    def turn_by(self, joint: str, delta: float, *, clamp: bool = True) -> MoveReport:
+        """Turn ``joint`` by ``delta`` [rad] from its estimated angle (see :meth:`turn_to`)."""
+        return self._turns.turn_by(joint, delta, clamp=clamp)
+
+    def turn_many(self, targets: dict[str, float], *, clamp: bool = True) -> MoveReport:
+        """Turn several joints at once ({name: angle [rad]}), all motors started together."""
+        return self._turns.turn_many(targets, clamp=clamp)
+
+    def turn_for(self, joint: str, direction: int, seconds: float) -> None:
+        """Run one motor for ``seconds`` [s] in ``direction`` (-1 or +1), the angle estimated
+        by the timing model and clamped at the limits."""
+        self._turns.turn_for(joint, direction, seconds)
+
+    def drive_to_limit(
+        self, joint: str, direction: int, wait: Callable[[], object] | None = None
+    ) -> float:
+        """Run ``joint`` against its limit until ``wait()`` returns (or for 1.25 times the
+        slowest limit-to-limit time); its angle is then that limit. Returns the motor
+        time [s]; ArmkitError if the watchdog stopped it first."""
+        return self._turns.drive_to_limit(joint, direction, wait)
+
+    def open_gripper(self, open_: bool) -> None:
+        """Open or close the gripper for its timed period; nothing is sent if it already is."""
+        self._turns.open_gripper(open_)
+
+    def set_light(self, on: bool) -> None:
+        """Switch the light on or off (kept across stops)."""
+        self._turns.set_light(on)
 
     def close(self) -> None:
         """Stop, save, release the device. Safe to call twice."""

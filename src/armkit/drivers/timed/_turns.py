@@ -3,8 +3,10 @@ once, for a time, against a limit) and its gripper and light, each journaled in 
 unit's state file: saved uncertain with the move pending before a motor starts, then
 saved with the new estimate (``_journal.journaled_run``).
 
-A mixin of ``TimedDriver``, which opens the unit (its lock, motors, state file) and
-adds the ``Driver`` protocol's moves on top of these turns.
+``TimedDriver`` opens the unit (its lock, motors, state file), holds one
+``TimedTurns`` made of them and does the ``Driver`` protocol's moves with its
+``plan`` and ``run_steps``; this object owns the estimate and is the only writer of
+the state file.
 """
 
 from __future__ import annotations
@@ -30,23 +32,35 @@ F64 = NDArray[np.float64]
 
 
 class TimedTurns:
-    """The OWI-535's joints, turned by time from their estimated angles (mixed into
-    ``TimedDriver``, which sets every attribute below when it opens the unit).
+    """The OWI-535's joints, turned by time from their estimated angles.
+
+    Args:
+        model: the arm.
+        clock: time for the runs.
+        config: the ``[drivers.owi535]`` setup (its watchdog margin [s]).
+        motors: the unit's motors, already open.
+        path: the unit's state file, written before and after every run.
+        state: the estimate to start from (as loaded from ``path``, or fresh).
+        durable: fsync the state file (False in simulations).
 
     Attributes:
-        model: the arm.  clock: time for the runs.  path: the unit's state file.
-        durable: fsync the state file (False in simulations).  config: the
-            ``[drivers.owi535]`` setup.  motors: the unit's motors.  state: the
-            estimate, as last saved.
+        state: the estimate, as last saved.
     """
 
-    model: ArmModel
-    clock: Clock
-    path: Path
-    durable: bool
-    config: OwiSection
-    motors: Motors
-    state: ArmState
+    def __init__(
+        self,
+        model: ArmModel,
+        clock: Clock,
+        config: OwiSection,
+        motors: Motors,
+        path: Path,
+        state: ArmState,
+        *,
+        durable: bool = True,
+    ) -> None:
+        self.model, self.clock, self.config, self.motors = model, clock, config, motors
+        self.path, self.durable = path, durable
+        self.state = state
 
     @property
     def joint_names(self) -> tuple[str, ...]:
@@ -76,8 +90,8 @@ class TimedTurns:
     def turn_many(self, targets: dict[str, float], *, clamp: bool = True) -> MoveReport:
         """Turn several joints at once ({name: angle [rad]}), all motors started together."""
         index = {self.model.joint_index(name): float(a) for name, a in targets.items()}
-        report = self._plan(index, clamp=clamp, skip_short=False)
-        report.steps = self._run_steps(report.steps)
+        report = self.plan(index, clamp=clamp, skip_short=False)
+        report.steps = self.run_steps(report.steps)
         return report
 
     def turn_for(self, joint: str, direction: int, seconds: float) -> None:
@@ -91,7 +105,7 @@ class TimedTurns:
                 f"turn {joint} for {seconds * 1000:.0f} ms is under the "
                 f"{self.timing.min_move_s * 1000:.0f} ms minimum; run it longer"
             )
-        self._run_steps([Step(j, direction, seconds, math.nan)])
+        self.run_steps([Step(j, direction, seconds, math.nan)])
 
     def drive_to_limit(
         self, joint: str, direction: int, wait: Callable[[], object] | None = None
@@ -151,14 +165,17 @@ class TimedTurns:
         """Replace the unit's state (calibration, re-homing) and save it."""
         self._save(state)
 
-    # -- internals ---------------------------------------------------------
-    def _plan(self, targets: dict[int, float], *, clamp: bool, skip_short: bool) -> MoveReport:
+    def plan(self, targets: dict[int, float], *, clamp: bool, skip_short: bool) -> MoveReport:
+        """The steps that turn {joint index: angle [rad]} from the estimate (nothing runs):
+        see ``_plan.plan_turns``."""
         q, motor_s = self.read(), self.state.motor_s
         return plan_turns(
             self.timing, self.joint_names, q, targets, motor_s, clamp=clamp, skip_short=skip_short
         )
 
-    def _run_steps(self, steps: list[Step]) -> list[Step]:
+    def run_steps(self, steps: list[Step]) -> list[Step]:
+        """Run planned ``steps`` together, journaled; returns them. DeviceError if the
+        watchdog had to stop the run (the estimate is saved first)."""
         if not steps:
             return steps
         names = self.joint_names
@@ -172,6 +189,7 @@ class TimedTurns:
         raise_if_watchdog(run)
         return steps
 
+    # -- internals ---------------------------------------------------------
     def _execute(
         self, run: Run, pending: ArmState, done: Callable[[], ArmState], until: Until | None = None
     ) -> None:
