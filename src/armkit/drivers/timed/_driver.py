@@ -22,12 +22,11 @@ from ..._lock import exclusive
 from ...model import ArmModel, OwiSection, check_grip, check_joints, move_time, owi_section
 from ._config import default_timing
 from ._estimate import recovered
+from ._forecast import move_legs
 from ._journal import warn
 from ._motors import Device, Motors
-from ._order import safe_order
-from ._plan import MoveReport, plan_turns
+from ._plan import MoveReport
 from ._safety import ExitGuard
-from ._short import plan_legs
 from ._state import ArmState, load
 from ._timing import TimingModel
 from ._turns import TimedTurns
@@ -160,25 +159,11 @@ class TimedDriver:
         first motor starts, so a refused move moves nothing."""
         if q.shape != (4,):
             raise InputError(f"q must be 4 joint angles, got shape {q.shape}")
-        targets = dict(enumerate(q))
-        plan_turns(
-            self.timing, self.joint_names, self.read(), targets, 0.0, clamp=False, skip_short=True
-        )
-        order = safe_order(self.read(), q, self.timing.lengths, self.model.dh[0].d, table)
-        report = MoveReport()
-        height = self.model.dh[0].d if table else None
-        planned = plan_legs(
-            self.timing,
-            self.joint_names,
-            self.read(),
-            (order, q),
-            self.state.motor_s,
-            height,
-            report.notes,
-        )
-        if planned:
+        legs, notes = move_legs(self.timing, self.model, self.read(), q, self.state.motor_s, table)
+        report = MoveReport(notes=notes)
+        if legs:
             self._warn_if_uncertain()
-        for j, target in planned:
+        for j, target in legs:  # each run timed from the estimate the one before left
             part = self._turns.plan({j: target}, clamp=False, skip_short=True)
             report.steps += self._turns.run_steps(part.steps)
         return report

@@ -2,11 +2,12 @@
 of a move, a timed run or a grip, how long they take and where the estimate ends,
 from a pose and the motor-seconds used so far, with no device, clock or state file.
 
-Moves are planned by the pieces ``TimedDriver.move_report`` runs (``safe_order``,
-``plan_legs``, ``plan_turns`` and so ``TimingModel.duration``), one joint at a
-time, each from the pose and battery the previous run left: the same runs the
-driver will make, for the script checker (``armkit.script``) to time a script the
-way it will run.
+A move's runs are decided once, by ``move_legs`` (limits, ``safe_order``,
+``plan_legs``), for the driver's ``move_report`` and for ``forecast_move``, which
+times them (``plan_turns`` and so ``TimingModel.duration``) one joint at a time,
+each from the pose and battery the previous run left: the same runs the driver
+will make, for the script checker (``armkit.script``) to time a script the way it
+will run.
 """
 
 from __future__ import annotations
@@ -47,26 +48,37 @@ class Forecast:
         return float(sum(s.seconds for s in self.steps))
 
 
-def forecast_move(
-    timing: TimingModel, model: ArmModel, q0: F64, q1: F64, motor_s: float = 0.0
-) -> Forecast:
-    """The runs of ``TimedDriver.move(q1)`` from the estimate ``q0`` [rad], shape (4,),
-    with ``motor_s`` [s] used: joints in the order that keeps the arm off the table,
-    short turns as two legs, each run timed from where the one before left the arm.
+def move_legs(
+    timing: TimingModel, model: ArmModel, q0: F64, q1: F64, motor_s: float, table: bool = True
+) -> tuple[list[tuple[int, float]], list[str]]:
+    """The one-joint runs, (joint, target [rad]) in order, that ``TimedDriver.move(q1)``
+    makes from the estimate ``q0`` [rad], shape (4,), with ``motor_s`` [s] used, and notes
+    on joints left where they are: every target inside the limits, joints in the order that
+    keeps the arm off the table (``table=False``: the best order even below it), short
+    turns as two legs. All of it decided before a motor starts.
 
     Raises:
         JointLimitError: a target is outside the unit's limits.
         UnreachableError: every order sweeps the arm through the table.
         ShortMoveError: a turn too small for the motors, with no room for two legs.
     """
-    names = model.joint_names
-    start = np.array(q0, dtype=np.float64)
-    goal = np.asarray(q1, dtype=np.float64)
-    plan_turns(timing, names, start, dict(enumerate(goal)), 0.0, clamp=False, skip_short=True)
-    order = safe_order(start, goal, timing.lengths, model.dh[0].d)
+    names, height = model.joint_names, model.dh[0].d
+    plan_turns(timing, names, q0, dict(enumerate(q1)), 0.0, clamp=False, skip_short=True)
+    order = safe_order(q0, q1, timing.lengths, height, table)
     notes: list[str] = []
-    legs = plan_legs(timing, names, start, (order, goal), motor_s, model.dh[0].d, notes)
-    steps: list[Step] = []
+    legs = plan_legs(timing, names, q0, (order, q1), motor_s, height if table else None, notes)
+    return legs, notes
+
+
+def forecast_move(
+    timing: TimingModel, model: ArmModel, q0: F64, q1: F64, motor_s: float = 0.0
+) -> Forecast:
+    """The runs of ``TimedDriver.move(q1)`` from the estimate ``q0`` [rad], shape (4,),
+    with ``motor_s`` [s] used (``move_legs``), each timed from where the one before left
+    the arm. Raises as ``move_legs``."""
+    start = np.array(q0, dtype=np.float64)
+    legs, notes = move_legs(timing, model, start, np.asarray(q1, dtype=np.float64), motor_s)
+    names, steps = model.joint_names, []
     pose, used = start.copy(), motor_s
     for j, target in legs:
         part = plan_turns(timing, names, pose, {j: target}, used, clamp=False, skip_short=True)
