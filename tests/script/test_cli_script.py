@@ -102,6 +102,6 @@ def test_repeat_must_be_positive_and_files_must_exist(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     assert main(["run", _script(tmp_path, GOOD), "--repeat", "0"]) == 2
-    assert "--repeat must be 1 or more, got 0" in capsys.readouterr().err
+    assert "--repeat must be 1..10000, got 0" in capsys.readouterr().err
     assert main(["check", str(tmp_path / "none.arm")]) == 2
     assert "cannot read the script" in capsys.readouterr().err

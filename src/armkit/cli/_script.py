@@ -69,7 +69,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         type=int,
         default=1,
         metavar="N",
-        help="run the whole script N times (default 1)",
+        help="run the whole script N times (1..10000, default 1)",
     )
     p.add_argument("-q", "--quiet", action="store_true", help="do not print each line as it runs")
     add_watch_options(p)
@@ -115,10 +115,10 @@ def _check(args: argparse.Namespace) -> int:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from ..script import check_source, run_checked
+    from ..script import MAX_REPEAT, check_source, run_checked
 
-    if args.repeat < 1:
-        raise InputError(f"--repeat must be 1 or more, got {args.repeat}")
+    if not 1 <= args.repeat <= MAX_REPEAT:
+        raise InputError(f"--repeat must be 1..{MAX_REPEAT}, got {args.repeat}")
     source, setup = _read(args.file)
     with _open(args, setup, source) as arm:
         result = check_source(

@@ -119,6 +119,10 @@ class ScenePhysics:
         elif self.holding is None:
             self._closing(sim, width, t)
 
+    def may_skip(self) -> bool:
+        """The world may skip steps while nothing moves (a still gripper grasps nothing)."""
+        return not self._stop_pending
+
     def cube(self, name: str) -> Cube:
         """The cube ``name`` as last seen (centre of its lowest face, yaw, face up); a
         held one where the gripper carries it."""

@@ -21,16 +21,20 @@ Grammar (one statement per line; ``[]`` optional, ``|`` or, ``...`` repeated)::
                | "joints" A1 ... An       # = move joints A1 ... An
                | "turn" JOINT [ "by" ] ANGLE
                | "grip" ( WIDTH | "open" | "close" )
-               | "home" | "wait" TIME | "light" ( "on" | "off" )
+               | "home" | "wait" TIME | "light" ( "on" | "off" )   # TIME: 0..3600 s
                | "speed" PERCENT          # joint moves, % of each joint's max speed
                | "speed" SPEED            # straight lines, e.g. 40 mm/s
                | "run" JOINT DIRECTION TIME   # OWI timed rotation (000's program mode)
                | JOB { ARGUMENT }         # pick, place, move-item, rotate-cube, stack,
                                           # search, draw, play (see armkit.script.JOBS)
-               | "repeat" COUNT NEWLINE { statement } "end"
+               | "repeat" COUNT NEWLINE { statement } "end"     # COUNT: 0..10000
                | "define" NAME [ "(" PARAM { "," PARAM } ")" ] NEWLINE { statement } "end"
                | NAME { NUMBER | NAME }   # call a procedure
     DIRECTION := "forward" | "backward" (shoulder, elbow, wrist) | "left" | "right" (base)
+
+A ``wait`` is at most ``MAX_WAIT_S`` (3600 s, an hour) and a ``repeat`` (or
+``--repeat``) at most ``MAX_REPEAT`` (10 000) iterations: more is a slipped unit
+or digit (``wait 1e9``), refused by the check; a longer pause is a loop of waits.
 
 A procedure's parameters stand where a number or a pose name is expected
 (``define dip(spot, depth)``, ``line xyz 180 0 depth``, ``move spot``).
@@ -74,3 +78,5 @@ from ._session import Session as Session
 from ._shell import Shell as Shell
 from ._teach import Teaching as Teaching
 from ._teach import joints_line as joints_line
+from ._walk import MAX_REPEAT as MAX_REPEAT
+from ._walk import MAX_WAIT_S as MAX_WAIT_S

@@ -135,7 +135,7 @@ COMMANDS: dict[str, tuple[str, Reader]] = {
     "turn": ("turn JOINT ANGLE | turn JOINT by ANGLE", _turn),
     "grip": ("grip WIDTH | grip open | grip close", _grip),
     "home": ("home", _simple),
-    "wait": ("wait TIME", _simple),
+    "wait": ("wait TIME   (0..3600 s)", _simple),
     "speed": ("speed PERCENT (joint moves) | speed MM/S mm/s (lines)", _simple),
     "light": ("light on | light off", _simple),
     "run": ("run JOINT forward|backward|left|right TIME   (timed motors)", _run),
@@ -145,7 +145,7 @@ COMMANDS: dict[str, tuple[str, Reader]] = {
     "scene": ("scene FILE", _header),
 }
 BLOCKS = {
-    "repeat": "repeat COUNT ... end",
+    "repeat": "repeat COUNT ... end   (COUNT 0..10000)",
     "define": "define NAME(PARAM, ...) ... end",
     "end": "end",
 }

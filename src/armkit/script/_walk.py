@@ -34,6 +34,11 @@ from ._resolve import UNKNOWN, Arg, Fail, Resolver
 
 MAX_CALL_DEPTH = 50
 CHECK_BUDGET = 20_000  # statements the checker simulates before it stops unrolling repeats
+# The longest ``wait`` [s] and the most iterations of one ``repeat`` (or ``--repeat``) a
+# script may ask for: more is a slipped unit or digit (``wait 1e9``), not a job an arm
+# should be left alone with; a longer pause is a loop of waits.
+MAX_WAIT_S = 3600.0
+MAX_REPEAT = 10_000
 
 
 class Walker:
@@ -136,8 +141,12 @@ class Walker:
             b.light(s.flag)
         elif s.value is not None and s.command == "wait":
             seconds = self.resolver.number(s.value, "time")
-            if seconds is not None and seconds < 0:
-                raise Fail(s.loc, f"wait needs a time of 0 s or more, got {seconds:g} s")
+            if seconds is not None and not 0 <= seconds <= MAX_WAIT_S:
+                raise Fail(
+                    s.loc,
+                    f"wait needs a time in 0..{MAX_WAIT_S:g} s (1 hour, the longest pause "
+                    f"a script may ask for), got {seconds:g} s; repeat a shorter wait for more",
+                )
             b.wait(seconds)
         elif s.value is not None:
             tool = s.command == "tool-speed"
@@ -188,8 +197,13 @@ class Walker:
 
     def _repeat(self, s: Repeat) -> None:
         n = self.resolver.number(s.count, "count")
-        if n is not None and n < 0:
-            raise Fail(s.count.loc, f"a repeat count must be 0 or more, got {n:g}")
+        if n is not None and not 0 <= n <= MAX_REPEAT:
+            what = "--repeat" if s.loc.line == 0 else "a repeat count"
+            raise Fail(
+                s.count.loc,
+                f"{what} must be 0..{MAX_REPEAT} (more is a slip of a digit, not a job to "
+                f"leave an arm with), got {n:.0f}",
+            )
         if n is None or n == 0:
             if self.checking:
                 self._blind(s.body, None)

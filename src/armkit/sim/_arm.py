@@ -129,3 +129,8 @@ class SimArm:
         """One simulation step (the world calls this, holding its lock)."""
         self.body.step(t, dt)
         self._recorder.add(t, self.body.q())
+
+    def hold(self, t: float, dt: float, count: int) -> None:
+        """``count`` steps of ``dt`` [s] from ``t`` [s] in which nothing moves (the world
+        skips them, holding its lock): recorded where the arm is, the body not stepped."""
+        self._recorder.hold(t, dt, count, self.body.q())

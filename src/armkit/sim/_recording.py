@@ -60,9 +60,31 @@ class Recorder:
         self._q[i] = q
         self._count += 1
 
+    def hold(self, t: float, dt: float, count: int, q: F64) -> None:
+        """Append ``count`` samples at times ``t``, ``t + dt``, ... [s], all at angles ``q``
+        [rad], shape (dof,) (as ``count`` calls of ``add``, at once)."""
+        if count <= 0:
+            return
+        if count >= self.capacity:  # the buffer fills with these samples alone
+            rows, first = self.capacity, t + (count - self.capacity) * dt
+            self._t = first + dt * np.arange(rows, dtype=np.float64)
+            self._q = np.tile(np.asarray(q, dtype=np.float64), (rows, 1))
+            self._count = rows
+            return
+        rows = self._t.shape[0]
+        need = min(self.capacity, self._count + count)
+        if self._count <= rows < need:
+            self._grow(min(self.capacity, max(2 * rows, need)))
+            rows = self._t.shape[0]
+        at = (self._count + np.arange(count)) % rows
+        self._t[at] = t + dt * np.arange(count)
+        self._q[at] = q
+        self._count += count
+
     def _grow(self, rows: int) -> None:
         t, q = np.zeros(rows), np.zeros((rows, self._q.shape[1]))
-        t[: self._count], q[: self._count] = self._t, self._q
+        n = min(self._count, self._t.shape[0])
+        t[:n], q[:n] = self._t[:n], self._q[:n]
         self._t, self._q = t, q
 
     def recording(self) -> Recording:

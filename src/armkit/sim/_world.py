@@ -18,6 +18,13 @@ viewer, for music): a background thread steps it as wall time passes, and
 ``clock.sleep`` really waits. Observers must be cheap: they run at
 ``rate_hz`` of simulated time; one that needs 30 Hz checks the time itself.
 
+A still world is not stepped: when, after a run of ``STILL_CHECK`` steps,
+every arm is at rest and did not move at all, and every observer says it may
+be skipped (``may_skip()``: one without that method never is), the steps up to
+the last one are skipped (the arms' recordings get their samples, at the same
+angles) and only the last is stepped. So ``wait 600`` on a resting arm costs
+milliseconds, not 600 000 steps; a moving arm is stepped as always.
+
 Every method is thread-safe (``world.lock``, re-entrant, guards all state).
 """
 
@@ -29,11 +36,16 @@ import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Protocol
 
+import numpy as np
+from numpy.typing import NDArray
+
 from .._errors import ArmkitError
 
 if TYPE_CHECKING:
     from ._arm import SimArm
     from ._recording import Recording
+
+F64 = NDArray[np.float64]
 
 
 class Observer(Protocol):
@@ -42,6 +54,16 @@ class Observer(Protocol):
     def on_step(self, world: World, t: float) -> None:
         """The world has just stepped to time ``t`` [s]; read it, or change the scene."""
         ...
+
+
+STILL_CHECK = 100  # steps stepped between looks at whether the world is still
+
+
+def _may_skip(observer: Observer) -> bool:
+    """Whether ``observer`` lets the world skip steps while nothing moves (it says so with
+    a ``may_skip()`` method; one without it is stepped always)."""
+    may_skip = getattr(observer, "may_skip", None)
+    return callable(may_skip) and bool(may_skip())
 
 
 class WorldClock:
@@ -207,13 +229,22 @@ class World:
         arms, observers, dt = tuple(self._arms.values()), tuple(self._observers), self.dt
         self._in_step = True
         try:
-            for _ in range(count):
-                self._steps += 1
-                t = self._steps * dt
-                for arm in arms:
-                    arm.step(t, dt)
-                for observer in observers:
-                    observer.on_step(self, t)
+            while count > 0:
+                n = min(count, STILL_CHECK)
+                before = [(arm.q(), arm.grip()) for arm in arms] if count > n + 1 else None
+                for _ in range(n):
+                    self._steps += 1
+                    t = self._steps * dt
+                    for arm in arms:
+                        arm.step(t, dt)
+                    for observer in observers:
+                        observer.on_step(self, t)
+                count -= n
+                if before is not None and _still(arms, observers, before):
+                    for arm in arms:
+                        arm.hold((self._steps + 1) * dt, dt, count - 1)
+                    self._steps += count - 1
+                    count = 1
         finally:
             self._in_step = False
 
@@ -246,3 +277,18 @@ class World:
                 continue
             next_due = self._wall0 + (self._steps + 1) * step_wall
             time.sleep(max(0.0, next_due - time.monotonic()))
+
+
+def _still(
+    arms: tuple[SimArm, ...], observers: tuple[Observer, ...], before: list[tuple[F64, float]]
+) -> bool:
+    """Every arm at rest and exactly where it was ``before`` (joint angles [rad], gripper
+    opening [m]), and every observer content to be skipped."""
+    return (
+        all(arm.at_rest() for arm in arms)
+        and all(
+            arm.grip() == grip and np.array_equal(arm.q(), q)
+            for arm, (q, grip) in zip(arms, before, strict=True)
+        )
+        and all(_may_skip(observer) for observer in observers)
+    )

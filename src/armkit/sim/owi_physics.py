@@ -122,6 +122,9 @@ class OwiPhysics:
     def advance(self, until: float | None = None) -> None:
         """Integrate the motion up to ``until`` [s] (None: ``clock.now()``)."""
         t = self.clock.now() if until is None else until
+        if not self.dirs.any() and self.gripper_dir == 0:  # nothing runs: nothing to integrate
+            self._t = max(self._t, t)
+            return
         while self._t < t - 1e-12:
             h = min(STEP_S, t - self._t)
             self._step(h)

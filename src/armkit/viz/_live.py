@@ -84,6 +84,11 @@ class LivePublisher:
             self._pace(t)
         self.publish()
 
+    def may_skip(self) -> bool:
+        """The world may skip steps while nothing moves, unless somebody follows it (then
+        its time keeps pace with the wall clock, still or not)."""
+        return not self._watched()
+
     def publish(self) -> None:
         """Write the live file now; its time is the wall clock's (``time.monotonic``, the
         same in every process), so a follower knows how old what it shows is."""
