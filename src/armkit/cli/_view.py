@@ -53,8 +53,10 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         dest="http_port",
         type=int,
         default=8080,
-        help="TCP port of the page (default 8080; 0 = any free); the driver's port is the "
-        "global --port before 'view'",
+        action=_ChosenPort,
+        help="TCP port of the page (default 8080, or the next free one; 0 = any free; a "
+        "port given here and busy is refused); the driver's port is the global --port "
+        "before 'view'",
     )
     p.add_argument("--rate", type=float, metavar="HZ", help="updates per second [Hz] (default 30; 45 with --follow, so that at least 30 new states a second reach the page from a file another process writes)")  # fmt: skip
     p.add_argument("--frames", action="store_true", help="draw every joint frame's axes")
@@ -75,6 +77,15 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     )
     _picture_options(p)
     p.set_defaults(func=run_view)
+
+
+class _ChosenPort(argparse.Action):
+    """``--port N``: remembers that the user chose the port (a busy one is then refused,
+    not swapped for the next free one)."""
+
+    def __call__(self, parser: Any, namespace: Any, values: Any, option: Any = None) -> None:
+        setattr(namespace, self.dest, values)
+        namespace.port_chosen = True
 
 
 def _picture_options(p: argparse.ArgumentParser) -> None:
@@ -105,6 +116,8 @@ def run_view(args: argparse.Namespace) -> int:
     script = script_output(args)
     target = target_of(args)
     scene = scene_of(args, required=False)
+    if not args.gif:
+        _address(args)
     if args.follow:
         return _follow(args, model, scene, target, outputs)
     if args.gif:
@@ -129,6 +142,19 @@ def run_view(args: argparse.Namespace) -> int:
     finally:
         view.close()
         arm.close()
+
+
+def _address(args: argparse.Namespace) -> None:
+    """Check --host and --port before anything opens: the host is an address of this
+    computer, the port free (one the user chose: else refused; the default 8080: else the
+    next free one, said in a line)."""
+    from ..viz import serve_address
+
+    chosen = getattr(args, "port_chosen", False)
+    address = serve_address(args.host, args.http_port, exact=chosen)
+    if address.note:
+        print(f"armkit view: {address.note}", flush=True)
+    args.http_port = address.port
 
 
 def _view_options(args: argparse.Namespace) -> dict[str, Any]:
@@ -226,7 +252,8 @@ def _write_script(path: Path, teach: Any) -> None:
     from .._files import write_atomic
 
     write_atomic(path, teach.script(), durable=False)
-    print(f"armkit view: wrote {len(teach.poses)} poses to {path}; replay with: armkit run {path}")
+    poses = count(len(teach.poses), "pose")
+    print(f"armkit view: wrote {poses} to {path}; replay with: armkit run {path}")
 
 
 def _gif(args: argparse.Namespace, model: Any, poses: list[Any], path: Path, scene: Any) -> int:

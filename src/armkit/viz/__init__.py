@@ -7,6 +7,8 @@ Nothing here imports matplotlib or viser until a picture or the web view
 (``armkit.viz.web``) is asked for.
 """
 
+from ._address import Address as Address
+from ._address import serve_address as serve_address
 from ._arm_shapes import arm_primitives as arm_primitives
 from ._arm_shapes import reach_of as reach_of
 from ._arm_shapes import table_primitive as table_primitive

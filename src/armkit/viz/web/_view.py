@@ -25,6 +25,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..._errors import ArmkitError, InputError
 from ...scene import Scene
+from .._address import serve_address
 from .._arm_shapes import TRAIL_COLOUR, arm_primitives, reach_of, table_primitive
 from .._ink import Ink
 from .._primitives import Label, Polyline, Primitive, Sphere
@@ -205,7 +206,8 @@ class View:
         self._stop.set()
         if self._thread is not None:
             self._thread.join(timeout=2.0)
-        self.server.stop()
+        with contextlib.redirect_stdout(io.StringIO()):  # viser's "Server stopped"
+            self.server.stop()
 
     def __enter__(self) -> View:
         return self
@@ -261,8 +263,9 @@ class View:
 
 
 def _serve(host: str, port: int) -> viser.ViserServer:
-    if not 0 <= port <= 65535:
-        raise InputError(f"port must be 0..65535, got {port}")
+    """viser's server on ``host``, ``port`` or the next free port above (checked first:
+    viser, given an address it cannot bind, tries port after port and never returns)."""
+    port = serve_address(host, port, exact=False).port
     try:
         with contextlib.redirect_stdout(io.StringIO()):  # viser's banner: we print our own URL
             return viser.ViserServer(host=host, port=port, verbose=False)
