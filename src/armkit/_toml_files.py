@@ -22,14 +22,16 @@ def resolve(
     *,
     kind: str,
     noun: str,
+    files: str = ".toml",
 ) -> Path:
     """The file ``name_or_path`` names: a path (ends in ``.toml`` or has a ``/``) that must
     exist, or the name of a file shipped in ``package``/``folder``; a bare shipped file
     name (``xylophone.toml``) not found here is the shipped file.
 
     Raises:
-        ``error(message)``: no such file ("no such {kind} file"), or an unknown name
-            ("unknown {noun} ...; shipped {noun}s are ...").
+        ``error(message)``: no such file ("no such {kind} file"), a directory ("is a
+            directory; give a {files} file"), or an unknown name ("unknown {noun} ...;
+            shipped {noun}s are ...").
     """
     text = str(name_or_path)
     if text.endswith(".toml") or "/" in text or "\\" in text:
@@ -38,8 +40,12 @@ def resolve(
             return path
         if path.name == text and path.stem in shipped(package, folder):
             return Path(str(resources.files(package) / folder / text))
+        if path.is_dir():
+            raise error(f"{path}: is a directory; give a {files} file")
         raise error(f"{path}: no such {kind} file")
     names = shipped(package, folder)
+    if text not in names and Path(text).is_dir():
+        raise error(f"{text}: is a directory; give a {files} file or a shipped {noun}'s name")
     if text not in names:
         raise error(
             f"unknown {noun} {text!r}; shipped {noun}s are {', '.join(names)} "

@@ -165,3 +165,56 @@ def test_an_arm_read_from_urdf_moves_in_the_simulator_and_is_checked_for_clearan
     assert main(["--arm", str(path), "grip", "20"]) == 2
     err = capsys.readouterr().err
     assert "has no gripper" in err and err.count("\n") == 1
+
+
+@pytest.mark.parametrize(
+    ("origin", "match"),
+    [
+        (
+            'xyz="0 0 nan"',
+            r"<joint name='j1'>: <origin> xyz=\"0 0 nan\" must be 3 finite numbers \[m\]",
+        ),
+        (
+            'xyz="0 0 1e9"',
+            r"<joint name='j1'>: <origin> xyz=\"0 0 1e9\" is 1e\+09 m .*URDF lengths are metres",
+        ),
+        ('xyz="0 0 765"', r"is 765 m from the parent joint; .*76.5 mm is 0.0765"),
+        (
+            'xyz="0 0 0.1" rpy="0 inf 0"',
+            r"<joint name='j1'>: <origin> rpy=\"0 inf 0\" must be 3 finite numbers \[rad\]",
+        ),
+    ],
+)
+def test_a_joint_origin_not_finite_or_absurd_is_refused_naming_file_and_joint(
+    tmp_path: Path, origin: str, match: str
+) -> None:
+    """The loader refuses it, not the kinematics later ('the links add up to nan m ... mm')."""
+    path = tmp_path / "r.urdf"
+    text = ROBOT.replace("JTYPE", "revolute").replace("LIMIT", LIMIT)
+    path.write_text(text.replace('<origin xyz="0 0 0.1"/>', f"<origin {origin}/>"))
+    with pytest.raises(ModelError, match=match) as e:
+        load_model(path)
+    assert str(e.value).startswith(f"{path}: ") and "in mm" not in str(e.value)
+
+
+def test_a_first_joint_of_an_unsupported_type_is_named(tmp_path: Path) -> None:
+    """Every moving joint prismatic: the first is named, not 'no revolute joint'."""
+    path = tmp_path / "r.urdf"
+    path.write_text(ROBOT.replace('"revolute"', '"prismatic"').replace("JTYPE", "prismatic").replace("LIMIT", LIMIT))  # fmt: skip
+    with pytest.raises(
+        ModelError,
+        match=r"<joint name='j1'>: type 'prismatic' is not supported; armkit arms have revolute",
+    ):
+        load_model(path)
+
+
+def test_a_directory_is_no_model_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "arm.urdf").mkdir()
+    with pytest.raises(ModelError, match=r"arm.urdf: is a directory; give a .urdf file"):
+        load_model(tmp_path / "arm.urdf")
+    with pytest.raises(ModelError, match=r": is a directory; give a .toml or .urdf file$"):
+        load_model(tmp_path)
+    assert main(["--arm", str(tmp_path), "show"]) == 2
+    assert capsys.readouterr().err == (
+        f"armkit: error: {tmp_path}: is a directory; give a .toml or .urdf file\n"
+    )

@@ -221,3 +221,8 @@ def test_a_shipped_file_name_not_found_here_is_the_shipped_scene(
     assert load_scene("xylophone.toml").name == "mine"
     with pytest.raises(SceneError, match="no such scene file"):
         load_scene("sub/xylophone.toml")
+
+
+def test_a_directory_is_no_scene_file(tmp_path: Path) -> None:
+    with pytest.raises(SceneError, match=r": is a directory; give a .toml file$"):
+        load_scene(tmp_path)

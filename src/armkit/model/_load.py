@@ -93,7 +93,10 @@ def load_model(name_or_path: str | Path) -> ArmModel:
 
 
 def _resolve(name_or_path: str | Path) -> Path:
-    return resolve(name_or_path, "armkit.model", "arms", ModelError, kind="model", noun="arm")
+    return resolve(
+        name_or_path, "armkit.model", "arms", ModelError, kind="model", noun="arm",
+        files=".toml or .urdf",
+    )  # fmt: skip
 
 
 def _build(data: dict[str, Any], path: Path) -> ArmModel:

@@ -25,6 +25,7 @@ from ._types import ArmModel, Joint, JointFrame
 
 F64 = NDArray[np.float64]
 MOVING = ("revolute", "continuous")
+MAX_ORIGIN = 100.0  # [m]: a joint origin farther from its parent is no arm (lengths in mm?)
 
 
 def is_urdf(name_or_path: str | Path) -> bool:
@@ -41,12 +42,15 @@ def load_urdf(name_or_path: str | Path) -> ArmModel:
     """
     text, _, tip = str(name_or_path).partition("#")
     path = Path(text).expanduser()
+    if path.is_dir():
+        raise ModelError(f"{path}: is a directory; give a .urdf file")
     if not path.is_file():
         raise ModelError(f"{path}: no such URDF file")
     try:
-        ET.parse(path)
+        tree = ET.parse(path)
     except ET.ParseError as exc:
         raise ModelError(f"{path}: not valid XML: {exc}") from None
+    _check_origins(path, tree.getroot())
     try:
         import yourdfpy
     except ImportError:
@@ -90,8 +94,40 @@ def _chain(path: Path, robot: Any, tip: str | None) -> tuple[list[Any], F64]:
             pending = np.eye(4)
         link = nxt.child
     if not joints:
+        other = [j for j in children.get(link, []) if j.type not in (*MOVING, "fixed")]
+        if other:
+            raise ModelError(
+                f"{path}: <joint name='{other[0].name}'>: type '{other[0].type}' is not "
+                f"supported; armkit arms have revolute (or continuous) joints and there is "
+                f"none from '{roots[0]}' to it"
+            )
         raise ModelError(f"{path}: <robot>: no revolute joint from '{roots[0]}' to the tip")
     return joints, pending
+
+
+def _check_origins(path: Path, root: ET.Element) -> None:
+    """Every ``<joint><origin>``: xyz finite and within ``MAX_ORIGIN`` [m], rpy finite [rad]
+    (a length in mm, or a NaN, refused here rather than as an arm kilometres long)."""
+    for joint in root.iter("joint"):
+        origin = joint.find("origin")
+        if origin is None:
+            continue
+        where = f"{path}: <joint name='{joint.get('name')}'>: <origin>"
+        for key in ("xyz", "rpy"):
+            text = origin.get(key, "0 0 0")
+            try:
+                values = [float(v) for v in text.split()]
+            except ValueError:
+                values = []
+            if len(values) != 3 or not all(math.isfinite(v) for v in values):
+                unit = "m" if key == "xyz" else "rad"
+                raise ModelError(f'{where} {key}="{text}" must be 3 finite numbers [{unit}]')
+            far = math.hypot(*values)
+            if key == "xyz" and far > MAX_ORIGIN:
+                raise ModelError(
+                    f'{where} xyz="{text}" is {far:.3g} m from the parent joint; URDF lengths '
+                    f"are metres and armkit takes up to {MAX_ORIGIN:g} m (76.5 mm is 0.0765)"
+                )
 
 
 def _next_joint(path: Path, out: list[Any], tip: str | None, children: dict[str, list[Any]]) -> Any:
