@@ -186,5 +186,7 @@ def _plan(
 
 def _to(args: argparse.Namespace) -> Any:
     if (args.to is None) == (args.xyz is None):
-        raise ArmkitError(f"'{args.command}' needs TO (a place, board[ROW,COL], cube or container) or --xyz X Y Z [mm], not both")  # fmt: skip
+        if args.to is not None:
+            raise ArmkitError(f"'{args.command}' takes TO {args.to} or --xyz X Y Z [mm], not both; drop one")  # fmt: skip
+        raise ArmkitError(f"'{args.command}' needs TO <where> (a place, board[ROW,COL], cube or container) or --xyz X Y Z [mm]")  # fmt: skip
     return args.to if args.to is not None else tuple(args.xyz)

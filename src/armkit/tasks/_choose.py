@@ -9,7 +9,7 @@ from collections.abc import Callable, Sequence
 import numpy as np
 
 from .._errors import InputError
-from ._grasping import SIDE, TOP, how, pick, place, side_shift
+from ._grasping import SIDE, TOP, check_uncovered, how, pick, place, side_shift
 from ._plan import TaskError
 from ._state import Context, State
 
@@ -55,6 +55,7 @@ def first_that_works(
 def pick_any(ctx: Context, st: State, name: str, pitch: float | None) -> State:
     """Pick cube ``name`` at the first pitch that works (a side grasp shifted up)."""
     cube = st.scene.cube(name)
+    check_uncovered(ctx, st, name)
 
     def at(p: float) -> Attempt:
         def attempt(s: State) -> State:
@@ -96,6 +97,7 @@ def rotate(ctx: Context, st: State, name: str, direction: str) -> State:
     if direction not in ("forward", "backward"):
         raise InputError(f"direction must be 'forward' or 'backward', got {direction!r}")
     cube = st.scene.cube(name)
+    check_uncovered(ctx, st, name)
     shift = side_shift(ctx, st, cube)
     first, second = (SIDE, TOP) if direction == "forward" else (TOP, SIDE)
     st = pick(ctx, st, name, first, shift)

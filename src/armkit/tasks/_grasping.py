@@ -52,6 +52,20 @@ def radial(st: State, point: F64) -> F64:
     return r / n if n > 1e-9 else np.array([1.0, 0.0, 0.0])
 
 
+def check_uncovered(ctx: Context, st: State, name: str) -> None:
+    """TaskError if another cube rests on cube ``name`` (it must be moved first)."""
+    for other in st.scene.cubes:
+        if other.name == name:
+            continue
+        foot = Rect(other.position[:2].copy(), (other.size / 2,) * 2, other.yaw)
+        under = support_under(st.scene.without_cube(other.name), foot, float(other.position[2]))
+        if under.on == name:
+            raise TaskError(
+                f"{ctx.task}: cannot pick {name}: it is under {other.name}; move {other.name} first",
+                step=f"pick {name}",
+            )
+
+
 def side_shift(ctx: Context, st: State, cube: Cube) -> float:
     """How far above its centre [m] a level gripper must hold ``cube`` so that its
     links (wrist and gripper radii) clear the surface round the cube: a board's
@@ -67,10 +81,15 @@ def side_shift(ctx: Context, st: State, cube: Cube) -> float:
     shift = level - float(cube.center[2])
     most = cube.size / 2 + ctx.model.gripper.finger_width * (0.5 - MIN_COVER)
     if shift > most + 1e-9:
+        held = cube.top_z - level + ctx.model.gripper.finger_width / 2
+        hold = (
+            f"its jaws would hold only the top {held * 1000:.1f} mm of {cube.name}"
+            if held > 0
+            else f"its jaws would pass above {cube.name}, whose top is at {cube.top_z * 1000:.1f} mm"
+        )
         raise TaskError(
             f"{ctx.task}: from the side, the gripper must stay {level * 1000:.1f} mm high to "
-            f"clear the {surface.on}: its jaws would hold only the top "
-            f"{(cube.top_z - level + ctx.model.gripper.finger_width / 2) * 1000:.1f} mm of {cube.name}",
+            f"clear the {surface.on}: {hold}",
             step=f"pick {cube.name} from the side",
         )
     return shift
