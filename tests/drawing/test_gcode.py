@@ -70,6 +70,10 @@ def test_dot_g28_and_program_end(tmp_path: Path) -> None:
         ("M300 S40", 1, 6, "S30"),
         ("G4", 1, 1, "G4 needs a pause"),
         ("G1 I3", 1, 4, "only for arcs"),
+        ("G1 X1e30", 1, 4, r"X1e30: G-code numbers have no exponent; write the value in plain"),
+        ("G1 Y-2.5E+3", 1, 4, r"Y-2.5E\+3: G-code numbers have no exponent"),
+        ("G1 X" + "9" * 400, 1, 4, r"X9+\.\.\. is out of range; .* at most 1000000$"),
+        ("G1 F2000000", 1, 4, r"F2000000 is out of range"),
     ],
 )
 def test_errors_name_file_line_and_column(

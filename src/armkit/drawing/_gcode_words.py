@@ -7,7 +7,6 @@ column.
 
 from __future__ import annotations
 
-import math
 import re
 from dataclasses import dataclass
 
@@ -15,6 +14,8 @@ from ._errors import DrawingError
 
 WORD = re.compile(r"([A-Za-z])[ \t]*([+-]?(?:\d+\.?\d*|\.\d+))")
 BLANK = re.compile(r"[ \t\r\f\v]*")
+EXPONENT = re.compile(r"[eE][+-]?\d+")  # right after a number: 1e30 (G-code has no exponents)
+MAX_VALUE = 1e6  # any word's value: mm, inches, seconds, a feed rate, a servo value
 
 
 @dataclass(frozen=True)
@@ -52,10 +53,23 @@ def words_of(text: str, line: int, file: str) -> list[Word]:
         m = WORD.match(text, pos)
         if not m:
             raise DrawingError(_bad(text, pos), file=file, line=line, column=pos + 1)
-        value = float(m.group(2))
-        if not math.isfinite(value):
+        exponent = EXPONENT.match(text, m.end())
+        if exponent:
             raise DrawingError(
-                f"number {m.group(2)!r} is not finite", file=file, line=line, column=pos + 1
+                f"{m.group()}{exponent.group()}: G-code numbers have no exponent; write the "
+                f"value in plain digits, at most {MAX_VALUE:.0f} (X1500, not X1.5e3)",
+                file=file,
+                line=line,
+                column=pos + 1,
+            )
+        value = float(m.group(2))
+        if not abs(value) <= MAX_VALUE:
+            word = m.group() if len(m.group()) <= 20 else f"{m.group()[:16]}..."
+            raise DrawingError(
+                f"{word} is out of range; a G-code value here is at most {MAX_VALUE:.0f}",
+                file=file,
+                line=line,
+                column=pos + 1,
             )
         if m.group(1).upper() != "N":
             words.append(Word(m.group(1).upper(), value, pos + 1, m.group()))

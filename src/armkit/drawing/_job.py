@@ -192,9 +192,15 @@ def _named(items: tuple[T, ...], name: str | None, kind: str, scene: str) -> T:
     names = ", ".join(i.name for i in items) or "none"
     if name is None and len(items) == 1:
         return items[0]
+    if not items:
+        what = "sheet of paper to draw on" if kind == "sheet" else f"{kind} to draw with"
+        raise DrawingError(
+            f"scene {scene} has no {what}; draw in a scene with a sheet and a pen, such as "
+            "the shipped one: --scene drawing"
+        )
     found = [i for i in items if i.name == name]
     if not found:
-        asked = f"no {kind} {name!r}" if name is not None else f"which {kind}?"
+        asked = f"no {kind} {name!r}" if name is not None else f"which {kind}? (--{kind} NAME)"
         raise DrawingError(f"{asked} in scene {scene}; its {kind}s: {names}")
     return found[0]
 
