@@ -265,7 +265,8 @@ class Arm:
 
     def _check_clear(self, path: F64) -> None:
         """Refuse a move from here through ``path`` (K, dof) [rad], sampled in joint
-        space, that puts a link below the table or into the scene's objects."""
+        space, that puts a link below the table, into the base column or into the scene's
+        objects."""
         hit = check_clear(self._kin, path, self.scene)
         where = "there"
         if hit is None:
@@ -273,7 +274,12 @@ class Arm:
             where = "on the way"
         if hit is not None:
             raise UnreachableError(
-                f"move refused: {where}, {hit.describe()}; choose a higher point or another way",
+                f"move refused: {where}, {hit.describe()}; "
+                + (
+                    "choose a point further from the base"
+                    if hit.object == "base column"
+                    else "choose a higher point or another way"
+                ),
                 reason="table" if hit.object == "table" else "collision",
             )
 

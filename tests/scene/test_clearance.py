@@ -11,7 +11,12 @@ import pytest
 from armkit import Arm, UnreachableError, fk_frames, ik, load_model
 from armkit.cli import main
 from armkit.scene import Held, arm_capsules, check_clear, joint_sweep, link_names, load_scene
-from armkit.scene._distance import box_box_gap, box_signed_distance, segment_box_distance
+from armkit.scene._distance import (
+    box_box_gap,
+    box_signed_distance,
+    segment_box_distance,
+    segment_segment_distance,
+)
 from armkit.scene._rotations import rot_axis
 
 ARMS = ["openmanipulator_x", "lynx6", "owi535", "al5d", "puma560"]
@@ -40,6 +45,25 @@ def test_segment_box_distance_against_sampling() -> None:
     t = np.linspace(0.0, 1.0, 4001)[:, None]
     brute = [box_signed_distance(a[i] + t * (b[i] - a[i]), half[i]).min() for i in range(300)]
     assert segment_box_distance(a, b, half) == pytest.approx(np.array(brute), abs=1e-4)
+
+
+def test_segment_segment_distance_against_sampling() -> None:
+    """Random segments, points (zero length), parallel and collinear pairs: the closed form
+    is never above the sampled minimum and within the sampling's resolution of it."""
+    rng = np.random.default_rng(5)
+    P = rng.uniform(-0.2, 0.2, (400, 4, 3))
+    P[:40, 1] = P[:40, 0]  # p a point
+    P[40:80, 3] = P[40:80, 2]  # q a point
+    P[80:100, 1], P[80:100, 3] = P[80:100, 0], P[80:100, 2]  # both points
+    P[100:160, 3] = P[100:160, 2] + 1.5 * (P[100:160, 1] - P[100:160, 0])  # parallel
+    P[160:200, 2:] = P[160:200, :2] + P[160:200, 1:2] - P[160:200, :1]  # collinear, touching
+    d = segment_segment_distance(P[:, 0], P[:, 1], P[:, 2], P[:, 3])
+    t = np.linspace(0.0, 1.0, 801)[:, None]
+    for i, (p0, p1, q0, q1) in enumerate(P):
+        a, b = p0 + t * (p1 - p0), q0 + t * (q1 - q0)
+        brute = np.linalg.norm(a[:, None] - b[None], axis=-1).min()
+        assert brute - 4e-4 <= d[i] <= brute + 1e-12, i
+    assert d[160:200] == pytest.approx(0.0, abs=1e-12)
 
 
 def test_box_gap_never_misses_an_overlap() -> None:
@@ -122,6 +146,47 @@ def test_every_arm_refuses_the_table_and_stays(
     assert len(err) == 1 and "move refused" in err[0] and "into the table" in err[0]
     assert main(["--arm", arm, "--port", str(state), "where"]) == 0
     assert capsys.readouterr().out == before
+
+
+@pytest.mark.parametrize("args", [["0", "0", "5"], ["20", "0", "30", "--pitch", "-90"]])
+def test_a_move_folding_into_the_base_is_refused_and_nothing_moves(
+    args: list[str], tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """'armkit move 0 0 5' with no scene put the OpenManipulator-X's gripper inside its base
+    column (the other arms' joint limits keep them out of it)."""
+    state = tmp_path / "state.json"
+    assert main(["--port", str(state), "where"]) == 0
+    before = capsys.readouterr().out
+    assert main(["--port", str(state), "move", *args]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "gripper would be" in err[0] and "into the base column" in err[0]
+    assert "further from the base" in err[0]
+    assert main(["--port", str(state), "where"]) == 0
+    assert capsys.readouterr().out == before
+
+
+def test_a_tool_point_inside_the_base_column_is_a_collision() -> None:
+    """Random OpenManipulator-X poses (inside the limits, every joint above the table) whose
+    tool point lies inside the base column collide with it (the other arms' limits keep
+    the tool point out of theirs)."""
+    name = "openmanipulator_x"
+    model = load_model(name)
+    q = np.random.default_rng(11).uniform(model.lower, model.upper, (20000, model.dof))
+    frames = fk_frames(model, q)
+    tip, top = frames[:, -1, :3, 3], frames[0, 1, 2, 3]
+    inside = (np.hypot(tip[:, 0], tip[:, 1]) < 0.015) & (tip[:, 2] > 0.03) & (tip[:, 2] < top)
+    inside &= frames[:, 1:, 2, 3].min(axis=1) > 0.03  # every link clear of the table
+    assert inside.sum() >= 3
+    for k in np.flatnonzero(inside):
+        hit = check_clear(model, q[k])
+        assert hit is not None and hit.object == "base column", (name, q[k], hit)
+
+
+def test_the_links_on_top_of_the_column_do_not_count_as_folding_into_it() -> None:
+    """At home and over a spread of ordinary poses no arm touches its own base column."""
+    for name in ARMS:
+        model = load_model(name)
+        assert check_clear(model, model.home) is None, name
 
 
 def test_arm_refuses_a_path_through_the_table_before_moving() -> None:

@@ -17,7 +17,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..model import ArmModel
 from ._capsules import Capsules, clearance_capsules, column_links, frame_origins, link_names
-from ._distance import box_box_gap, box_corners, segment_box_distance
+from ._distance import box_box_gap, box_corners, segment_box_distance, segment_segment_distance
 from ._objects import Cube
 from ._obstacles import Obstacles, obstacles
 from ._scene import Scene
@@ -70,7 +70,8 @@ def check_clear(
     """The first collision along joint angles ``q`` [rad], shape (dof,) or (N, dof), or None.
 
     Checks every link but the base column against the table (``scene.table_z``,
-    else ``model.table_z``), every link against the scene's boxes (the gripper
+    else ``model.table_z``), the links beyond the one on top of the base column against
+    the column (the arm folding into its own base), every link against the scene's boxes (the gripper
     not against the objects in ``ignore``: the one it is closing on), and the held
     object against the table and the boxes. ``margin`` [m]: clearance required.
     """
@@ -80,7 +81,8 @@ def check_clear(
     table_z = scene.table_z if scene is not None else model.table_z
     caps = _moved(clearance_capsules(model, origins, R_tool), T)
     names = link_names(model)
-    found = [_table(caps, table_z, margin, names, column_links(model))]
+    column = column_links(model)
+    found = [_table(caps, table_z, margin, names, column), _column(caps, column, margin, names)]
     if scene is not None:
         found.append(_boxes(caps, obstacles(scene), ignore, model.dof, margin, names))
     if held is not None:
@@ -106,7 +108,28 @@ def _table(
 ) -> Collision | None:
     low = np.minimum(caps.p0[..., 2], caps.p1[..., 2]) - caps.radii - table_z  # (N, K)
     low[:, caps.links < column] = np.inf  # the base column stands on the table
-    return _first(low, caps.links, names, margin)
+    return _first(low, caps.links, names, margin, "table")
+
+
+def _column(caps: Capsules, column: int, margin: float, names: tuple[str, ...]) -> Collision | None:
+    """The links beyond the first one with a length above the base column (its first
+    end stands on the column) against the column's capsules (links < ``column``)."""
+    length = np.linalg.norm(caps.p1[0] - caps.p0[0], axis=-1)  # rigid: as at every pose
+    moving = np.flatnonzero((caps.links >= column) & (length > 1e-9))
+    if moving.size == 0:
+        return None
+    arm = np.flatnonzero(caps.links > caps.links[moving[0]])
+    col = np.flatnonzero(caps.links < column)
+    ends = (
+        caps.p0[:, arm, None],
+        caps.p1[:, arm, None],
+        caps.p0[:, None, col],
+        caps.p1[:, None, col],
+    )
+    gap = segment_segment_distance(*ends) - caps.radii[arm, None] - caps.radii[None, col]
+    dist = np.full(caps.p0.shape[:2], np.inf)
+    dist[:, arm] = gap.min(axis=2)
+    return _first(dist, caps.links, names, margin, "base column")
 
 
 def _boxes(
@@ -170,14 +193,16 @@ def _held(
 
 
 def _first(
-    dist: F64, links: NDArray[np.intp], names: tuple[str, ...], margin: float
+    dist: F64, links: NDArray[np.intp], names: tuple[str, ...], margin: float, what: str
 ) -> Collision | None:
+    """The first pose where a capsule's clearance ``dist`` (N, K) [m] from ``what`` is
+    under ``margin``."""
     bad = dist < margin - TOUCH
     if not np.any(bad):
         return None
     step = int(np.flatnonzero(bad.any(axis=1))[0])
     k = int(np.argmin(dist[step]))
-    return Collision(step, names[links[k]], "table", float(dist[step, k]))
+    return Collision(step, names[links[k]], what, float(dist[step, k]))
 
 
 def _held_boxes(

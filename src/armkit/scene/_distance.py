@@ -79,3 +79,28 @@ def box_corners(c: F64, R: F64, h: F64) -> F64:
     local = signs[None, :, :] * h[:, None, :]
     out: F64 = c[:, None, :] + np.einsum("pij,pkj->pki", R, local)
     return out
+
+
+def segment_segment_distance(p0: F64, p1: F64, q0: F64, q1: F64) -> F64:
+    """Smallest distance [m] between segments p0-p1 and q0-q1, each end (..., 3), shape
+    (...): the closest points' parameters in closed form, clamped to the segments
+    (Ericson, Real-Time Collision Detection, 5.1.9); a segment may be a point."""
+    d1, d2, r = p1 - p0, q1 - q0, p0 - q0
+    a, e, b = _dot(d1, d1), _dot(d2, d2), _dot(d1, d2)
+    c, f = _dot(d1, r), _dot(d2, r)
+    line_a, line_e = a > 1e-18, e > 1e-18  # else that segment is a point
+    aa, ee = np.where(line_a, a, 1.0), np.where(line_e, e, 1.0)
+    den = a * e - b * b  # 0 for parallel segments: any s is nearest, take 0
+    crossing = den > 1e-12 * a * e
+    s = np.where(crossing, np.clip((b * f - c * e) / np.where(crossing, den, 1.0), 0, 1), 0)
+    t = (b * s + f) / ee  # q's parameter nearest p(s); outside q: clamp it, redo s
+    s = np.where(t < 0.0, np.clip(-c / aa, 0, 1), np.where(t > 1.0, np.clip((b - c) / aa, 0, 1), s))
+    s = np.where(line_a, np.where(line_e, s, np.clip(-c / aa, 0, 1)), 0.0)
+    t = np.clip((b * s + f) / ee, 0, 1) * line_e
+    out: F64 = np.linalg.norm(r + d1 * s[..., None] - d2 * t[..., None], axis=-1)
+    return out
+
+
+def _dot(u: F64, v: F64) -> F64:
+    out: F64 = np.einsum("...i,...i->...", u, v)
+    return out
