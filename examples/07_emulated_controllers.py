@@ -7,6 +7,7 @@ the SSC-32U's ``P0``/``PO``/inputs, the Maestro's Pololu protocol and its
 factory 992..2000 µs range, and the XM430's indirect address area and
 FAST_SYNC_READ (the way ROBOTIS's own software reads).
 
+Needs: the serial and dynamixel extras (pip install 'armkit[serial,dynamixel]'; ``make test`` has them).
 Run: .venv/bin/python examples/07_emulated_controllers.py
 """
 

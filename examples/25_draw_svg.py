@@ -1,6 +1,9 @@
 """Seed 001's third task on the simulated OpenManipulator-X: pick the pen up from
 its stand, draw an SVG on the A5 sheet of the shipped ``drawing`` scene, put the
-pen back, and measure what the simulated pen drew."""
+pen back, and measure what the simulated pen drew.
+
+Needs: the svg extra (pip install 'armkit[svg]'; ``make test`` has it).
+"""
 
 from pathlib import Path
 

@@ -6,7 +6,7 @@ Part 2: the simulated OWI-535 (timed motors, no sensors) keeps an estimate of
 its angles; ``uncertainty`` says why it may be wrong, a short turn is made in
 two timed legs, and a second user of the same unit is refused.
 
-Run: .venv/bin/python examples/06_mistakes_and_the_owi_estimate.py
+Run: .venv/bin/python examples/08_mistakes_and_the_owi_estimate.py
 """
 
 from __future__ import annotations

@@ -8,7 +8,8 @@ truth (``WorldSource``), so the red cube leaves its socket in the gripper. A
 target marker says whether a point is reachable, on a cube and clear.
 Pass --forever to keep the page open (Ctrl-C stops).
 
-Run: .venv/bin/python examples/06_live_view.py
+Needs: the web extra (pip install 'armkit[web]'; ``make test`` has it).
+Run: .venv/bin/python examples/09_live_view.py
 """
 
 from __future__ import annotations

@@ -6,7 +6,8 @@ within 0.1 mm, fitted inside a 10 mm margin, merged where strokes meet,
 simplified, and ordered (greedy nearest neighbour, then 2-opt and Or-opt).
 The pen starts at the middle of the sheet's near edge, where the arm is.
 
-Run: .venv/bin/python examples/06_plan_drawing.py   (writes plan_<name>.png here)
+Needs: the svg and plot extras (pip install 'armkit[svg,plot]'; ``make test`` has them).
+Run: .venv/bin/python examples/11_plan_drawing.py   (writes plan_<name>.png here)
 """
 
 from __future__ import annotations

@@ -5,10 +5,10 @@ z blue: the web view only); each scene is shown with the arm it
 was made for and a target marker (green: reachable, on a cube and clear; red:
 why not). With --chromium the pictures are the web view's own, rendered by
 headless Chromium (Debian's ``chromium``; this is how README's docs/*.png are
-made: ``.venv/bin/python examples/07_view_pictures.py --chromium docs``);
+made: ``.venv/bin/python examples/10_view_pictures.py --chromium docs``);
 without, they are drawn offscreen with Pillow (no browser, no target marker).
 
-Run: .venv/bin/python examples/07_view_pictures.py [--chromium] [FOLDER]
+Run: .venv/bin/python examples/10_view_pictures.py [--chromium] [FOLDER]
 """
 
 from __future__ import annotations

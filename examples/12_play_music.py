@@ -10,7 +10,8 @@ the arm is refused with every late note listed, and a slower tempo suggested.
 examples/26_play_xylophone.py plays on the simulated arm and writes the
 contacts it really made.)
 
-Run: .venv/bin/python examples/06_play_music.py
+Needs: the midi extra (pip install 'armkit[midi]'; ``make test`` has it).
+Run: .venv/bin/python examples/12_play_music.py
 """
 
 from __future__ import annotations
