@@ -1,4 +1,5 @@
-"""The terminal in cbreak mode, for commands that read single keys (OWI keys, the shell)."""
+"""The terminal: cbreak mode for commands that read single keys (OWI keys, the shell),
+and the words and numbers printed to it (``count(1, "step")``, ``fixed(-0.001)``)."""
 
 from __future__ import annotations
 
@@ -24,3 +25,13 @@ def cbreak(stdin: TextIO) -> Iterator[None]:
         yield
     finally:
         termios.tcsetattr(fd, termios.TCSADRAIN, saved)
+
+
+def count(n: int, noun: str, many: str | None = None) -> str:
+    """``"1 step"``, ``"3 steps"``, ``"0 steps"``; ``many`` where adding 's' is wrong."""
+    return f"{n} {noun if n == 1 else many or noun + 's'}"
+
+
+def fixed(value: float, digits: int = 2) -> str:
+    """``value`` with ``digits`` decimals, never ``-0.00`` (a tiny negative prints as 0)."""
+    return f"{round(float(value), digits) + 0.0:.{digits}f}"

@@ -12,6 +12,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
+from .._terminal import count
 from ..kinematics import fk, pitch_of
 from ..model import ArmModel
 from ..motion import (
@@ -139,11 +140,11 @@ def _draw(args: argparse.Namespace) -> int:
         t0 = arm.clock.now()
         path = arm.follow(points, args.pitch, streamer=streamer)
         took = arm.clock.now() - t0
-        print(f"drew {args.shape}: {len(points)} points in {took:.2f} s ({args.mode} mode)"
+        print(f"drew {args.shape}: {count(len(points), 'point')} in {took:.2f} s ({args.mode} mode)"
               f"{'' if args.pitch is not None else _pitches(arm.model, path.q)}")  # fmt: skip
         if args.record and arm.world is not None:
             rows = arm.world.recording().between(t0, arm.clock.now()).write_csv(args.record)
-            print(f"recorded {rows} samples (1 ms apart) to {args.record}")
+            print(f"recorded {count(rows, 'sample')} (1 ms apart) to {args.record}")
     return 0
 
 

@@ -10,6 +10,7 @@ from typing import Any
 import numpy as np
 
 from .._errors import InputError
+from .._terminal import count, fixed
 from ..kinematics import fk, ik, pitch_of
 from ..model import ArmModel, load_model
 from ._args import angle, check_output, coordinate
@@ -97,7 +98,8 @@ def run_fk(args: argparse.Namespace) -> int:
             )
         )
         return 0
-    print(f"position: x {pos[0]:.2f}  y {pos[1]:.2f}  z {pos[2]:.2f} mm   pitch {pitch:.2f} deg")
+    x, y, z = (fixed(v) for v in pos)
+    print(f"position: x {x}  y {y}  z {z} mm   pitch {fixed(pitch)} deg")
     if outside:
         print(
             f"note: outside the joint limits: {', '.join(outside)} (see 'armkit --arm {args.arm} show')"
@@ -126,10 +128,10 @@ def run_ik(args: argparse.Namespace) -> int:
     rows = [[k + 1, *d] for k, d in enumerate(degs)]
     print(table(["#", *(f"{n} deg" for n in m.joint_names)], rows))
     if not args.all and len(result.solutions) > 1:
-        print(f"({len(result.solutions)} solutions; --all shows every one)")
+        print(f"({count(len(result.solutions), 'solution')}; --all shows every one)")
     if result.method != "analytic":
         print(
-            f"({result.method}: {result.iterations} iterations, {result.restarts} restarts, "
+            f"({result.method}: {count(result.iterations, 'iteration')}, {count(result.restarts, 'restart')}, "
             f"off by {result.position_error * 1000:.4f} mm)"
         )
     return 0

@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
+from .._terminal import fixed
 from ..arm import MAX_MOVE_S, Arm
 from ..drivers.timed import TimedDriver
 from ._args import angle, coordinate, number
@@ -109,7 +110,7 @@ def _where(args: argparse.Namespace) -> int:
 def _print_where(arm: Arm, args: argparse.Namespace) -> None:
     x, y, z, pitch = (round(v, 1) + 0.0 for v in arm.position())  # + 0.0: no "-0.0"
     print(f"gripper at x {x:.1f} y {y:.1f} z {z:.1f} mm, pitch {pitch:.1f} deg")
-    angles = "  ".join(f"{n} {round(a, 2) + 0.0:.2f}" for n, a in arm.angles().items())
+    angles = "  ".join(f"{n} {fixed(a)}" for n, a in arm.angles().items())
     print(f"joints {angles} deg")
     reason = arm.driver.uncertainty if isinstance(arm.driver, TimedDriver) else None
     if reason:

@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from .._errors import ArmkitError
+from .._terminal import count
 from ._watch import add_watch_options, watched_arm
 
 EPILOG = (
@@ -110,8 +111,8 @@ def _say_plan(perf: Any) -> None:
     end = strikes[-1].time if strikes else 0.0
     hovers = [s.hover * 1000 for s in strikes]
     print(
-        f"{perf.source}: {len(strikes)} strikes in {end:.2f} s at tempo x{perf.tempo:g}, "
-        f"{len(perf.moves)} servo commands, hover {min(hovers, default=0):.0f}.."
+        f"{perf.source}: {count(len(strikes), 'strike')} in {end:.2f} s at tempo x{perf.tempo:g}, "
+        f"{count(len(perf.moves), 'servo command')}, hover {min(hovers, default=0):.0f}.."
         f"{max(hovers, default=0):.0f} mm; every note reachable in time"
     )
 
@@ -133,7 +134,7 @@ def _report(played: Any, outputs: dict[str, Path], music: Any) -> None:
         return
     longest = max(played.dwell, default=0.0) * 1000
     print(
-        f"heard {len(played.contacts)} contacts: onset error RMS {stats.rms * 1000:.2f} ms, "
+        f"heard {count(len(played.contacts), 'contact')}: onset error RMS {stats.rms * 1000:.2f} ms, "
         f"max {stats.max * 1000:.2f} ms, {len(stats.missed)} missed, {len(stats.extra)} "
         f"extra; longest on a bar {longest:.0f} ms"
     )

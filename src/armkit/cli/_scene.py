@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from .._errors import ArmkitError
+from .._terminal import count
 
 SCENE_HELP = (
     "scenes are TOML files in millimetres and degrees (see the README's 'Scenes and tasks'); "
@@ -76,7 +77,7 @@ def _list(args: argparse.Namespace) -> int:
     for name in shipped_scenes():
         scene = load_scene(name)
         print(
-            f"{name:12s} {len(scene.names())} objects: {', '.join(scene.names()) or 'empty table'}"
+            f"{name:12s} {count(len(scene.names()), 'object')}: {', '.join(scene.names()) or 'empty table'}"
         )
     return 0
 

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from .._errors import ArmkitError, InputError
 from .._files import config_dir
+from .._terminal import count
 from ._open_arm import open_arm
 from ._watch import add_watch_options
 
@@ -109,7 +110,7 @@ def _check(args: argparse.Namespace) -> int:
     plan = result.plan
     later = f" (+{plan.unknown} timed when run)" if plan.unknown else ""
     print(
-        f"{source.name}: ok for {result.model.name}: {len(plan.steps)} steps, {plan.total:.2f} s from home{later}"
+        f"{source.name}: ok for {result.model.name}: {count(len(plan.steps), 'step')}, {plan.total:.2f} s from home{later}"
     )
     return 0
 

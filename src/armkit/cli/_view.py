@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from .._errors import InputError
+from .._terminal import count
 from ._view_inputs import FOLLOW_RATE as FOLLOW_RATE
 from ._view_inputs import RATE as RATE
 from ._view_inputs import check_output as check_output

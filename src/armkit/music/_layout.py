@@ -15,6 +15,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import ArmkitError
+from .._terminal import count
 from ._score import Note, Score, note_name
 
 F64 = NDArray[np.float64]
@@ -148,7 +149,7 @@ def _range_error(
     if not hint:
         hint = "; choose a piece within the range or add the instruments to the scene"
     return RangeError(
-        f"{len(missing)} notes cannot be played ({listed}{more}): the layout has {have}{hint}",
+        f"{count(len(missing), 'note')} cannot be played ({listed}{more}): the layout has {have}{hint}",
         missing,
         shift,
     )

@@ -9,6 +9,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import ArmkitError
+from .._terminal import count
 from ..model import ArmModel
 from ._layout import Target
 from ._onsets import Contact
@@ -141,7 +142,7 @@ def check_performance(performance: Performance) -> None:
     slower = f"--tempo {tempo}" if tempo is not None else "--tempo below 1"
     raise PerformanceError(
         f"{len({id(p.note) for p in problems})} of "
-        f"{len(performance.strikes) + _unstruck(problems)} notes of "
+        f"{count(len(performance.strikes) + _unstruck(problems), 'note')} of "
         f"{performance.source or 'the piece'} cannot be played: {listed}; slow the piece "
         f"down ({slower}), lower the hover or move the instrument closer",
         problems,

@@ -8,6 +8,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._inputs import mm
+from .._terminal import count
 from ._instruments import Drum, Xylophone, note_name
 from ._objects import Board, Cube
 from ._scene import Scene
@@ -71,5 +72,5 @@ def _cube(scene: Scene, c: Cube) -> str:
 def _instrument(i: Xylophone | Drum) -> str:
     if isinstance(i, Xylophone):
         bars = ", ".join(f"{note_name(n)} {mm(i.bar_top(n))}" for n in i.notes)
-        return f"{i.name}: xylophone, {len(i.notes)} bars (note, top centre): {bars}"
+        return f"{i.name}: xylophone, {count(len(i.notes), 'bar')} (note, top centre): {bars}"
     return f"{i.name}: drum (note {i.note}), head r {i.radius * 1000:.1f} mm at {mm(i.head)}"

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
+from .._terminal import count, fixed
 from ._ast import Source
 
 F64 = NDArray[np.float64]
@@ -63,7 +64,7 @@ class Plan:
         if self.unknown:
             known += f" + {self.unknown} step{'s' if self.unknown > 1 else ''} timed only when run"
         rows.append(
-            f"{known} ({len(self.steps)} steps; joints {', '.join(self.joint_names)} in deg)"
+            f"{known} ({count(len(self.steps), 'step')}; joints {', '.join(self.joint_names)} in deg)"
         )
         return "\n".join(rows)
 
@@ -77,5 +78,5 @@ def _row(step: PlanStep, source: Source) -> str:
     if step.note:
         text = f"{text}  {step.note}"
     if step.q is not None:
-        text = f"{text:<44} -> " + " ".join(f"{math.degrees(a):7.2f}" for a in step.q)
+        text = f"{text:<44} -> " + " ".join(f"{fixed(math.degrees(a)):>7}" for a in step.q)
     return f"{step.line:>5} {start:>8} {took:>7}  {text}"

@@ -9,6 +9,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import UnreachableError
+from .._terminal import count
 from ..scene import Cube, Scene
 
 F64 = NDArray[np.float64]
@@ -71,8 +72,8 @@ class Plan:
     def lines(self) -> list[str]:
         """The plan as text: one line per step, then the cubes that move."""
         head = (
-            f"{self.task} ({self.arm}, scene {self.before.name}): {len(self.steps)} steps, "
-            f"{self.moves} moves, planned in {self.planning_time * 1000:.1f} ms"
+            f"{self.task} ({self.arm}, scene {self.before.name}): "
+            f"{count(len(self.steps), 'step')}, {count(self.moves, 'move')}, planned in {self.planning_time * 1000:.1f} ms"
         )
         out = [head]
         for k, step in enumerate(self.steps, 1):

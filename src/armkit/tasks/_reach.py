@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from .._errors import InputError
+from .._terminal import count
 from ..scene import Scene
 from ..sensing import DistanceSensor
 from ._live import live_scene
@@ -48,8 +49,8 @@ class ReachResult:
             return [f"sensor read through {self.via}", "no hand within 30 cm along the arc"]
         return [
             f"sensor read through {self.via}",
-            f"hand at {math.degrees(self.angle):.1f} deg; came {self.steps} steps nearer, "
-            f"to {self.distance * 1000:.0f} mm; shook {self.shakes} times",
+            f"hand at {math.degrees(self.angle):.1f} deg; came {count(self.steps, 'step')} nearer, "
+            f"to {self.distance * 1000:.0f} mm; shook {count(self.shakes, 'time')}",
         ]
 
 

@@ -14,6 +14,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
+from .._terminal import count
 from ..scene import Container, Cube, Scene
 from ._choose import pick_any
 from ._jobs import plan_task
@@ -57,7 +58,7 @@ class SearchResult:
 
     def lines(self) -> list[str]:
         """The result for people (mm, deg)."""
-        out = [f"sensor read through {self.via}; {len(self.readings)} readings"]
+        out = [f"sensor read through {self.via}; {count(len(self.readings), 'reading')}"]
         if not self.found or self.position is None or self.angle is None:
             return [*out, "nothing found within 30 cm along the arc"]
         x, y, z = (float(v) * 1000 for v in self.position)
