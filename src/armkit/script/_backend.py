@@ -10,6 +10,7 @@ from typing import Literal, Protocol
 
 from .._errors import ScriptError
 from ._ast import Loc, Statement
+from ._diagnostics import collapse
 from ._resolve import JointPose, Target
 
 
@@ -57,7 +58,7 @@ class ScriptRunError(ScriptError):
     """A statement failed while the script ran: names the line and the repeat iteration."""
 
     def __init__(self, source: str, loc: Loc, message: str, frames: tuple[Frame, ...]) -> None:
-        context = "; ".join(f.describe() for f in reversed(frames))
+        context = "; ".join(collapse([f.describe() for f in reversed(frames)]))
         text = f"{source}:{loc.line}:{loc.col}: {message}"
         super().__init__(text + (f" ({context})" if context else ""))
         self.loc, self.frames = loc, frames

@@ -14,6 +14,7 @@ from pathlib import Path
 
 from .._errors import ArmkitError
 from .._files import write_atomic
+from .._terminal import count
 from ..arm import Arm
 from ._ast import Header, Source
 from ._backend import ScriptRunError
@@ -204,20 +205,30 @@ class Session:
 
     def _write(self, name: str) -> Reply:
         path = (self.base_dir / name).expanduser()
+        if path.is_dir():
+            return Reply(f"error: cannot write {path}: it is a directory; give a file name in it, such as {path / 'taught.arm'}")  # fmt: skip
         if not path.parent.is_dir():
             return Reply(f"error: cannot write {path}: no folder {path.parent}")
         try:
             write_atomic(path, self.teaching.script(), durable=False)
         except OSError as exc:
-            return Reply(f"error: cannot write {path}: {exc.strerror}")
+            why = (exc.strerror or type(exc).__name__).lower()
+            return Reply(
+                f"error: cannot write {path}: the folder {path.parent} does not take new "
+                f"files ({why}); choose another folder"
+            )
         return Reply(
-            f"wrote {len(self.teaching.lines)} lines to {path}; replay with: armkit run {name}"
+            f"wrote {count(len(self.teaching.lines), 'line')} to {path}; "
+            f"replay with: armkit run {name}"
         )
 
     def _run_file(self, name: str) -> Reply:
-        path = self.base_dir / name
+        path = (self.base_dir / name).expanduser()
         try:
             text = path.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            return Reply(f"error: cannot run {path}: {_unreadable(exc)}")
+        try:
             run_source(self.arm, Source(str(path), text), scene=self.scene)
         except ScriptCheckError as exc:
             return Reply(exc.report())
@@ -226,6 +237,19 @@ class Session:
             return Reply(f"error: {exc}")
         self.teaching.lines += [f"# ran {name}; it ended here:", joints_line(pose_now(self.arm))]
         return Reply(f"ran {name}")
+
+
+def _unreadable(exc: OSError | UnicodeDecodeError) -> str:
+    """Why a script cannot be read, in words, and what to give instead."""
+    if isinstance(exc, IsADirectoryError):
+        return "it is a directory; give a script file (.arm) in it"
+    if isinstance(exc, FileNotFoundError):
+        return "no such file; give a script file (.arm)"
+    if isinstance(exc, PermissionError):
+        return "reading it is not allowed (permission denied)"
+    if isinstance(exc, UnicodeDecodeError):
+        return "it is not a text file (UTF-8); give a script file (.arm)"
+    return f"it cannot be read ({(exc.strerror or type(exc).__name__).lower()})"
 
 
 def _depth_change(line: str) -> int:
