@@ -12,6 +12,7 @@ from typing import Any
 
 from .._files import config_dir
 from ..arm import Arm
+from ..connect import check_sim_port
 from ..drivers.timed import TimedDriver
 from ..model import load_model
 from ._args import check_folder, check_output
@@ -27,6 +28,7 @@ def open_arm(args: argparse.Namespace) -> Iterator[Arm]:
     model = load_model(args.arm)
     check_folder(config_dir(), "the config directory")
     if args.driver == "sim" and args.port not in (None, "emu"):
+        check_sim_port(model, args.port)
         check_output(args.port, "--port (the simulated arm's state file)")
     world = watch_world(args)
     try:

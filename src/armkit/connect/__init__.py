@@ -22,6 +22,9 @@ file (``sim_state_file``), locked while in use.
 
 from __future__ import annotations
 
+import os
+import re
+import stat
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -69,6 +72,7 @@ def open_driver(
     from ._simulate import simulate
 
     if driver == "sim":
+        check_sim_port(model, port)
         return simulate(model, native_kind(model), world, kept_state_file(model, port, keep))
     if driver not in DRIVERS:
         raise InputError(f"unknown driver {driver!r}; drivers are sim, {', '.join(DRIVERS)}")
@@ -80,6 +84,35 @@ def open_driver(
             "drop world=, or use --port emu"
         )
     return open_hardware(model, driver, port)
+
+
+def check_sim_port(model: ArmModel, port: str | None) -> None:
+    """With ``driver="sim"`` a port names the simulated arm's state file; one that looks
+    like a serial device (``/dev/...``, ``COM3``, an existing device file) is refused,
+    so that a real port is neither silently ignored nor written over.
+
+    Raises:
+        InputError: naming the port and the drivers that would open it.
+    """
+    if port is None or port == "emu" or not _looks_like_a_device(port):
+        return
+    kind = native_kind(model)
+    drivers = kind if kind in DRIVERS else "one of " + ", ".join(DRIVERS)
+    raise InputError(
+        f"driver sim simulates the {model.name} and opens no port, but {port} looks like a "
+        f"device: for the real arm give its driver (--driver {drivers}), or leave the port "
+        "out (with sim, --port names a file to keep the simulated arm in)"
+    )
+
+
+def _looks_like_a_device(port: str) -> bool:
+    if port.startswith(("/dev/", "\\\\.\\")) or re.fullmatch(r"(?i)com\d+", port):
+        return True
+    try:
+        mode = os.stat(port).st_mode
+    except (OSError, ValueError):
+        return False
+    return stat.S_ISCHR(mode) or stat.S_ISBLK(mode)
 
 
 def driver_names() -> list[str]:
@@ -143,6 +176,7 @@ def simulated_bus(baudrate: int, retries: int = 3) -> DynamixelBus:
 __all__ = [
     "World",
     "auto_operator",
+    "check_sim_port",
     "driver_names",
     "native_kind",
     "open_driver",
