@@ -8,7 +8,7 @@ import os
 import sys
 import warnings
 from collections.abc import Sequence
-from typing import TextIO
+from typing import Any, TextIO
 
 from .._errors import ArmkitError, ArmkitWarning, InputError
 from ._parser import Parser
@@ -59,6 +59,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument(
         "--arm",
         default="openmanipulator_x",
+        action=Given,
         metavar="NAME|FILE",
         help="shipped arm name (see 'armkit arms') or a model .toml file "
         "(default: openmanipulator_x)",
@@ -86,6 +87,15 @@ def build_parser() -> argparse.ArgumentParser:
     for name in COMMAND_MODULES:
         importlib.import_module(name).add_commands(sub)
     return parser
+
+
+class Given(argparse.Action):
+    """Stores the option's value and notes that it was given, not defaulted: its dest
+    joins ``args.given`` (a command with its own default, as 'emulate', can tell)."""
+
+    def __call__(self, parser: Any, namespace: Any, values: Any, option: Any = None) -> None:
+        setattr(namespace, self.dest, values)
+        namespace.given = {*getattr(namespace, "given", ()), self.dest}
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -9,6 +9,7 @@ import threading
 from types import FrameType
 from typing import Any
 
+from .._errors import InputError
 from ..connect import emulate
 from ..model import load_model
 
@@ -22,9 +23,10 @@ dynamixel) or from any program:
   armkit emulate ssc32 --arm lynx6 &
   python -c "import serial; s = serial.Serial('/dev/pts/7', 9600); s.write(b'VER\\r')"
 
-The device runs in real time until Ctrl-C (or SIGTERM). Without --arm it is a lone
-controller: an SSC-32 at 9600 baud, a Maestro, or the OpenManipulator-X's five XM430
-servos (IDs 11..15) at 1,000,000 baud.
+The device runs in real time until Ctrl-C (or SIGTERM). The arm is --arm, given
+after 'emulate' or, as for every command, before it (armkit --arm lynx6 emulate ssc32);
+without it the device is a lone controller: an SSC-32 at 9600 baud, a Maestro, or the
+OpenManipulator-X's five XM430 servos (IDs 11..15) at 1,000,000 baud.
 """
 
 
@@ -44,14 +46,16 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         "--arm",
         dest="emulate_arm",
         metavar="NAME|FILE",
-        help="drive this arm's simulated servos (its channels, IDs, baud rate; default none)",
+        help="drive this arm's simulated servos (its channels, IDs, baud rate; default: the "
+        "global --arm if given, else none)",
     )
     p.set_defaults(func=run_emulate)
 
 
 def run_emulate(args: argparse.Namespace) -> int:
     """Serve until interrupted; the path goes to stdout, the rest to stderr."""
-    model = load_model(args.emulate_arm) if args.emulate_arm else None
+    arm = _arm(args)
+    model = load_model(arm) if arm else None
     emulator = emulate(args.kind, model)
     done = threading.Event()
     previous = signal.signal(signal.SIGTERM, lambda n, f: _stop(done, n, f))
@@ -69,6 +73,18 @@ def run_emulate(args: argparse.Namespace) -> int:
         signal.signal(signal.SIGTERM, previous)
         emulator.close()
     return 0
+
+
+def _arm(args: argparse.Namespace) -> str | None:
+    """The arm to drive: --arm after 'emulate', or the global --arm if it was given (not
+    its default); both and different: InputError."""
+    own = args.emulate_arm
+    before = args.arm if "arm" in getattr(args, "given", ()) else None
+    if own and before and own != before:
+        raise InputError(
+            f"two arms: --arm {before} before 'emulate' and --arm {own} after it; give one"
+        )
+    return own or before
 
 
 def _stop(done: threading.Event, signum: int, frame: FrameType | None) -> None:
