@@ -49,6 +49,9 @@ CALLS = [
     lambda: ik(OMX, (0.2, 0.0, 0.1), method="magic"),
     lambda: ik(OMX, (0.2, 0.0, 0.1), orientation=np.eye(3) * 2, method="lm"),
     lambda: ik(OMX, (0.2, 0.0, 0.1), method="lm", tol_m=-1.0),
+    lambda: ik(OMX, (0.2, 0.0, 0.1), tol_m=-1.0),  # the closed form took it unchecked
+    lambda: ik(OMX, (0.2, 0.0, 0.1), 0.0, tol_rad=np.nan),
+    lambda: ik_batch(OMX, np.zeros((3, 3)) + 0.2, tol_m="fine"),
     lambda: ik(OMX, Target((0.2, 0.0, 0.1), 0.1), 0.2),
     lambda: ik(OMX, np.array([0.2, np.nan, 0.1])),
     lambda: ik_batch(OMX, np.zeros((3, 2))),

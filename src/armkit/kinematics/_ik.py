@@ -25,6 +25,7 @@ MethodName = Literal["auto", "analytic", "lm", "ccd", "jacobian", "random"]
 METHOD_NAMES: tuple[MethodName, ...] = ("auto", "analytic", "lm", "ccd", "jacobian", "random")
 TOL_M = 1e-5  # [m] = 0.01 mm
 TOL_RAD = math.radians(0.01)
+TOLS = (TOL_M, TOL_RAD)
 
 
 def ik(
@@ -75,6 +76,9 @@ def ik(
     if pitch is not None and not (type(pitch) is float and pitch - pitch == 0.0):
         pitch = angle(pitch, "pitch")  # else: None or a finite float already
     seed = chain.home if q_seed is None else _seed(chain, q_seed)
+    tols = TOLS
+    if tol_m is not TOL_M or tol_rad is not TOL_RAD:  # checked as given, closed form or not
+        tols = (tolerance(tol_m, "tol_m"), tolerance(tol_rad, "tol_rad"))
     solve = chain.fixed
     if solve is not None and orientation is None and (method == "auto" or method == "analytic"):
         if pitch is None:
@@ -90,7 +94,7 @@ def ik(
             assert chain.family is not None
             raise refusal(chain, chain.family, p, pitch, seed)
         return IKResult.of(found, (p, pitch, None), chain)
-    return _numeric_ik(chain, p, pitch, seed, orientation, method, (tol_m, tol_rad))
+    return _numeric_ik(chain, p, pitch, seed, orientation, method, tols)
 
 
 def _seed(chain: Chain, q_seed: ArrayLike) -> tuple[float, ...]:
@@ -117,8 +121,7 @@ def _numeric_ik(
     if R is not None and pitch is not None:
         raise InputError("give pitch or orientation, not both")
     goal = (p, pitch, None if R is None else tuple(R.ravel().tolist()))
-    tol = (tolerance(tols[0], "tol_m"), tolerance(tols[1], "tol_rad"))
-    return solve_one(use, chain, goal, list(seed), *tol)
+    return solve_one(use, chain, goal, list(seed), *tols)
 
 
 def why_no_closed_form(model: ArmModel) -> str:
@@ -175,6 +178,7 @@ def ik_batch(
     if isinstance(positions, Target):
         positions, pitches, orientations = _unpack(positions, pitches, orientations)
     P = array(positions, "positions", ((None, 3),), "m")  # type: ignore[arg-type]
+    tol = (tolerance(tol_m, "tol_m"), tolerance(tol_rad, "tol_rad"))
     n = len(P)
     with np.errstate(over="ignore"):
         far = ~(np.einsum("ni,ni->n", P, P) <= chain.reach2)  # overflow counts as far
@@ -199,7 +203,6 @@ def ik_batch(
     R = None if orientations is None else rotation(orientations, "orientations", n)
     if R is not None and pitch is not None:
         raise InputError("give pitches or orientations, not both")
-    tol = (tolerance(tol_m, "tol_m"), tolerance(tol_rad, "tol_rad"))
     if n == 0:
         return IKBatchResult(np.zeros((0, chain.dof)), np.zeros(0, bool), np.zeros(0, "<U14"), "lm")
     return solve_many(chain, P, pitch, R, seed, *tol)
