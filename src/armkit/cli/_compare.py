@@ -7,11 +7,13 @@ import math
 from typing import Any
 
 from .._errors import ArmkitError
+from .._progress import Progress
 from ..model import load_model
 from ._args import check_output, integer
 from ._compare_methods import (
     TASKS,
     MethodScore,
+    applicable_methods,
     compare_methods,
     default_task,
     reachable_targets,
@@ -68,11 +70,20 @@ def run_compare(args: argparse.Namespace) -> int:
         check_output(args.plot, "--plot", image=True)
     task = args.task or default_task(model)
     targets = reachable_targets(model, args.n, args.seed, task)
-    scores = compare_methods(model, targets, repeats=args.repeats)
     print(
         f"{model.name}: {args.n} reachable targets, task {task}, seed {args.seed}, from home, "
-        f"fastest of {args.repeats}"
+        f"fastest of {args.repeats}",
+        flush=True,
     )
+    methods = applicable_methods(model, task)
+    with Progress("compare-ik", args.n * len(methods), "calls") as bar:
+        done = {m: 0 for m in methods}
+
+        def progress(method: str, n: int) -> None:
+            done[method] = n
+            bar.update(sum(done.values()), f"method {method}")
+
+        scores = compare_methods(model, targets, methods, args.repeats, progress)
     print(score_table(scores))
     if args.plot:
         plot_scores(scores, args.plot, f"{model.name}, {args.n} targets, {task}")

@@ -27,6 +27,7 @@ TASKS = ("position", "position+pitch", "pose")
 METHODS = ("analytic", "lm", "lm-batch", "ccd", "jacobian", "random")
 VERIFY_POS = 1e-3  # [m]
 VERIFY_ANG = math.radians(0.1)  # [rad]
+Progress = Callable[[str, int], None]  # (the method under way, targets done by it)
 
 
 @dataclass(frozen=True)
@@ -79,23 +80,36 @@ def applicable_methods(model: ArmModel, task: str) -> tuple[str, ...]:
 
 
 def compare_methods(
-    model: ArmModel, targets: Targets, methods: Sequence[str] | None = None, repeats: int = 1
+    model: ArmModel,
+    targets: Targets,
+    methods: Sequence[str] | None = None,
+    repeats: int = 1,
+    progress: Progress | None = None,
 ) -> list[MethodScore]:
     """Score each method (default: every applicable one) on the same targets; each
     call (or batch) runs ``repeats`` times and the fastest time counts (a busy machine
-    only ever adds time)."""
+    only ever adds time). ``progress(method, done)`` is told, outside the timed calls,
+    how many targets the method under way has done."""
     if repeats < 1:
         raise InputError(f"repeats must be at least 1, got {repeats}")
     methods = applicable_methods(model, targets.task) if methods is None else methods
     for m in methods:
         if m not in METHODS:
             raise InputError(f"method must be one of {', '.join(METHODS)}, got {m!r}")
-    return [
-        _score_batch(model, targets, repeats)
-        if m == "lm-batch"
-        else _score_calls(model, targets, m, repeats)
-        for m in methods
-    ]
+    report = progress or _quiet
+    scores = []
+    for m in methods:
+        report(m, 0)
+        if m == "lm-batch":
+            scores.append(_score_batch(model, targets, repeats))
+        else:
+            scores.append(_score_calls(model, targets, m, repeats, report))
+        report(m, len(targets.q))
+    return scores
+
+
+def _quiet(method: str, done: int) -> None:
+    """No progress shown."""
 
 
 def verified(model: ArmModel, targets: Targets, q: F64) -> NDArray[np.bool_]:
@@ -130,8 +144,11 @@ def _one_call(model: ArmModel, targets: Targets, method: str) -> Callable[[int],
     return call
 
 
-def _score_calls(model: ArmModel, targets: Targets, method: str, repeats: int) -> MethodScore:
-    """Time (fastest of ``repeats``) and verify one call per target."""
+def _score_calls(
+    model: ArmModel, targets: Targets, method: str, repeats: int, progress: Progress
+) -> MethodScore:
+    """Time (fastest of ``repeats``) and verify one call per target (``progress`` after
+    each)."""
     n = len(targets.q)
     call = _one_call(model, targets, method)
     q = np.full((n, model.dof), np.nan)
@@ -146,6 +163,7 @@ def _score_calls(model: ArmModel, targets: Targets, method: str, repeats: int) -
             seconds[i] = min(seconds[i], time.perf_counter() - start)
         if result is not None:
             q[i], iterations[i] = result.q, result.iterations  # type: ignore[attr-defined]
+        progress(method, i + 1)
     return _row(model, targets, method, q, seconds, iterations)
 
 

@@ -12,6 +12,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError
+from .._progress import Progress
 from ._args import number
 from ._watch import add_watch_options, watched_arm
 
@@ -101,14 +102,44 @@ def _run(args: argparse.Namespace) -> int:
         tolerance=args.tolerance / 1e3, margin=args.margin / 1e3, pen_up=args.pen_up / 1e3,
         pitch=math.radians(args.pitch), speed=args.speed / 1e3, held=args.held,
     )  # fmt: skip
-    with watched_arm(args, scene) as arm:
+    report = _Report(args.dry_run)
+    with watched_arm(args, scene) as arm, report:
         job = draw(
             arm, scene, path, args.sheet, args.pen, options=opts,
             preview=args.preview, result=args.result, dry_run=args.dry_run,
+            progress=report,
         )  # fmt: skip
-    for line in job.lines():
+    for line in job.lines()[report.printed :]:
         print(line)
     for what, out in (("preview", args.preview), ("result", args.result)):
         if out is not None and (what == "preview" or job.trace is not None):
             print(f"{what}: {out}")
     return 0
+
+
+class _Report:
+    """The plan's lines as soon as it is planned (before anything moves), then the
+    strokes drawn so far on stderr (``armkit._progress``)."""
+
+    def __init__(self, dry_run: bool) -> None:
+        self.dry_run = dry_run
+        self.printed = 0  # lines of ``job.lines()`` printed
+        self.bar: Progress | None = None
+
+    def __call__(self, job: Any, strokes: int) -> None:
+        if self.printed == 0:
+            lines = job.lines()
+            print("\n".join(lines), flush=True)
+            self.printed = len(lines)
+        if self.bar is None and not self.dry_run:
+            total = sum(1 for s in job.segments if getattr(s, "draws", False))
+            self.bar = Progress(f"drawing {Path(job.plan.source).name}", total, "strokes")
+        if self.bar is not None:
+            self.bar.update(strokes)
+
+    def __enter__(self) -> _Report:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        if self.bar is not None:
+            self.bar.close()

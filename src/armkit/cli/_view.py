@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from .._errors import InputError
+from .._progress import Progress
 from .._terminal import count
 from ._view_inputs import FOLLOW_RATE as FOLLOW_RATE
 from ._view_inputs import RATE as RATE
@@ -218,7 +219,10 @@ def _finish(
         check = view.set_target(target[0], target[1]) if args.follow else view.target
         print(f"armkit view: {describe(check)}")
     if outputs:
-        path = web.render_png(view, outputs[0], *args.size)
+        with Progress("screenshot", len(web.RENDER_STEPS), "steps") as bar:
+            path = web.render_png(
+                view, outputs[0], *args.size, progress=lambda k, step: bar.update(k, step)
+            )
         print(f"armkit view: wrote {path}")
         return 0
     return _serve(view, stop, poses)

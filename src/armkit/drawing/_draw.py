@@ -4,6 +4,7 @@ and the CLI: ``draw(arm, scene, file, sheet=None, pen=None, ...)``."""
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Protocol
@@ -27,6 +28,7 @@ if TYPE_CHECKING:
     from ..arm import Arm
 
 START_TOLERANCE = math.radians(0.5)  # the arm must be where the job was planned
+DrawProgress = Callable[["DrawJob", int], None]  # (the job, strokes drawn so far)
 
 
 class SimArm(Protocol):
@@ -50,12 +52,15 @@ def draw(
     preview: str | Path | None = None,
     result: str | Path | None = None,
     dry_run: bool = False,
+    progress: DrawProgress | None = None,
 ) -> DrawJob:
     """Draw the SVG or G-code ``file`` on ``sheet`` with ``pen`` (None: the scene's only one).
 
     Planned whole first (see ``DrawOptions``); ``preview`` [.png/.svg/.pdf] draws the
     plan before moving; ``dry_run`` stops there. On a simulated arm the pen's trace
     is measured (``DrawJob.metrics``) and ``result`` pictures what it drew.
+    ``progress(job, n)`` is called once planned (n = 0, before anything moves) and
+    after each move (n: the strokes drawn so far).
 
     Raises:
         DrawingError: a bad file (naming line and column), sheet, pen or picture path.
@@ -69,18 +74,21 @@ def draw(
             file=str(result),
         )
     job = plan_draw(arm, scene, file, sheet, pen, options=options, fit=fit)
+    if progress is not None:
+        progress(job, 0)
     if preview is not None:
         draw_preview(job.plan, preview)
     if dry_run:
         return job
-    job = run_job(arm, job)
+    job = run_job(arm, job, progress)
     if result is not None and job.trace is not None:
         draw_result(job.plan, job.trace, job.sheet, result)
     return job
 
 
-def run_job(arm: Arm, job: DrawJob) -> DrawJob:
-    """Carry ``job`` out on ``arm``; on a simulator, with its trace and metrics."""
+def run_job(arm: Arm, job: DrawJob, progress: DrawProgress | None = None) -> DrawJob:
+    """Carry ``job`` out on ``arm``; on a simulator, with its trace and metrics;
+    ``progress(job, n)`` after each move (n: the strokes drawn so far)."""
     off = float(np.max(np.abs(arm.driver.read() - job.q_start)))
     if off > START_TOLERANCE:
         raise ArmkitError(
@@ -91,7 +99,7 @@ def run_job(arm: Arm, job: DrawJob) -> DrawJob:
     tracer.holding = job.options.held
     detach = world.attach(tracer) if world is not None else None
     try:
-        _moves(arm, job, tracer, sim)
+        _moves(arm, job, tracer, sim, progress)
     finally:
         if detach is not None:
             detach()
@@ -101,8 +109,11 @@ def run_job(arm: Arm, job: DrawJob) -> DrawJob:
     return replace(job, trace=trace, metrics=measure(job.plan, trace, job.sheet))
 
 
-def _moves(arm: Arm, job: DrawJob, tracer: PenTracer, sim: SimArm | None) -> None:
+def _moves(
+    arm: Arm, job: DrawJob, tracer: PenTracer, sim: SimArm | None, progress: DrawProgress | None
+) -> None:
     streamer = TimedStreaming(speed=job.options.speed)
+    strokes = 0
     for seg in job.segments:
         if isinstance(seg, JointMove):
             arm.driver.move(seg.q, wait=True)
@@ -114,6 +125,9 @@ def _moves(arm: Arm, job: DrawJob, tracer: PenTracer, sim: SimArm | None) -> Non
             tracer.holding = seg.holds
         else:
             follow(arm.driver, job.tip, seg.path, streamer, arm.clock)
+            strokes += seg.draws
+        if progress is not None:
+            progress(job, strokes)
 
 
 def _sim_arm(arm: Arm) -> SimArm | None:

@@ -6,6 +6,7 @@ Importing this package imports viser: ``armkit`` itself never does, the
 
 from ._chromium import Chromium as Chromium
 from ._chromium import find_chromium as find_chromium
+from ._picture import RENDER_STEPS as RENDER_STEPS
 from ._picture import render_png as render_png
 from ._render import Renderer as Renderer
 from ._teach import TaughtPose as TaughtPose

@@ -7,6 +7,7 @@ so the picture is exactly what a person sees, without the control panel.
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -18,6 +19,7 @@ from ._view import View
 
 READY = "document.querySelector('canvas') !== null"
 SETTLE = 0.5  # [s] for the page to receive and draw the scene before the picture
+RENDER_STEPS = ("starting the browser", "opening the page", "waiting for the scene", "rendering")
 
 
 def connected_client(view: View, count: int = 1, timeout: float = 20.0) -> Any:
@@ -37,17 +39,33 @@ def wait_for_camera(view: View, client: Any, timeout: float = 20.0) -> None:
     )
 
 
-def render_png(view: View, path: Path, width: int = 1024, height: int = 768) -> Path:
+def render_png(
+    view: View,
+    path: Path,
+    width: int = 1024,
+    height: int = 768,
+    progress: Callable[[int, str], None] | None = None,
+) -> Path:
     """Open ``view`` in headless Chromium of ``width`` x ``height`` [px] and write its
-    3D canvas to the PNG file ``path`` (on white). Returns the path."""
+    3D canvas to the PNG file ``path`` (on white). Returns the path. ``progress(k, step)``
+    is told as each of the ``RENDER_STEPS`` starts (k = 0, 1, ...) and when all are done
+    (k = len(RENDER_STEPS), step "done")."""
     import imageio.v3 as iio
 
+    def step(k: int) -> None:
+        if progress is not None:
+            progress(k, RENDER_STEPS[k] if k < len(RENDER_STEPS) else "done")
+
+    step(0)
     with Chromium(width, height) as browser:
+        step(1)
         browser.open(view.url, READY)
+        step(2)
         client = connected_client(view)
         wait_for_camera(view, client)
         client.flush()
         time.sleep(SETTLE)
+        step(3)
         try:
             rgba = client.get_render(height, width, transport_format="png", timeout=30.0)
         except TimeoutError:
@@ -55,4 +73,5 @@ def render_png(view: View, path: Path, width: int = 1024, height: int = 768) -> 
     alpha = rgba[..., 3:4].astype(np.float64) / 255.0
     rgb = rgba[..., :3].astype(np.float64) * alpha + 255.0 * (1.0 - alpha)
     iio.imwrite(path, np.round(rgb).astype(np.uint8))
+    step(len(RENDER_STEPS))
     return path
