@@ -25,6 +25,8 @@ from ._scene import Scene
 F64 = NDArray[np.float64]
 TOUCH = 0.2e-3  # [m]: surfaces this far into each other still only touch
 SWEEP_STEP = 0.0175  # [rad] (1 deg): joint-space sampling of a move for the check
+INTO_COLUMN = 2e-3  # [m]: how far a link's capsule may reach into the base column's (both
+# are rough envelopes of the real parts)
 
 
 @dataclass(frozen=True)
@@ -82,7 +84,7 @@ def check_clear(
     caps = _moved(clearance_capsules(model, origins, R_tool), T)
     names = link_names(model)
     column = column_links(model)
-    found = [_table(caps, table_z, margin, names, column), _column(caps, column, margin, names)]
+    found = [_table(caps, table_z, margin, names, column), _column(caps, column, names)]
     if scene is not None:
         found.append(_boxes(caps, obstacles(scene), ignore, model.dof, margin, names))
     if held is not None:
@@ -108,28 +110,35 @@ def _table(
 ) -> Collision | None:
     low = np.minimum(caps.p0[..., 2], caps.p1[..., 2]) - caps.radii - table_z  # (N, K)
     low[:, caps.links < column] = np.inf  # the base column stands on the table
-    return _first(low, caps.links, names, margin, "table")
+    return _first(low, caps.links, names, margin - TOUCH, "table")
 
 
-def _column(caps: Capsules, column: int, margin: float, names: tuple[str, ...]) -> Collision | None:
+def _column(caps: Capsules, column: int, names: tuple[str, ...]) -> Collision | None:
     """The links beyond the first one with a length above the base column (its first
-    end stands on the column) against the column's capsules (links < ``column``)."""
+    end stands on the column) against the column's capsules (links < ``column``, their tops
+    lowered by their radius: ``_shorter``): into them by more than ``INTO_COLUMN``."""
     length = np.linalg.norm(caps.p1[0] - caps.p0[0], axis=-1)  # rigid: as at every pose
     moving = np.flatnonzero((caps.links >= column) & (length > 1e-9))
     if moving.size == 0:
         return None
     arm = np.flatnonzero(caps.links > caps.links[moving[0]])
     col = np.flatnonzero(caps.links < column)
-    ends = (
-        caps.p0[:, arm, None],
-        caps.p1[:, arm, None],
-        caps.p0[:, None, col],
-        caps.p1[:, None, col],
+    top = caps.p0[:, col] + (caps.p1[:, col] - caps.p0[:, col]) * _shorter(
+        length[col], caps.radii[col]
     )
+    ends = caps.p0[:, arm, None], caps.p1[:, arm, None], caps.p0[:, None, col], top[:, None]
     gap = segment_segment_distance(*ends) - caps.radii[arm, None] - caps.radii[None, col]
     dist = np.full(caps.p0.shape[:2], np.inf)
     dist[:, arm] = gap.min(axis=2)
-    return _first(dist, caps.links, names, margin, "base column")
+    return _first(dist, caps.links, names, -INTO_COLUMN, "base column")
+
+
+def _shorter(length: F64, radius: F64) -> F64:
+    """The share (K, 1) of each column capsule's segment kept so that its rounded top
+    ends at the segment's end, not a radius above it (the shoulder sits there, and a
+    folded forearm may pass over it)."""
+    keep = np.clip(1.0 - radius / np.where(length > 0.0, length, 1.0), 0.0, 1.0)
+    return np.asarray(keep[:, None], dtype=np.float64)
 
 
 def _boxes(
@@ -193,11 +202,11 @@ def _held(
 
 
 def _first(
-    dist: F64, links: NDArray[np.intp], names: tuple[str, ...], margin: float, what: str
+    dist: F64, links: NDArray[np.intp], names: tuple[str, ...], least: float, what: str
 ) -> Collision | None:
     """The first pose where a capsule's clearance ``dist`` (N, K) [m] from ``what`` is
-    under ``margin``."""
-    bad = dist < margin - TOUCH
+    under ``least`` [m]."""
+    bad = dist < least
     if not np.any(bad):
         return None
     step = int(np.flatnonzero(bad.any(axis=1))[0])
