@@ -16,8 +16,9 @@ EPILOG = (
     "Needs --scene FILE|NAME before the command (see 'armkit scene list'). The whole task "
     "is planned first (every point solved, every move checked against the table and the "
     "scene); a step that cannot be done is named and nothing moves. Positions in mm, "
-    "angles in degrees. TO is a place, board[ROW,COL], a cube to stack on or a container."
+    "angles in degrees."
 )
+TO_HELP = " TO is a place, board[ROW,COL], a cube to stack on or a container."
 
 
 SEARCH_EPILOG = (
@@ -64,11 +65,12 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 def _search_command(sub: argparse._SubParsersAction[Any]) -> None:
     text = "002: scan with the distance sensor, pick up what it finds, drop it in a container"
+    angles = " Scan angles are the base servo's, as in 002: 90 deg is straight ahead."
     p: argparse.ArgumentParser = sub.add_parser(
-        "search", help=text, description=text + ".", epilog=SEARCH_EPILOG
+        "search", help=text, description=text + "." + angles, epilog=SEARCH_EPILOG
     )
     for flag, default, what in (("--from", 30.0, "first"), ("--to", 120.0, "last"), ("--step", 5.0, "coarse step of the")):  # fmt: skip
-        p.add_argument(flag, dest=flag[2:], type=float, default=default, metavar="DEG", help=f"{what} scan angle [deg] (002's base servo: 90 straight ahead; default {default:g})")  # fmt: skip
+        p.add_argument(flag, dest=flag[2:], type=float, default=default, metavar="DEG", help=f"{what} scan angle [deg] (default {default:g})")  # fmt: skip
     p.add_argument("--into", metavar="NAME", help="the container to drop it in (default: the scene's only one)")  # fmt: skip
     p.add_argument("--adc-port", metavar="PORT", help="the serial ADC board the sensor is wired to (arms without an SSC-32, real hardware)")  # fmt: skip
     p.add_argument("--channel", type=int, default=0, choices=range(4), help="the sensor's analog input, 0..3 (SSC-32 VA..VD; default 0)")  # fmt: skip
@@ -139,6 +141,7 @@ def _pitch(p: argparse.ArgumentParser) -> None:
 
 
 def _target(p: argparse.ArgumentParser) -> None:
+    p.epilog = (p.epilog or "") + TO_HELP
     p.add_argument(
         "to", nargs="?", metavar="TO", help="a place, board[ROW,COL], a cube or a container"
     )
