@@ -59,6 +59,9 @@ def test_ik_json_round_trips_through_fk(capsys: pytest.CaptureFixture[str]) -> N
         (["ik", "200", "0", "nan"], "argument Z: must be -100000..100000 mm, got nan"),
         (["--arm", "planar2", "ik", "500", "100", "500"], "outside the arm's plane"),
         (["ik", "200", "0", "50", "--method", "newton"], "invalid choice: 'newton'"),
+        (["mvoe", "200", "0", "50"], "invalid choice: 'mvoe'; did you mean 'move'?"),
+        (["draw", "circel"], "invalid choice: 'circel'; did you mean 'circle'?"),
+        (["xyzzy"], "invalid choice: 'xyzzy' (choose from 'arms', 'show',"),
         (["--arm", "puma560", "ik", "400", "100", "300", "--method", "analytic"], "use a numeric"),
         (
             ["--arm", "al5d", "ik", "900", "0", "0", "--method", "lm"],
@@ -118,3 +121,10 @@ def test_console_script_exists() -> None:
     exe = Path(sys.executable).parent / "armkit"
     out = subprocess.run([str(exe), "--help"], capture_output=True, text=True, check=True)
     assert "millimetres" in out.stdout and "degrees" in out.stdout
+
+
+def test_version(capsys: pytest.CaptureFixture[str]) -> None:
+    import armkit
+
+    code, out, _ = run(capsys, "--version")
+    assert code == 0 and out.strip() == f"armkit {armkit.__version__}"

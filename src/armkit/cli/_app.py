@@ -10,6 +10,7 @@ import warnings
 from collections.abc import Sequence
 from typing import Any, TextIO
 
+from .. import __version__
 from .._errors import ArmkitError, ArmkitWarning, InputError
 from ._parser import Parser
 
@@ -83,6 +84,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="what is on the table: a scene .toml file (mm, deg) or a shipped scene "
         "(see 'armkit scene list'); tasks and moves are checked against it",
     )
+    parser.add_argument("--version", action="version", version=f"armkit {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     for name in COMMAND_MODULES:
         importlib.import_module(name).add_commands(sub)
