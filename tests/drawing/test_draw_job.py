@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from armkit import Arm
-from armkit._errors import ArmkitError
+from armkit._errors import ArmkitError, InputError
 from armkit.drawing import DrawingError, DrawOptions, Fit, draw, plan_draw
 from armkit.drawing._segments_job import GripMove
 from armkit.scene import Cube, Scene, load_scene
@@ -87,5 +87,5 @@ def test_names_checked_before_anything(scene: Scene, square: Path, tmp_path: Pat
         draw(arm, scene, square, "A4")
     with pytest.raises(DrawingError, match="no pen 'marker'"):
         draw(arm, scene, square, pen="marker")
-    with pytest.raises(DrawingError, match="does not exist"):
+    with pytest.raises(InputError, match="does not exist"):
         draw(arm, scene, square, result=tmp_path / "no" / "r.png")

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 from drawing_support import EXAMPLES, FakeSheet
 
+from armkit import InputError
 from armkit.drawing import (
     DrawingError,
     Fit,
@@ -73,9 +74,9 @@ def test_pictures_at_the_sheets_real_size(tmp_path: Path, tilted_a5: FakeSheet) 
     assert a.shape[:2] == b.shape[:2]
     assert np.allclose(a.shape[:2], (148 / 25.4 * 100, 210 / 25.4 * 100), atol=1)
     assert (a[..., :3].min(axis=2) < 0.5).mean() > 0.005  # ink on the page
-    with pytest.raises(DrawingError, match=r"\.png, \.svg, \.pdf"):
+    with pytest.raises(InputError, match=r"\.png, \.svg, \.pdf"):
         check_picture_path(tmp_path / "plan.jpg")
-    with pytest.raises(DrawingError, match="does not exist"):
+    with pytest.raises(InputError, match="does not exist"):
         check_picture_path(tmp_path / "no" / "plan.png")
 
 

@@ -64,13 +64,38 @@ def test_wav_file_round_trip(tmp_path: Path) -> None:
 
 @pytest.mark.parametrize(
     ("name", "problem"),
-    [("missing/out.wav", "does not exist"), ("out.mp3", "must end in .wav"), (".", "must end in")],
+    [
+        ("missing/out.wav", "does not exist"),
+        ("out.mp3", "must end in .wav"),
+        (".", "is a directory"),
+    ],
 )
 def test_bad_output_paths_are_refused_before_anything(
     tmp_path: Path, name: str, problem: str
 ) -> None:
     with pytest.raises(ArmkitError, match=problem):
         write_wav(tmp_path / name, np.zeros(10), RATE)
+
+
+def test_a_wav_that_cannot_be_opened_leaves_no_half_made_writer(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The file is opened before wave sees it: a failed open is one OSError, with no
+    'Exception ignored in: Wave_write.__del__' traceback afterwards."""
+    import gc
+    import sys
+
+    with pytest.raises(ArmkitError, match=r"does not take new files|does not exist"):
+        write_wav(
+            "/proc/x.wav" if Path("/proc").is_dir() else tmp_path / "no" / "x.wav", np.zeros(10)
+        )
+    ignored: list[object] = []
+    monkeypatch.setattr(sys, "unraisablehook", ignored.append)
+    monkeypatch.setattr("armkit.music._synth.check_output_path", lambda path, suffixes: Path(path))
+    with pytest.raises(OSError):  # a folder that vanished after the check
+        write_wav(tmp_path / "gone" / "x.wav", np.zeros(10))
+    gc.collect()
+    assert ignored == []
 
 
 def test_onset_statistics_match_by_bar() -> None:

@@ -96,7 +96,7 @@ def test_scene_show_and_list(tmp_path: Path, capsys: pytest.CaptureFixture[str])
 
 
 @pytest.mark.parametrize(
-    ("name", "says"), [("nodir/top.png", "does not exist"), ("top.gif", "ending in .png")]
+    ("name", "says"), [("nodir/top.png", "does not exist"), ("top.gif", "must end in one of .png")]
 )
 def test_scene_show_checks_the_picture_path_first(
     name: str, says: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]

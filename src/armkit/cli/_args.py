@@ -1,5 +1,6 @@
-"""Checked command-line values: every number bounded and finite, every output path
-writable, all before anything is planned or moved.
+"""Checked command-line values: every number bounded and finite, the config folder
+writable (output files: ``armkit._files.check_output_path``), all before anything is
+planned or moved.
 
 The ``type=`` functions here run inside argparse, so a bad value becomes the one
 line ``armkit: error: argument --spacing: ...`` naming the argument, what is
@@ -10,11 +11,11 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
 from collections.abc import Callable
 from pathlib import Path
 
 from .._errors import InputError
+from .._files import folder_problem
 
 COORD_MM = 100_000.0  # |x|, |y|, |z| of any target [mm]
 ANGLE_DEG = 360.0  # |angle| of a joint, a pitch or a start angle [deg]
@@ -22,7 +23,10 @@ SWEEP_DEG = 3600.0  # |sweep| of an arc [deg]: ten turns
 SIZE_MM = 10_000.0  # radius, width, depth, edge of a drawn shape [mm]
 MAX_POINTS = 20_000  # waypoints in one drawing
 MAX_DRAW_S = 600.0  # longest timed drawing [s]
-IMAGE_TYPES = ("png", "pdf", "svg", "svgz", "jpg", "jpeg", "eps", "ps", "tif", "tiff", "webp")
+IMAGE_SUFFIXES = tuple(
+    f".{t}"
+    for t in ("png", "pdf", "svg", "svgz", "jpg", "jpeg", "eps", "ps", "tif", "tiff", "webp")
+)  # what matplotlib writes
 
 
 def _fmt(value: float) -> str:
@@ -81,41 +85,11 @@ coordinate = number("mm", -COORD_MM, COORD_MM)
 angle = number("deg", -ANGLE_DEG, ANGLE_DEG)
 
 
-def check_output(path: str | Path, option: str, *, image: bool = False) -> Path:
-    """``path`` as a file armkit may write, checked without writing anything.
-
-    Raises:
-        InputError: a directory, a missing or unwritable folder, an unwritable file,
-            or (``image``) an extension the plotter cannot write.
-    """
-    p = Path(path).expanduser()
-    if not str(path):
-        raise InputError(f"{option} needs a file name")
-    if p.is_dir():
-        raise InputError(f"{option} {path} is a directory; give a file name inside it")
-    folder = p.parent if str(p.parent) else Path(".")
-    if not folder.is_dir():
-        raise InputError(f"{option} {path}: the folder {folder} does not exist; create it first")
-    if not os.access(folder, os.W_OK | os.X_OK) or (p.exists() and not os.access(p, os.W_OK)):
-        raise InputError(f"{option} {path}: not writable; choose a file in a folder you can write")
-    if image and p.suffix.lower().lstrip(".") not in IMAGE_TYPES:
-        raise InputError(
-            f"{option} {path}: unknown picture type {p.suffix or '(none)'}; "
-            f"end the name with .{', .'.join(IMAGE_TYPES[:4])} or similar"
-        )
-    return p
-
-
 def check_folder(folder: Path, what: str) -> None:
-    """InputError unless ``folder`` exists as a writable directory or can be created
-    (its nearest existing ancestor is a writable directory). Creates nothing."""
-    probe = folder
-    while not probe.exists():
-        if probe.parent == probe:
-            break
-        probe = probe.parent
-    if not probe.is_dir() or not os.access(probe, os.W_OK | os.X_OK):
+    """InputError unless files can be made in ``folder``, or in the folder above it
+    that it would be created in (proven with a temporary file). Creates nothing else."""
+    why = folder_problem(folder)
+    if why is not None:
         raise InputError(
-            f"{what} {folder} cannot be written ({probe} is not a writable folder); "
-            "set ARMKIT_CONFIG_DIR to a writable directory"
+            f"{what} {folder} cannot be written ({why}); set ARMKIT_CONFIG_DIR to a writable directory"
         )

@@ -7,9 +7,10 @@ import math
 from typing import Any
 
 from .._errors import ArmkitError
+from .._files import check_output_path
 from .._progress import Progress
 from ..model import load_model
-from ._args import check_output, integer
+from ._args import IMAGE_SUFFIXES, integer
 from ._compare_methods import (
     TASKS,
     MethodScore,
@@ -67,7 +68,7 @@ def run_compare(args: argparse.Namespace) -> int:
     """Print the comparison table; write the chart if asked."""
     model = load_model(args.arm)
     if args.plot:
-        check_output(args.plot, "--plot", image=True)
+        check_output_path(args.plot, "--plot", IMAGE_SUFFIXES)
     task = args.task or default_task(model)
     targets = reachable_targets(model, args.n, args.seed, task)
     print(

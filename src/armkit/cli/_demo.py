@@ -22,10 +22,10 @@ from typing import Any
 import numpy as np
 
 from .._errors import ArmkitError
+from .._files import check_output_path
 from ..drivers.timed import UncertainEstimateWarning
 from ..kinematics import fk
 from ..model import load_model, shipped_models
-from ._args import check_output
 from ._table import table
 from ._watch import add_watch_options, watch_world, watching
 
@@ -56,9 +56,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 def run_demo(args: argparse.Namespace) -> int:
     """Check the outputs, then run the three parts and say what to try next."""
-    output = check_output(args.output, "-o/--output")
-    if output.suffix.lower() != ".png":
-        raise ArmkitError(f"-o/--output {args.output}: the file name must end in .png")
+    output = check_output_path(args.output, "-o/--output", (".png",))
     args.arm, args.driver, args.port = "openmanipulator_x", "sim", None  # the showcase's own
     world = watch_world(args)
     print("armkit demo: simulated arms, each under its real driver (no hardware)\n")

@@ -12,6 +12,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
+from .._files import check_output_path
 from .._terminal import count
 from ..kinematics import fk, pitch_of
 from ..model import ArmModel
@@ -31,7 +32,6 @@ from ._args import (
     SIZE_MM,
     SWEEP_DEG,
     angle,
-    check_output,
     coordinate,
     number,
 )
@@ -135,7 +135,7 @@ def _draw(args: argparse.Namespace) -> int:
     if args.record:
         if args.driver != "sim" and args.port != "emu":
             raise InputError("--record needs a simulated arm (--driver sim, or --port emu)")
-        check_output(args.record, "--record")
+        check_output_path(args.record, "--record")
     with open_arm(args) as arm:
         t0 = arm.clock.now()
         path = arm.follow(points, args.pitch, streamer=streamer)

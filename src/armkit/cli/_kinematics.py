@@ -10,10 +10,11 @@ from typing import Any
 import numpy as np
 
 from .._errors import InputError
+from .._files import check_output_path
 from .._terminal import count, fixed
 from ..kinematics import fk, ik, pitch_of
 from ..model import ArmModel, load_model
-from ._args import angle, check_output, coordinate
+from ._args import IMAGE_SUFFIXES, angle, coordinate
 from ._table import table
 
 
@@ -140,7 +141,7 @@ def run_ik(args: argparse.Namespace) -> int:
 def run_plot(args: argparse.Namespace) -> int:
     m = load_model(args.arm)
     q = joint_angles(m, args.angles)
-    check_output(args.output, "-o/--output", image=True)
+    check_output_path(args.output, "-o/--output", IMAGE_SUFFIXES)
     from ..viz import plot_pose
 
     path = plot_pose(m, q, args.output)

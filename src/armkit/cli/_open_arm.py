@@ -10,12 +10,12 @@ import sys
 from collections.abc import Iterator
 from typing import Any
 
-from .._files import config_dir
+from .._files import check_output_path, config_dir
 from ..arm import Arm
 from ..connect import check_sim_port
 from ..drivers.timed import TimedDriver
 from ..model import load_model
-from ._args import check_folder, check_output
+from ._args import check_folder
 from ._kept import open_kept
 from ._watch import watch_world, watching
 
@@ -29,7 +29,7 @@ def open_arm(args: argparse.Namespace) -> Iterator[Arm]:
     check_folder(config_dir(), "the config directory")
     if args.driver == "sim" and args.port not in (None, "emu"):
         check_sim_port(model, args.port)
-        check_output(args.port, "--port (the simulated arm's state file)")
+        check_output_path(args.port, "--port (the simulated arm's state file)")
     world = watch_world(args)
     try:
         arm = Arm(model, open_kept(model, args, world))

@@ -91,18 +91,18 @@ def _calibrate(arm: Any, scene: Any, args: argparse.Namespace, out: Path, music:
 
 def _outputs(args: argparse.Namespace) -> dict[str, Path]:
     """Every output path, checked before anything moves."""
+    from .._files import check_output_path
     from ..music import PLOT_SUFFIXES as SUFFIXES
-    from ..music import check_output
 
     out = {}
     if args.file is None and not args.calibrate:
         raise ArmkitError("play needs a score FILE (or --calibrate OUT.toml to measure the bars)")
     if args.calibrate:
-        out["calibrate"] = check_output(args.calibrate, (".toml",))
+        out["calibrate"] = check_output_path(args.calibrate, "--calibrate", (".toml",))
     if args.wav:
-        out["wav"] = check_output(args.wav, (".wav",))
+        out["wav"] = check_output_path(args.wav, "--wav", (".wav",))
     if args.plot:
-        out["plot"] = check_output(args.plot, SUFFIXES)
+        out["plot"] = check_output_path(args.plot, "--plot", SUFFIXES)
     return out
 
 

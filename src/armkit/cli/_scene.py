@@ -83,14 +83,15 @@ def _list(args: argparse.Namespace) -> int:
 
 
 def _show(args: argparse.Namespace) -> int:
+    from .._files import check_output_path
     from ..model import load_model
-    from ..scene import check_output, describe, top_view
+    from ..scene import PICTURE_SUFFIXES, describe, top_view
 
     scene = scene_of(args)
     model = load_model(args.arm)
     out = None if args.no_picture else Path(args.output or f"{scene.name}_top.png")
     if out is not None:
-        check_output(out)
+        check_output_path(out, "-o/--output", PICTURE_SUFFIXES)
     print("\n".join(describe(scene)))
     if out is not None:
         top_view(scene, out, model)

@@ -12,15 +12,13 @@ from __future__ import annotations
 
 import argparse
 import math
-from pathlib import Path
 from typing import Any
 from xml.sax.saxutils import quoteattr
 
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import ModelError
-from .._files import write_atomic
+from .._files import check_output_path, write_atomic
 from ..kinematics import fk_frames, joint_frames
 from ..model import ArmModel, load_model
 
@@ -42,9 +40,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 def run_urdf(args: argparse.Namespace) -> int:
     """Check the output path, then write the file."""
-    path = Path(args.output).expanduser()
-    if not path.parent.is_dir():
-        raise ModelError(f"-o {args.output}: folder {path.parent} does not exist; create it first")
+    path = check_output_path(args.output, "-o/--output")
     model = load_model(args.arm)
     write_atomic(path, urdf_of(model))
     print(f"wrote {path} ({model.dof} joints, {len(model.link_radii)} link capsules)")

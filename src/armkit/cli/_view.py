@@ -15,7 +15,6 @@ from .._progress import Progress
 from .._terminal import count
 from ._view_inputs import FOLLOW_RATE as FOLLOW_RATE
 from ._view_inputs import RATE as RATE
-from ._view_inputs import check_output as check_output
 from ._view_inputs import outputs_of, poses_of, script_output, target_of
 from ._watch import web_module
 

@@ -6,13 +6,13 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from .._errors import InputError
+from .._files import check_output_path
 
 RATE = 30.0  # [Hz] updates of the view
 FOLLOW_RATE = 45.0  # [Hz] with --follow: 30+ new states a second from the 100 Hz live file
@@ -68,7 +68,7 @@ def outputs_of(args: argparse.Namespace) -> list[Path]:
         (args.gif, ".gif", "--gif"),
     ):
         if given:
-            out.append(check_output(Path(given), suffix, flag))
+            out.append(check_output_path(given, flag, (suffix,)))
     return out
 
 
@@ -78,20 +78,4 @@ def script_output(args: argparse.Namespace) -> Path | None:
         return None
     if args.follow or args.gif:
         raise InputError("--write keeps what is taught on the page; drop --follow and --gif")
-    return check_output(Path(args.write), ".arm", "--write")
-
-
-def check_output(path: Path, suffix: str, flag: str) -> Path:
-    """``path`` if it can be written as a ``suffix`` file, else ValueError saying why."""
-    if path.suffix.lower() != suffix:
-        raise InputError(f"{flag} {path}: the file name must end in {suffix}")
-    folder = path.parent if str(path.parent) else Path(".")
-    if not folder.is_dir():
-        raise InputError(f"{flag} {path}: folder {folder} does not exist; create it first")
-    if (
-        path.is_dir()
-        or not os.access(folder, os.W_OK)
-        or (path.exists() and not os.access(path, os.W_OK))
-    ):
-        raise InputError(f"{flag} {path}: cannot write there; choose another file")
-    return path
+    return check_output_path(args.write, "--write", (".arm",))

@@ -34,7 +34,7 @@ from pathlib import Path
 from typing import Any
 
 from .._errors import ArmkitError, InputError
-from ._args import check_output
+from .._files import check_output_path
 
 WAIT_LONGEST = 600.0  # [s] --view-wait
 
@@ -64,9 +64,7 @@ def check_watch_options(args: argparse.Namespace) -> None:
     if not (math.isfinite(args.fps) and 1 <= args.fps <= 60):
         raise InputError(f"--fps must be 1..60 frames per second, got {args.fps}")
     if gif:
-        path = check_output(gif, "--gif")
-        if path.suffix.lower() != ".gif":
-            raise InputError(f"--gif {gif}: the file name must end in .gif")
+        check_output_path(gif, "--gif", (".gif",))
 
 
 def watch_world(args: argparse.Namespace) -> Any:

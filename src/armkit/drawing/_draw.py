@@ -17,8 +17,9 @@ from ..motion import TimedStreaming, follow
 from ..scene import Scene
 from ._errors import DrawingError
 from ._fit import Fit
-from ._job import DrawJob, DrawOptions, check_outputs, plan_draw
+from ._job import DrawJob, DrawOptions, plan_draw
 from ._metrics import measure
+from ._picture import check_picture_path
 from ._picture import preview as draw_preview
 from ._picture import result as draw_result
 from ._segments_job import GripMove, JointMove
@@ -63,10 +64,13 @@ def draw(
     after each move (n: the strokes drawn so far).
 
     Raises:
-        DrawingError: a bad file (naming line and column), sheet, pen or picture path.
+        DrawingError: a bad file (naming line and column), sheet or pen.
+        InputError: a picture path that cannot be written (before anything moves).
         UnreachableError: a move cannot be made (TaskError naming the step). Nothing moved.
     """
-    check_outputs(preview, result)
+    for picture in (preview, result):
+        if picture is not None:
+            check_picture_path(picture)
     if result is not None and arm.world is None:
         raise DrawingError(
             "a result picture needs a simulated arm (what the pen drew is measured "

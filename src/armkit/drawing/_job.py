@@ -24,7 +24,6 @@ from ._errors import DrawingError
 from ._fit import Fit
 from ._metrics import DrawingMetrics, PenTrace
 from ._pen import pick_pen, put_pen, stand_of
-from ._picture import check_picture_path
 from ._plan import DrawingPlan, plan_drawing
 from ._reach import Run, nothing_reachable, reach_note, reachable_runs
 from ._rig import Rig, plan_strokes
@@ -203,10 +202,3 @@ def _named(items: tuple[T, ...], name: str | None, kind: str, scene: str) -> T:
         asked = f"no {kind} {name!r}" if name is not None else f"which {kind}? (--{kind} NAME)"
         raise DrawingError(f"{asked} in scene {scene}; its {kind}s: {names}")
     return found[0]
-
-
-def check_outputs(*paths: str | Path | None) -> None:
-    """Every picture path writable (DrawingError otherwise); call before moving."""
-    for p in paths:
-        if p is not None:
-            check_picture_path(p)

@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from .._files import check_output_path
 from ._errors import DrawingError
 from ._metrics import PenTrace, ink, sheet_uv
 from ._plan import DrawingPlan, SheetPlane
@@ -23,17 +24,9 @@ SUFFIXES = (".png", ".svg", ".pdf")
 
 
 def check_picture_path(path: str | Path) -> Path:
-    """The path, if a picture can be written there (suffix .png, .svg or .pdf and an
-    existing folder); else ``DrawingError``. Call it before anything moves."""
-    p = Path(path)
-    if p.suffix.lower() not in SUFFIXES:
-        raise DrawingError(
-            f"a picture must end in {', '.join(SUFFIXES)}; got {p.name!r}", file=str(path)
-        )
-    folder = p.parent if str(p.parent) else Path(".")
-    if not folder.is_dir():
-        raise DrawingError(f"folder {str(folder)!r} does not exist; create it", file=str(path))
-    return p
+    """The path, once a picture (.png, .svg or .pdf) is proven writable there
+    (``armkit._files.check_output_path``); else ``InputError``. Call it before anything moves."""
+    return check_output_path(path, suffixes=SUFFIXES)
 
 
 def preview(plan: DrawingPlan, path: str | Path, dpi: float = 150.0) -> Path:

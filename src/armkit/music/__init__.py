@@ -63,7 +63,6 @@ from ._score import note_name as note_name
 from ._score import parse_pitch as parse_pitch
 from ._strike import StrikeParams as StrikeParams
 from ._strike import StrikePoses as StrikePoses
-from ._synth import check_output as check_output
 from ._synth import frequency as frequency
 from ._synth import render as render
 from ._synth import write_wav as write_wav

@@ -22,6 +22,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .._errors import ArmkitError
+from .._files import check_output_path
 from ._onsets import LatencyTable
 from ._score import Note, Score
 
@@ -39,7 +40,9 @@ class LatencyError(ArmkitError, ValueError):
 
 
 def save_latency(table: LatencyTable, path: str | Path) -> Path:
-    """Write ``table`` to ``path`` (TOML, delays [ms]); the Path written."""
+    """Write ``table`` to ``path`` (TOML, delays [ms]); the Path written. InputError
+    (nothing written) if ``path`` does not end in .toml or cannot be written."""
+    out = check_output_path(path, suffixes=(".toml",))
     lines = [
         "# armkit per-bar latency table: onset delay of each bar [ms] from a calibration run",
         f"default_ms = {table.default * 1000:.3f}",
@@ -49,7 +52,6 @@ def save_latency(table: LatencyTable, path: str | Path) -> Path:
         for (name, note), delay in table.delays:
             if name == instrument:
                 lines.append(f"{note} = {delay * 1000:.3f}")
-    out = Path(path)
     out.write_text("\n".join(lines) + "\n", encoding="utf-8")
     return out
 

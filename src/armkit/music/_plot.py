@@ -6,9 +6,9 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from .._errors import ArmkitError
+from .._files import check_output_path
 from ._onsets import Contact, match, onset_stats
 from ._score import note_name
-from ._synth import check_output
 
 PLOT_SUFFIXES = (".png", ".svg", ".pdf")
 
@@ -16,7 +16,7 @@ PLOT_SUFFIXES = (".png", ".svg", ".pdf")
 def plot_onsets(planned: Sequence[Contact], played: Sequence[Contact], path: str | Path) -> Path:
     """Save a figure: the notes against time (planned hollow, played filled) and each
     note's onset error [ms]; ``path`` ends in .png, .svg or .pdf. Returns the path."""
-    out = check_output(path, PLOT_SUFFIXES)
+    out = check_output_path(path, suffixes=PLOT_SUFFIXES)
     try:
         from matplotlib.figure import Figure
     except ImportError as exc:  # pragma: no cover - the dev install has it

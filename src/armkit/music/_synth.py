@@ -5,7 +5,6 @@ with Python's wave module."""
 from __future__ import annotations
 
 import math
-import os
 import wave
 from collections.abc import Sequence
 from pathlib import Path
@@ -13,7 +12,8 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import ArmkitError, InputError
+from .._errors import InputError
+from .._files import check_output_path
 from ._onsets import Contact
 
 F64 = NDArray[np.float64]
@@ -24,26 +24,6 @@ _XYLOPHONE_PARTIALS = (
     (3.0, 0.3, 0.35),
     (6.0, 0.08, 0.2),
 )  # ratio, level, decay share
-
-
-def check_output(path: str | Path, suffixes: Sequence[str]) -> Path:
-    """``path`` as a Path if a file with one of ``suffixes`` can be written there;
-    ArmkitError (a ValueError) naming the problem otherwise. Call it before any motion."""
-    out = Path(path)
-    if out.suffix.lower() not in suffixes:
-        raise _OutputError(f"{out}: the output must end in {' or '.join(suffixes)}")
-    if out.is_dir():
-        raise _OutputError(f"{out} is a directory; give a file name")
-    parent = out.parent if str(out.parent) else Path(".")
-    if not parent.is_dir():
-        raise _OutputError(f"{out}: folder {parent} does not exist; create it first")
-    if not os.access(parent, os.W_OK) or (out.exists() and not os.access(out, os.W_OK)):
-        raise _OutputError(f"{out}: not writable; choose another place")
-    return out
-
-
-class _OutputError(ArmkitError, ValueError):
-    """An output file that cannot be written."""
 
 
 def frequency(note: int) -> float:
@@ -88,10 +68,13 @@ def _drum(note: int, rate: int, rng: np.random.Generator) -> F64:
 
 
 def write_wav(path: str | Path, samples: F64, rate: int = RATE) -> Path:
-    """Write mono ``samples`` in [-1, 1] as a 16-bit PCM WAV file; the path written."""
-    out = check_output(path, (".wav",))
+    """Write mono ``samples`` in [-1, 1] as a 16-bit PCM WAV file; the path written.
+    InputError (nothing written) if ``path`` does not end in .wav or cannot be written."""
+    out = check_output_path(path, suffixes=(".wav",))
     pcm = np.round(np.clip(samples, -1.0, 1.0) * 32767).astype("<i2")
-    with wave.open(str(out), "wb") as handle:
+    # the file is opened here, not by wave: wave.open(name) that fails to open it leaves
+    # a half-made Wave_write whose __del__ prints a traceback
+    with out.open("wb") as raw, wave.open(raw, "wb") as handle:
         handle.setnchannels(1)
         handle.setsampwidth(2)
         handle.setframerate(rate)

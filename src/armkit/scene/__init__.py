@@ -28,7 +28,7 @@ from ._objects import PenStand as PenStand
 from ._objects import Place as Place
 from ._physics import SceneEvent as SceneEvent
 from ._physics import ScenePhysics as ScenePhysics
-from ._picture import check_output as check_output
+from ._picture import PICTURE_SUFFIXES as PICTURE_SUFFIXES
 from ._picture import top_view as top_view
 from ._scene import Scene as Scene
 from ._show import describe as describe

@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 
 from .._errors import InputError
+from .._files import check_output_path
 from ..kinematics import fk_frames
 from ..model import ArmModel
 from ._instruments import Drum, Xylophone, note_name
@@ -16,28 +17,13 @@ from ._rotations import rot_z
 from ._scene import Scene
 from ._support import Rect
 
-FORMATS = (".png", ".svg", ".pdf")
-
-
-def check_output(path: Path) -> None:
-    """Refuse an output path that cannot be written (before anything else happens).
-
-    Raises:
-        ValueError: unknown picture format, missing folder, or not writable.
-    """
-    import os
-
-    if path.suffix.lower() not in FORMATS:
-        raise InputError(f"picture {path}: give a file ending in {', '.join(FORMATS)}")
-    folder = path.parent if str(path.parent) else Path(".")
-    if not folder.is_dir():
-        raise InputError(f"picture {path}: folder {folder} does not exist")
-    if not os.access(folder, os.W_OK) or (path.exists() and not os.access(path, os.W_OK)):
-        raise InputError(f"picture {path}: cannot write there")
+PICTURE_SUFFIXES = (".png", ".svg", ".pdf")  # what top_view writes
 
 
 def top_view(scene: Scene, path: Path, model: ArmModel | None = None) -> None:
-    """Draw ``scene`` from above (millimetres) with the arm at its home pose into ``path``."""
+    """Draw ``scene`` from above (millimetres) with the arm at its home pose into ``path``
+    (.png, .svg or .pdf; InputError if it cannot be written there)."""
+    check_output_path(path, suffixes=PICTURE_SUFFIXES)
     try:
         import matplotlib
 
