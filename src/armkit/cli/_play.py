@@ -17,8 +17,8 @@ from .._terminal import count
 from ._watch import add_watch_options, watched_arm
 
 EPILOG = (
-    "Needs --scene FILE|NAME before the command (the shipped 'xylophone' has two octaves, "
-    "C4..B5, and a snare). Scores: MIDI (.mid, .midi), RTTTL (.rtttl) or a note list "
+    "Needs --scene FILE|NAME before the command (the shipped 'xylophone' has 13 bars, "
+    "C5..C6, and a snare). Scores: MIDI (.mid, .midi), RTTTL (.rtttl) or a note list "
     "(.txt: 'tempo 120' then notes such as 'C4 q  E4 e  R q'). Times in seconds, "
     "onset errors in milliseconds. A piece the arm cannot play in time is refused "
     "with every late note listed and a --tempo that fits; nothing moves. Latency tables "

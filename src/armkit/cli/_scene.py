@@ -8,10 +8,11 @@ from typing import Any
 
 from .._errors import ArmkitError
 from .._terminal import count
+from ..scene import shipped_scenes
 
 SCENE_HELP = (
     "scenes are TOML files in millimetres and degrees (see the README's 'Scenes and tasks'); "
-    "shipped: empty, board_001, search_002"
+    "shipped: "
 )
 
 
@@ -25,7 +26,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         "show",
         help="print the scene given with --scene and draw it from above",
         description="Print every object of the scene (mm, deg) and write a top view.",
-        epilog=SCENE_HELP,
+        epilog=SCENE_HELP + ", ".join(shipped_scenes()),
     )
     p.add_argument(
         "-o",
