@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -153,6 +154,17 @@ def test_the_cli_keeps_the_objects_between_runs(capsys: pytest.CaptureFixture[st
     physics = load_physics(scene_state_file(scene, "openmanipulator_x"), scene)
     assert physics.holding is None
     assert physics.cube("green").position * 1000 == pytest.approx([220.0, 0.0, 3.0], abs=1.0)
+
+
+def test_the_cli_keeps_the_objects_with_a_state_file_of_the_users(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """With '--port FILE' the arm was kept in FILE but the cubes were not: 'place' after
+    'pick' failed with the held cube back where it began."""
+    port = ["--port", str(tmp_path / "arm.json"), "--scene", "board_001"]
+    assert main([*port, "pick", "blue"]) == 0
+    assert main([*port, "place", "blue", "red"]) == 0, capsys.readouterr().err
+    assert main(["--scene", "board_001", "pick", "blue"]) == 0  # the default arm's own table
 
 
 def test_state_file_names_the_scene_and_arm() -> None:

@@ -140,19 +140,19 @@ def _physics(arm: Any, scene: Any) -> Any:
 
 @contextlib.contextmanager
 def kept_objects(args: argparse.Namespace, arm: Any, scene: Any) -> Iterator[None]:
-    """On a simulated arm with ``--driver sim`` and no port, the scene's objects are
-    kept between runs in their state file (as the arm's joints are): loaded and attached
+    """On a simulated arm kept between runs (``--driver sim``, no port or ``--port FILE``;
+    not ``emu``), the scene's objects are kept in their state file too: loaded and attached
     to the world for the block, locked while in use, and written back when the block
     changed them (a refused command changes nothing, so writes nothing)."""
-    if scene is None or arm.world is None or args.driver != "sim" or args.port is not None:
+    if scene is None or arm.world is None or args.driver != "sim" or args.port == "emu":
         yield
         return
     from .._lock import exclusive
     from ..scene import load_physics, physics_text, save_physics, scene_state_file
-    from ..sim import state_key
+    from ..sim import kept_key
     from ..tasks import attach_scene
 
-    path = scene_state_file(scene, state_key(arm.model))
+    path = scene_state_file(scene, kept_key(arm.model, args.port))
     lock = exclusive(path, f"the simulated objects of {scene.name}")
     try:
         physics = load_physics(path, scene)

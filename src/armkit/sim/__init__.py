@@ -24,6 +24,7 @@ from .._clock import Clock
 from ._arm import SimArm as SimArm
 from ._arm import Truth as Truth
 from ._recording import Recording as Recording
+from ._state import kept_key as kept_key
 from ._state import state_file as state_file
 from ._state import state_key as state_key
 from ._world import Observer as Observer
@@ -44,6 +45,7 @@ __all__ = [
     "Truth",
     "World",
     "WorldClock",
+    "kept_key",
     "state_file",
     "state_key",
     "world_of",

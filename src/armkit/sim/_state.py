@@ -38,6 +38,17 @@ def state_key(model: ArmModel) -> str:
     return f"{model.name}-{digest}"
 
 
+def kept_key(model: ArmModel, port: str | None) -> str:
+    """The key of what is kept beside the simulated ``model`` (its scene's objects):
+    ``state_key``, and with a state file of the user's (``--port FILE``) a digest of that
+    file's path too, so the objects go with the arm they were left by."""
+    if port is None:
+        return state_key(model)
+    return (
+        f"{state_key(model)}@{hashlib.sha256(str(Path(port).resolve()).encode()).hexdigest()[:10]}"
+    )
+
+
 def _shipped(source: Path) -> bool:
     shipped = Path(__file__).resolve().parent.parent / "model" / "arms"
     return Path(source).resolve().parent == shipped
