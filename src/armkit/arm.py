@@ -173,7 +173,10 @@ class Arm:
         """Draw through ``points_mm`` [mm], shape (N, 3), at ``pitch`` [deg] (None: the
         arm's own, else one for the whole path where one fits; see ``motion.plan_path``):
         the whole path is planned and checked first (PathError names the first bad
-        point), then the arm moves to its start and ``streamer`` (default timed) runs it."""
+        point), then the arm moves to its start and ``streamer`` (default timed) runs it.
+        An arm on timed motors (the OWI-535) follows it through waypoints its motors can
+        make instead (``motion.follow``), and refuses a path its one-joint runs would
+        stray from by more than ``armkit.drivers.timed.PATH_TOLERANCE``."""
         if streamer is not None and not callable(getattr(streamer, "run", None)):
             raise InputError(
                 "streamer must be NaiveStepping(), EarlyStreaming() or TimedStreaming() "

@@ -6,7 +6,9 @@ motion with ``armkit.motion``, so a script is known good, and how long it
 takes, before anything moves. An OWI-535 (timed motors) is timed as its driver
 will run it instead: the runs ``armkit.drivers.timed.forecast_move`` plans with
 the timing model a new unit starts with (``default_timing``), one joint at a
-time, gravity, overshoot and battery included.
+time, gravity, overshoot and battery included, and its straight lines through the
+waypoints the driver will follow them by (``plan_path_runs``), the plan's distance
+from the line noted on the step.
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ from ..drivers.timed import (
     forecast_move,
     forecast_run,
     grip_seconds,
+    plan_path_runs,
 )
 from ..kinematics import fk, fk_frames, ik
 from ..model import ArmModel
@@ -213,6 +216,11 @@ class ModelArm:
         path = plan_path(kin, points, goal.pitch, q0)
         for q in path.q:
             self._check_table(q, "along the line ")
+        if self.timing is not None:  # as the timed driver follows it: waypoints, not a stream
+            runs = plan_path_runs(self.timing, kin, q0, self.state.motor_s, path.q, path.points)
+            self.state = replace(self.state, motor_s=runs.motor_s)
+            self._step(runs.q, runs.seconds, note=f"timed motors: {runs.describe()}")
+            return
         took = time_path(self.model, path, self.state.tool_speed, TOOL_ACCEL).duration
         onto = self._onto_time(q0, path.q[0])  # ``follow``'s move onto its start
         self._step(path.q[-1].copy(), onto + took)
@@ -286,11 +294,12 @@ class ModelArm:
         self.state = replace(self.state, motor_s=ahead.motor_s)
         self._step(ahead.q, ahead.seconds)
 
-    def _step(self, q: F64 | None, duration: float | None) -> None:
+    def _step(self, q: F64 | None, duration: float | None, note: str = "") -> None:
         self.state = replace(self.state, q=q)
         if not self._recording:
             return
-        self.plan.steps.append(PlanStep(self._line, self._context, self.time, duration, q))
+        step = PlanStep(self._line, self._context, self.time, duration, q, note)
+        self.plan.steps.append(step)
         if duration is None:
             self.plan.unknown += 1
         else:

@@ -1,9 +1,11 @@
 """The OWI-535's driver: timed motors, joints that know their angle, a
 calibrated timing model and a state file that is never lost (seed 000).
 
-``forecast_move``, ``forecast_run`` and ``grip_seconds`` tell what the driver
-will do (its runs, their times, the estimate after them) without a device: the
-script checker times OWI scripts with them."""
+``forecast_move``, ``forecast_run``, ``grip_seconds`` and ``plan_path_runs`` tell
+what the driver will do (its runs, their times, the estimate after them) without a
+device: the script checker times OWI scripts with them. A path (a straight line, a
+drawing) is not streamed to timed motors but followed through waypoints they can
+make (``TimedDriver.follow_path``, ``path_waypoints``)."""
 
 from __future__ import annotations
 
@@ -30,11 +32,16 @@ from ._state import load as load_state
 from ._state import state_path as state_path
 from ._timing import JointTiming as JointTiming
 from ._timing import TimingModel as TimingModel
+from ._waypoints import PATH_TOLERANCE as PATH_TOLERANCE
+from ._waypoints import PathRuns as PathRuns
+from ._waypoints import path_waypoints as path_waypoints
+from ._waypoints import plan_path_runs as plan_path_runs
 
 __all__ = [
-    "ArmState", "Clock", "Forecast", "JointTiming", "MoveReport", "ShortMoveError", "Step",
-    "TimedDriver", "TimingModel", "UncertainEstimateWarning", "constant_rate", "default_timing",
-    "forecast_move", "forecast_run", "grip_seconds", "load_state", "open_driver", "rehome",
+    "PATH_TOLERANCE", "ArmState", "Clock", "Forecast", "JointTiming", "MoveReport", "PathRuns",
+    "ShortMoveError", "Step", "TimedDriver", "TimingModel", "UncertainEstimateWarning",
+    "constant_rate", "default_timing", "forecast_move", "forecast_run", "grip_seconds",
+    "load_state", "open_driver", "path_waypoints", "plan_path_runs", "rehome",
     "run_calibration", "run_keys", "state_path", "status_line",
 ]  # fmt: skip
 

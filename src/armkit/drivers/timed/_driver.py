@@ -30,6 +30,7 @@ from ._safety import ExitGuard
 from ._state import ArmState, load
 from ._timing import TimingModel
 from ._turns import TimedTurns
+from ._waypoints import PathRuns, plan_path_runs
 
 F64 = NDArray[np.float64]
 
@@ -167,6 +168,19 @@ class TimedDriver:
             part = self._turns.plan({j: target}, clamp=False, skip_short=True)
             report.steps += self._turns.run_steps(part.steps)
         return report
+
+    def follow_path(self, model: ArmModel, q: F64, points: F64) -> PathRuns:
+        """Follow the joint path ``q`` [rad], (N, 4), whose tool points are ``points`` [m],
+        (N, 3), (``model``: the kinematics they were solved with, the grip included) the
+        way timed motors can: onto its start, then through ``path_waypoints``, one run per
+        joint and level (see ``armkit.drivers.timed._waypoints``). Everything is planned
+        first, so a path that would stray too far is refused (UnreachableError) before a
+        motor starts. Returns the plan (its runs, time and deviation)."""
+        plan = plan_path_runs(self.timing, model, self.read(), self.state.motor_s, q, points)
+        self.move(np.asarray(q[0], dtype=np.float64))
+        for w in plan.waypoints:
+            self.move(w)
+        return plan
 
     @property
     def uncertainty(self) -> str | None:
