@@ -12,6 +12,7 @@ import pytest
 from armkit.cli import main
 
 TUNE = Path(__file__).resolve().parents[2] / "examples" / "music" / "twinkle.rtttl"
+LINES = Path(__file__).resolve().parents[2] / "examples" / "drawings" / "lines.svg"
 PROC = Path("/proc")
 CIRCLE = ["draw", "circle", "--center", "200", "0", "50", "--radius", "20"]
 needs_proc = pytest.mark.skipif(not PROC.is_dir(), reason="no /proc here")
@@ -56,6 +57,16 @@ def _refused(argv: list[str], capsys: pytest.CaptureFixture[str]) -> str:
         (["--scene", "board_001"], ["pick", "red", "--gif", "/proc/pick.gif"], "--gif"),
         ([], [*CIRCLE, "--record", "/proc/c.csv"], "--record"),
         ([], ["draw", "line", "200", "0", "50", "220", "0", "50", "--gif", "/proc/l.gif"], "--gif"),
+        (
+            ["--scene", "drawing"],
+            ["draw", "svg", str(LINES), "--preview", "/proc/p.png"],
+            "--preview",
+        ),
+        (
+            ["--scene", "drawing"],
+            ["draw", "svg", str(LINES), "--result", "/proc/r.png"],
+            "--result",
+        ),
     ],
 )
 def test_a_motion_with_an_unwritable_output_moves_nothing(

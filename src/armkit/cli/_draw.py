@@ -87,7 +87,7 @@ def _options(p: argparse.ArgumentParser) -> None:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from ..drawing import DrawingError, DrawOptions, draw
+    from ..drawing import DrawingError, DrawOptions, check_picture_path, draw
     from ._scene import scene_of
 
     path = Path(args.file)
@@ -97,6 +97,9 @@ def _run(args: argparse.Namespace) -> int:
         raise DrawingError(f"'draw {args.kind}' takes {' '.join(wanted)} files", file=str(path))
     if not path.is_file():
         raise DrawingError("no such file", file=str(path))
+    for option, out in (("--preview", args.preview), ("--result", args.result)):
+        if out is not None:
+            check_picture_path(out, option)
     scene = scene_of(args)
     opts = DrawOptions(
         tolerance=args.tolerance / 1e3, margin=args.margin / 1e3, pen_up=args.pen_up / 1e3,

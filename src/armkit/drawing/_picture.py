@@ -23,10 +23,11 @@ INK, TRAVEL, EDGE = "#1b2a6b", "#e4572e", "#b0b0b0"
 SUFFIXES = (".png", ".svg", ".pdf")
 
 
-def check_picture_path(path: str | Path) -> Path:
+def check_picture_path(path: str | Path, option: str = "") -> Path:
     """The path, once a picture (.png, .svg or .pdf) is proven writable there
-    (``armkit._files.check_output_path``); else ``InputError``. Call it before anything moves."""
-    return check_output_path(path, suffixes=SUFFIXES)
+    (``armkit._files.check_output_path``; ``option`` names it in the error, as
+    ``--preview``); else ``InputError``. Call it before anything moves."""
+    return check_output_path(path, option, SUFFIXES)
 
 
 def preview(plan: DrawingPlan, path: str | Path, dpi: float = 150.0) -> Path:
