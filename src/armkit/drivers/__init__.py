@@ -6,6 +6,7 @@ hardware or on a simulated device, by the factory: ``armkit.connect.open_driver`
 """
 
 from ._driver import Driver as Driver
+from ._driver import PathFollower as PathFollower
 from ._registry import DRIVERS as DRIVERS
 from ._registry import driver_names as driver_names
 from ._registry import open_driver as open_driver

@@ -42,10 +42,13 @@ accept and refuse exactly the same moves):
 from __future__ import annotations
 
 import math
-from typing import Protocol, runtime_checkable
+from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 import numpy as np
 from numpy.typing import NDArray
+
+if TYPE_CHECKING:
+    from ..model import ArmModel
 
 F64 = NDArray[np.float64]
 
@@ -90,6 +93,17 @@ class Driver(Protocol):
 
     def close(self) -> None:
         """Stop, release the device. Safe to call twice."""
+        ...
+
+
+@runtime_checkable
+class PathFollower(Protocol):
+    """A driver that cannot follow a stream of small moves and follows a whole path its
+    own way (timed motors: waypoints one joint at a time, ``TimedDriver``)."""
+
+    def follow_path(self, model: ArmModel, q: F64, points: F64) -> object:
+        """Follow joint path ``q`` [rad], (N, dof), whose tool points are ``points`` [m],
+        (N, 3), solved with ``model``; everything checked before a motor starts."""
         ...
 
 
