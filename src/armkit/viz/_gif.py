@@ -19,6 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import ArmkitError
+from .._files import check_output_path
 from ..arm import Arm
 from ..kinematics import fk
 from ..model import ArmModel
@@ -114,6 +115,7 @@ def write_gif(
     the arm, the cubes where they are and the tool's trail."""
     if not frames:
         raise ArmkitError("nothing was recorded: the job did not run on a simulated arm")
+    out = check_output_path(path, suffixes=(".gif",))
     raster = _raster()
     T = np.eye(4) if scene is None else scene.T_world_base
     tips = (T @ fk(model, np.array([f.q for f in frames])))[:, :3, 3]
@@ -129,7 +131,6 @@ def write_gif(
         )
         title = f"{model.name}  t = {state.t - frames[0].t:.2f} s"
         images.append(raster.render([*shapes_of(model, state, scene), *trail], camera, title))
-    out = Path(path)
     duration = round(1000.0 / fps)
     images[0].save(out, save_all=True, append_images=images[1:], duration=duration, loop=0)
     return out
@@ -146,11 +147,12 @@ def write_picture(
 ) -> Path:
     """Draw one moment (``state``) of the arm and ``scene`` into the image file ``path``
     (PNG, ...), ``size`` (width, height) [px], offscreen. Returns the path."""
+    out = check_output_path(path)
     raster = _raster()
     T = np.eye(4) if scene is None else scene.T_world_base
     camera = raster.look_from_front_right(T[:3, 3], reach_of(model), *size)
-    raster.render(shapes_of(model, state, scene), camera, title).save(Path(path))
-    return Path(path)
+    raster.render(shapes_of(model, state, scene), camera, title).save(out)
+    return out
 
 
 def shapes_of(model: ArmModel, state: ArmState, scene: Scene | None) -> list[Primitive]:

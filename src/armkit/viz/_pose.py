@@ -10,6 +10,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import ArmkitError
+from .._files import check_output_path
 from ..kinematics import fk_frames, pitch_of
 from ..model import ArmModel
 
@@ -22,8 +23,10 @@ def plot_pose(
     """Draw ``model`` at joint angles ``q`` [rad], shape (dof,), into an image file.
 
     Links are drawn between successive frame origins; each frame gets x/y/z
-    indicators (red/green/blue) of a length scaled to the arm. Returns the path.
+    indicators (red/green/blue) of a length scaled to the arm. Returns the path (proven
+    writable before anything is drawn: ``InputError`` if not).
     """
+    out = check_output_path(path)
     plt = _pyplot()
     frames = fk_frames(model, q)
     fig = plt.figure(figsize=(6, 6))
@@ -35,7 +38,6 @@ def plot_pose(
     ax.set_title(
         title or f"{model.name}: gripper ({x:.0f}, {y:.0f}, {z:.0f}) mm, pitch {pitch:.0f} deg"
     )
-    out = Path(path)
     fig.savefig(out, dpi=100)
     plt.close(fig)
     return out

@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 
 from ..._errors import ArmkitError
+from ..._files import check_output_path
 from ._chromium import Chromium, wait_until
 from ._view import View
 
@@ -51,6 +52,8 @@ def render_png(
     is told as each of the ``RENDER_STEPS`` starts (k = 0, 1, ...) and when all are done
     (k = len(RENDER_STEPS), step "done")."""
     import imageio.v3 as iio
+
+    path = check_output_path(path, suffixes=(".png",))
 
     def step(k: int) -> None:
         if progress is not None:
