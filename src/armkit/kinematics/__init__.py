@@ -8,6 +8,7 @@ from ._forward import jacobian as jacobian
 from ._ik import MethodName as MethodName
 from ._ik import ik as ik
 from ._ik import ik_batch as ik_batch
+from ._ik import pitch_follows as pitch_follows
 from ._ik import why_no_closed_form as why_no_closed_form
 from ._pose import pitch_of as pitch_of
 from ._result import IKBatchResult as IKBatchResult

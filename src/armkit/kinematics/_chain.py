@@ -14,11 +14,13 @@ from __future__ import annotations
 import math
 import weakref
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import ModelError
+from .._errors import InputError, ModelError
+from .._inputs import shown
 from ..model import ArmModel, JointFrame
 from ._closed_fast import FixedSolver, Q, fixed_solver
 from ._closed_free import FreeSolver, free_solver
@@ -91,13 +93,24 @@ _CHAINS: dict[int, Chain] = {}
 
 
 def chain_of(model: ArmModel) -> Chain:
-    """The compiled chain of ``model``, built on first use."""
+    """The compiled chain of ``model``, built on first use (InputError if ``model`` is not
+    an ``ArmModel``: checked here, where the lookup misses, off the hot path)."""
     chain = _CHAINS.get(id(model))
     if chain is None:
+        if not isinstance(model, ArmModel):
+            raise InputError(_not_a_model(model))
         chain = compile_chain(model)
         _CHAINS[id(model)] = chain
         weakref.finalize(model, _CHAINS.pop, id(model), None)
     return chain
+
+
+def _not_a_model(model: object) -> str:
+    """The refusal of a ``model`` that is not an ``ArmModel`` (a name or file: load it)."""
+    name = str(model) if isinstance(model, str | Path) else "openmanipulator_x"
+    return (
+        f"model must be an ArmModel; load one with armkit.load_model({name!r}); got {shown(model)}"
+    )
 
 
 MAX_REACH = 1e4  # [m]: beyond it float arithmetic on the chain loses its metres

@@ -15,7 +15,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ._chain import Chain
-from ._family import PlanarFamily, Planes, planes, turn_of
+from ._family import PITCH_TOLERANCE, PlanarFamily, Planes, planes, turn_of
 from ._pose import pitch_of_phi
 
 F64 = NDArray[np.float64]
@@ -157,4 +157,4 @@ def _pitch_ok(fam: PlanarFamily, turn: F64, b: Planes, pitch: F64) -> Bool:
     """Where the plane turns [rad] of a 2-joint planar chain give ``pitch`` (N,) [rad]."""
     got = pitch_of_phi(np.cos(fam.phi0 + turn), np.sin(fam.phi0 + turn), b.r, b.rho)
     pitch = np.tile(pitch, len(b.r) // len(pitch))
-    return np.asarray(np.abs(np.remainder(got - pitch + np.pi, TWO_PI) - np.pi) < 1e-7)
+    return np.asarray(np.abs(np.remainder(got - pitch + np.pi, TWO_PI) - np.pi) <= PITCH_TOLERANCE)

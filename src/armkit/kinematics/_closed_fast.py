@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .._errors import Reason
-from ._family import PlanarFamily, planes, turn_of
+from ._family import PITCH_TOLERANCE, PlanarFamily, planes, turn_of
 from ._lanes import FLOATS
 from ._pose import pitch_of_phi
 
@@ -57,7 +57,7 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
     lat, az, bs, c0, s0 = fam.lateral, fam.azimuth_r, fam.base_sign, math.cos(phi0), math.sin(phi0)
     (ux, uy, uz), pi, tp = fam.u, math.pi, _TWO_PI
     cos, sin, acos, atan2, sqrt = math.cos, math.sin, math.acos, math.atan2, math.sqrt
-    rem, floor, straight = math.remainder, math.floor, _STRAIGHT
+    rem, floor, straight, ptol = math.remainder, math.floor, _STRAIGHT, PITCH_TOLERANCE
     yaw3 = base == 0 and fam.planar == (1, 2, 3)  # the common layout: joints in order
     pair = base is None and fam.planar == (0, 1) and dof == 2
 
@@ -117,7 +117,7 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
                 a1, a2 = aim - tt, gg - bend
                 if given:
                     got = pitch_of_phi(cos(phi0 + a1 + a2), sin(phi0 + a1 + a2), r, rho, FLOATS)
-                    if abs(rem(got - pitch, tp)) > 1e-7:  # type: ignore[operator]
+                    if abs(rem(got - pitch, tp)) > ptol:  # type: ignore[operator]
                         if misses is not None:
                             misses.reasons.append("pitch")
                         continue

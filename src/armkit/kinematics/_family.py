@@ -30,6 +30,10 @@ _EPS = 1e-9
 MIN_LINK = 1e-6  # [m]
 MAX_LINK = 1e4  # [m]
 _CHECK = 0.5e-9  # [rad]: a boundary point fits within half the solvers' slack
+# [rad]: on an arm with 2 planar joints the pitch follows from the position; a pitch
+# given there is accepted this near the one the position implies (a position typed to
+# a few digits implies a pitch a hair off the one meant)
+PITCH_TOLERANCE = math.radians(0.01)
 Vec = tuple[float, ...]
 
 

@@ -129,6 +129,13 @@ def why_no_closed_form(model: ArmModel) -> str:
     return chain_of(model).why_not
 
 
+def pitch_follows(model: ArmModel) -> bool:
+    """Whether ``model``'s pitch follows from the position (a closed-form arm with two
+    planar joints, planar2): ``ik`` then wants no pitch, or the one the position gives."""
+    fam = chain_of(model).family
+    return fam is not None and len(fam.planar) == 2
+
+
 def _unpack(target: Target, pitch: Any, orientation: Any) -> tuple[Any, Any, Any]:
     if pitch is not None or orientation is not None:
         raise InputError("give a Target, or a position with pitch / orientation, not both")

@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from .._inputs import array
 from ._lanes import LANES, Ops
 
 F64 = NDArray[np.float64]
@@ -28,6 +29,8 @@ def pitch_of(T: F64) -> F64:
     Returns:
         Pitch [rad], shape () or (N,), in (-pi, pi].
     """
+    if not (isinstance(T, np.ndarray) and T.dtype == np.float64 and T.shape[-2:] == (4, 4)):
+        T = array(T, "T (a tool pose)", ((4, 4), (None, 4, 4)), "homogeneous transform")
     a, p = T[..., :3, 0], T[..., :3, 3]
     return np.asarray(pitch_lanes((a[..., 0], a[..., 1], a[..., 2]), (p[..., 0], p[..., 1])))
 
