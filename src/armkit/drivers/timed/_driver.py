@@ -204,13 +204,16 @@ class TimedDriver:
         )
 
     def stop(self) -> None:
-        """Stop every motor now (the light keeps its state)."""
+        """Stop every motor now (the light keeps its state). Safe to repeat, a no-op once
+        closed (the motors were stopped when it closed)."""
+        if self._closed:
+            return
         self.motors.stop()
 
     def relax(self) -> None:
         """Every motor off: the OWI's DC motors hold nothing and run only during a move,
         so this is ``stop`` (for the tasks that switch an arm off at the end)."""
-        self.motors.stop()
+        self.stop()
 
     # -- the OWI's own turns, gripper and light (``TimedTurns``) ---------------
     def turn_to(self, joint: str, angle: float, *, clamp: bool = True) -> MoveReport:
