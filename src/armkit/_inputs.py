@@ -25,6 +25,18 @@ def is_number(value: Any) -> bool:
     return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool)
 
 
+def has_bool(value: Any) -> bool:
+    """Whether ``value`` is or holds True or False (a bool, a bool array, or a tuple or
+    list with one inside): numpy would read them as 1 and 0, armkit refuses them."""
+    if isinstance(value, (bool, np.bool_)):
+        return True
+    if isinstance(value, np.ndarray):
+        return bool(value.dtype == np.bool_)
+    if isinstance(value, (tuple, list)):
+        return any(has_bool(v) for v in value)
+    return False
+
+
 def shown(value: Any) -> str:
     """``value`` as a short string for a message."""
     if isinstance(value, np.ndarray):
@@ -52,6 +64,8 @@ def array(
         a = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError):
         raise InputError(f"{name} must be numbers [{unit}], got {shown(value)}") from None
+    if has_bool(value):
+        raise InputError(f"{name} must be numbers [{unit}], not True or False, got {shown(value)}")
     fits = any(
         a.ndim == len(s) and all(w is None or w == n for w, n in zip(s, a.shape, strict=True))
         for s in shapes

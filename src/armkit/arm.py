@@ -21,7 +21,7 @@ from ._closing import close_after
 from ._errors import DeviceError, InputError, UnreachableError
 from .connect import World, open_driver, world_of
 from .drivers import Driver
-from .kinematics import fk, ik, pitch_of
+from .kinematics import fk, ik, pitch_follows, pitch_of
 from .model import MAX_MOVE_S as MAX_MOVE_S
 from .model import ArmModel, check_grip, check_joints, load_model, move_time
 from .motion import (
@@ -35,7 +35,7 @@ from .motion import (
     plan_path,
     retreat,
 )
-from .scene import Scene, check_clear, joint_sweep
+from .scene import Scene, check_clear, joint_sweep, load_scene
 
 F64 = NDArray[np.float64]
 REACHED = math.radians(0.2)  # a move with a timeout is done when every joint is this close
@@ -58,8 +58,9 @@ class Arm:
         driver: a driver name (``"sim"``, ``"ssc32"``, ...) or an open ``Driver``.
         port: the driver's port (see ``armkit.connect.open_driver``).
         world: the simulation world to put a simulated arm in (None: a new one).
-        scene: what is on the table (``armkit.scene.load_scene``); every move is
-            checked against it, and against the table plane even without one.
+        scene: what is on the table: a ``Scene`` or a scene name or file (loaded with
+            ``armkit.scene.load_scene``); every move is checked against it, and against
+            the table plane even without one.
     """
 
     def __init__(
@@ -69,10 +70,20 @@ class Arm:
         port: str | None = None,
         *,
         world: World | None = None,
-        scene: Scene | None = None,
+        scene: Scene | str | Path | None = None,
     ) -> None:
-        self.scene = scene
+        if not isinstance(driver, str | Driver):
+            raise InputError(
+                f"driver must be a driver name ('sim', 'ssc32', ...; armkit.drivers."
+                f"driver_names()) or an open Driver, got {driver!r}"
+            )
+        if scene is not None and not isinstance(scene, Scene | str | Path):
+            raise InputError(
+                "scene must be a Scene, a scene name or file (armkit.scene.load_scene) or "
+                f"None, got {type(scene).__name__}"
+            )
         self.model = model if isinstance(model, ArmModel) else load_model(model)
+        self.scene = load_scene(scene) if isinstance(scene, str | Path) else scene
         if isinstance(driver, str):
             self.driver = open_driver(self.model, driver, port, world=world)
         else:
@@ -108,9 +119,10 @@ class Arm:
         Raises:
             UnreachableError: the point (and pitch) is out of reach or the joint limits.
         """
+        timing = timing_of(speed, duration, wait, timeout)  # checked before solving
         target = numbers([x, y, z], "x, y, z [mm]") / 1000.0
         q = ik(self._kin, target, pitch_radians(pitch), self.driver.read()).q
-        self._move(q, timing_of(speed, duration, wait, timeout))
+        self._move(q, timing)
 
     def move_joints(
         self,
@@ -123,7 +135,8 @@ class Arm:
     ) -> None:
         """Move joints to ``angles`` [deg]: one per joint in order, or a dict by name
         (joints not named stay where they are). Options as ``move_to``."""
-        self._move(self._joint_target(angles), timing_of(speed, duration, wait, timeout))
+        timing = timing_of(speed, duration, wait, timeout)
+        self._move(self._joint_target(angles), timing)
 
     def turn_to(self, joint: str, deg: float, *, speed: float | None = None) -> None:
         """Turn one joint to ``deg`` [deg]; the others stay."""
@@ -154,7 +167,7 @@ class Arm:
 
     def home(self, *, speed: float | None = None) -> None:
         """Move every joint to the model's home angles."""
-        self._move(self.model.home, Timing(speed, None, True, None))
+        self._move(self.model.home, timing_of(speed, None, True, None))
 
     def position(self) -> Position:
         """Where the gripper point is now [mm] and its pitch [deg]."""
@@ -195,9 +208,11 @@ class Arm:
 
     def retreat(self, pitch: float | None = None) -> None:
         """Leave the current point the way ``approach`` came: three waypoints up to
-        30 mm above it, at ``pitch`` [deg] (None: keep the current pitch)."""
+        30 mm above it, at ``pitch`` [deg] (None: keep the current pitch; on an arm whose
+        pitch follows from the position, planar2, the one each point gives)."""
         x, y, z, now = self.position()
-        pitch = now if pitch is None else pitch
+        if pitch is None and not pitch_follows(self._kin):
+            pitch = now
         self._step_through(retreat(np.array([x, y, z]) / 1000.0), pitch)
 
     def stop(self) -> None:
@@ -240,10 +255,6 @@ class Arm:
         """Check limits, timing (the drivers' own rule, and at most ``MAX_MOVE_S``) and
         clearance, then send; with a timeout, poll until there."""
         goal = check_joints(self.model, q)
-        if timing.timeout is not None and not (
-            math.isfinite(timing.timeout) and timing.timeout > 0
-        ):
-            raise InputError(f"timeout must be a number of seconds > 0, got {timing.timeout:g}")
         move_time(
             self.model,
             self.driver.read(),

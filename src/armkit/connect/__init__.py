@@ -71,6 +71,13 @@ def open_driver(
     """
     from ._simulate import simulate
 
+    if world is not None and not isinstance(world, World):
+        raise InputError(
+            f"world must be a World (armkit.sim.World(), or another arm's arm.world) or None, "
+            f"got {type(world).__name__}"
+        )
+    if not isinstance(driver, str):
+        raise InputError(f"driver must be a driver name such as 'sim', got {driver!r}")
     if driver == "sim":
         check_sim_port(model, port)
         return simulate(model, native_kind(model), world, kept_state_file(model, port, keep))

@@ -1,6 +1,7 @@
 """Arm models as data: joints, DH chain, tool and gripper, loaded from TOML."""
 
 from ._limits import MAX_MOVE_S as MAX_MOVE_S
+from ._limits import check_duration as check_duration
 from ._limits import check_grip as check_grip
 from ._limits import check_joints as check_joints
 from ._limits import check_speed as check_speed

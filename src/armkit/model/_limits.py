@@ -35,7 +35,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError, JointLimitError
-from .._inputs import is_number, shown
+from .._inputs import brief, is_number, shown
 from ._types import ArmModel
 
 F64 = NDArray[np.float64]
@@ -101,7 +101,7 @@ def check_grip(model: ArmModel, width: float) -> float:
         )
     if not (math.isfinite(width) and g.width_min - SLACK <= width <= g.width_max + SLACK):
         raise GripWidthError(
-            f"grip width {width * 1000:.1f} mm is outside {model.name}'s range "
+            f"grip width {brief(width * 1000)} mm is outside {model.name}'s range "
             f"{g.width_min * 1000:.1f}..{g.width_max * 1000:.1f} mm"
         )
     return float(width)
