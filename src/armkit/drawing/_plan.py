@@ -18,12 +18,14 @@ from typing import Protocol
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .._inputs import is_number, shown
 from ._errors import DrawingError, DrawingWarning
 from ._figure import Figure
 from ._fit import Fit, apply, clip_to_box, fit_transform
 from ._gcode import read_gcode
 from ._merge import merge_strokes
 from ._order import order_strokes, pen_up_length
+from ._shapes import uv_point
 from ._simplify import simplify
 from ._svg import read_svg
 
@@ -124,17 +126,12 @@ def plan_drawing(
 ) -> DrawingPlan:
     """Plan ``source`` on ``sheet`` (or a (width, height) [m]) within ``tolerance`` [m];
     the pen starts at ``start`` (u, v) [m] if given. Raise ``DrawingError``."""
+    size = _size(sheet)
+    if not (is_number(tolerance) and math.isfinite(tolerance) and tolerance > 0):
+        raise DrawingError(f"tolerance must be > 0 m, got {shown(tolerance)}")
+    uv0 = None if start is None else uv_point(start, "start")
     fig = source if isinstance(source, Figure) else read_drawing(source)
     fit = fit or Fit()
-    size = (
-        (float(sheet[0]), float(sheet[1]))
-        if isinstance(sheet, tuple)
-        else (sheet.width, sheet.height)
-    )
-    if not (math.isfinite(tolerance) and tolerance > 0):
-        raise DrawingError(f"tolerance must be > 0 m, got {tolerance}")
-    if not all(math.isfinite(v) and v > 0 for v in size):
-        raise DrawingError(f"the sheet's width and height must be > 0 m, got {size}")
     M, strokes = _fitted(fig, size, fit, tolerance)
     margin = np.full(2, fit.margin)
     kept = clip_to_box(strokes, margin - 1e-9, np.array(size) - margin + 1e-9)
@@ -143,19 +140,25 @@ def plan_drawing(
         raise DrawingError(
             "everything lies outside the sheet; fit it to the sheet", file=fig.source
         )
-    uv0 = _start(start)
     strokes = simplify(merge_strokes(kept, tolerance / 2), tolerance / 2)
     ordered = order_strokes(strokes, uv0)
     return DrawingPlan(tuple(ordered), size, M, tolerance, fig.source, notes, uv0, fig.dwell)
 
 
-def _start(start: ArrayLike | None) -> F64 | None:
-    if start is None:
-        return None
-    uv = np.asarray(start, dtype=np.float64)
-    if uv.shape != (2,) or not np.all(np.isfinite(uv)):
-        raise DrawingError(f"start must be 2 finite sheet coordinates (u, v) [m], got {start!r}")
-    return uv
+def _size(sheet: object) -> tuple[float, float]:
+    """The sheet's (width, height) [m], each > 0 (DrawingError otherwise)."""
+    if isinstance(sheet, tuple | list):
+        w, h = uv_point(sheet, "sheet (width, height)").tolist()
+    else:
+        w, h = getattr(sheet, "width", None), getattr(sheet, "height", None)
+        if not (is_number(w) and is_number(h)):
+            raise DrawingError(
+                "sheet must be a Sheet (armkit.scene), a PaperSize or (width, height) [m], "
+                f"got {shown(sheet)}"
+            )
+    if not all(math.isfinite(v) and v > 0 for v in (w, h)):  # type: ignore[arg-type]
+        raise DrawingError(f"the sheet's width and height must be > 0 m, got {shown((w, h))}")
+    return float(w), float(h)  # type: ignore[arg-type]
 
 
 def _fitted(

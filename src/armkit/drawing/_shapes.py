@@ -15,6 +15,8 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .._errors import InputError
+from .._inputs import array
 from ._errors import DrawingError
 from ._figure import Figure
 from ._segments import EllipticArc, FigurePath, Line
@@ -24,7 +26,7 @@ F64 = NDArray[np.float64]
 
 def line(start: ArrayLike, end: ArrayLike) -> FigurePath:
     """Straight line from ``start`` to ``end`` (u, v) [m]."""
-    return FigurePath((Line(_uv(start, "start"), _uv(end, "end")),))
+    return FigurePath((Line(uv_point(start, "start"), uv_point(end, "end")),))
 
 
 def polyline(vertices: ArrayLike, closed: bool = False) -> FigurePath:
@@ -42,7 +44,7 @@ def arc(center: ArrayLike, radius: float, start_angle: float, sweep: float) -> F
     """Arc of a circle: ``center`` (u, v) [m], ``radius`` [m], from ``start_angle``
     [rad] (0 along +u, counter-clockwise towards +v) through ``sweep`` [rad]
     (negative: clockwise)."""
-    c = _uv(center, "center")
+    c = uv_point(center, "center")
     if not (math.isfinite(radius) and radius > 0):
         raise DrawingError(f"radius must be > 0 m, got {radius}")
     if not (math.isfinite(start_angle) and math.isfinite(sweep) and sweep != 0):
@@ -58,7 +60,7 @@ def circle(center: ArrayLike, radius: float, start_angle: float = 0.0) -> Figure
 def rectangle(center: ArrayLike, width: float, height: float) -> FigurePath:
     """Closed rectangle: ``width`` along u, ``height`` along v [m], counter-clockwise
     from the corner at (-u, -v)."""
-    c = _uv(center, "center")
+    c = uv_point(center, "center")
     if not (width > 0 and height > 0 and math.isfinite(width) and math.isfinite(height)):
         raise DrawingError(f"width and height must be > 0 m, got {width}, {height}")
     w, h = width / 2.0, height / 2.0
@@ -72,8 +74,9 @@ def figure(*paths: FigurePath, source: str = "shapes") -> Figure:
     return Figure(tuple(paths), np.eye(3), source=source)
 
 
-def _uv(p: ArrayLike, name: str) -> F64:
-    a = np.asarray(p, dtype=np.float64)
-    if a.shape != (2,) or not np.all(np.isfinite(a)):
-        raise DrawingError(f"{name} must be 2 finite coordinates (u, v) [m], got {p!r}")
-    return a
+def uv_point(p: ArrayLike, name: str) -> F64:
+    """``p`` as 2 finite sheet coordinates (u, v) [m] (DrawingError naming ``name``)."""
+    try:
+        return array(p, name, ((2,),), "m")
+    except InputError as e:
+        raise DrawingError(f"{e}; give 2 sheet coordinates (u, v)") from None

@@ -120,4 +120,6 @@ def make_score(notes: list[Note], source: str) -> Score:
 def parse_pitch(text: str) -> int | None:
     """``"C4"``, ``"c#4"``, ``"Bb3"``, ``"A-1"`` -> MIDI number; None if it is not
     a note name or is outside 0..127 (the scene's ``note_number``, one reading of names)."""
+    if not isinstance(text, str):
+        return note_number(text)  # refused there: not a string
     return note_number(text) if text == text.strip() else None

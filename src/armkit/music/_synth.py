@@ -14,6 +14,7 @@ from numpy.typing import NDArray
 
 from .._errors import InputError
 from .._files import check_output_path
+from ..scene import midi_note
 from ._onsets import Contact
 
 F64 = NDArray[np.float64]
@@ -28,7 +29,7 @@ _XYLOPHONE_PARTIALS = (
 
 def frequency(note: int) -> float:
     """Pitch [Hz] of MIDI ``note`` (A4 = 69 = 440 Hz)."""
-    return float(440.0 * 2.0 ** ((note - 69) / 12.0))
+    return float(440.0 * 2.0 ** ((midi_note(note) - 69) / 12.0))
 
 
 def render(contacts: Sequence[Contact], rate: int = RATE, decay: float = 0.4, seed: int = 0) -> F64:

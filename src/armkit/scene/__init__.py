@@ -15,6 +15,7 @@ from ._grasp import MIN_COVER as MIN_COVER
 from ._grasp import grasp as grasp
 from ._instruments import Drum as Drum
 from ._instruments import Xylophone as Xylophone
+from ._instruments import midi_note as midi_note
 from ._instruments import note_name as note_name
 from ._instruments import note_number as note_number
 from ._load import load_scene as load_scene

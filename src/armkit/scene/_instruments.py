@@ -10,20 +10,36 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
+from .._inputs import shown
 
 F64 = NDArray[np.float64]
 NOTE_NAMES = ("C", "C#", "D", "D#", "E", "F", "F#", "G", "G#", "A", "A#", "B")
 _PITCH = re.compile(r"([A-Ga-g])([#b]?)(-?\d)")
 
 
+def midi_note(note: object, name: str = "note") -> int:
+    """``note`` checked to be a MIDI note number, an integer (60 = C4), not a bool
+    (InputError naming ``name`` otherwise; a note name points to ``parse_pitch``)."""
+    if isinstance(note, int | np.integer) and not isinstance(note, bool):
+        return int(note)
+    hint = "; for a note name use armkit.music.parse_pitch" if isinstance(note, str) else ""
+    raise InputError(
+        f"{name} must be a MIDI note number, an integer (60 = C4), got {shown(note)}{hint}"
+    )
+
+
 def note_name(note: int) -> str:
     """MIDI note number to a name: 60 -> ``"C4"``."""
+    note = midi_note(note)
     return f"{NOTE_NAMES[note % 12]}{note // 12 - 1}"
 
 
 def note_number(name: str) -> int | None:
     """A note name to its MIDI number (``"C4"`` -> 60, ``"F#5"`` -> 78, ``"Bb3"`` ->
-    58), or None if ``name`` is not one or is outside MIDI 0..127."""
+    58), or None if ``name`` is not one or is outside MIDI 0..127 (InputError if it is
+    not a string)."""
+    if not isinstance(name, str):
+        raise InputError(f"a note name must be a string such as 'C4' or 'F#5', got {shown(name)}")
     found = _PITCH.fullmatch(name.strip())
     if found is None:
         return None

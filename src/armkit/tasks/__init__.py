@@ -12,6 +12,7 @@ from ._jobs import place as place
 from ._jobs import plan_task as plan_task
 from ._jobs import rotate_cube as rotate_cube
 from ._jobs import stack as stack
+from ._jobs import stack_names as stack_names
 from ._live import TaskFailed as TaskFailed
 from ._live import attach_scene as attach_scene
 from ._live import attached as attached

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from .._errors import InputError
+from .._inputs import is_number, shown
 from ..kinematics import fk
 from ..scene import Cube, Scene
 from ._calibration import Calibration, calibration_for
@@ -57,8 +58,7 @@ def plan_task(
         TaskError: a step is unreachable or would collide (naming the step, link, object).
         ValueError: a bad argument.
     """
-    if not (math.isfinite(clearance) and 30.0 <= clearance <= 500.0):
-        raise InputError(f"clearance must be 30..500 mm (001: at least 30), got {clearance}")
+    _check_clearance(clearance)
     if isinstance(calibration, Calibration):
         cal = calibration
     else:
@@ -92,9 +92,15 @@ def _carried(ctx: Context, st: State) -> Cube:
 def _deg(pitch: float | None) -> float | None:
     if pitch is None:
         return None
-    if not (math.isfinite(pitch) and -90.0 <= pitch <= 90.0):
-        raise InputError(f"pitch must be -90..90 deg, got {pitch}")
+    if not (is_number(pitch) and -90.0 <= pitch <= 90.0):
+        raise InputError(f"pitch must be -90..90 deg or None, got {shown(pitch)}")
     return math.radians(pitch)
+
+
+def _check_clearance(clearance: float) -> None:
+    """Refuse a clearance plan_task would refuse, before the scene is attached."""
+    if not (is_number(clearance) and 30.0 <= clearance <= 500.0):
+        raise InputError(f"clearance must be 30..500 mm (001: at least 30), got {shown(clearance)}")
 
 
 def _done(arm: Arm, plan: Plan, dry_run: bool) -> Plan:
@@ -115,8 +121,9 @@ def pick(
 ) -> Plan:
     """Pick ``cube`` up (001: from the top where reachable, else from the side with
     the grasp point shifted up; ``pitch`` [deg] forces one) and stay above it."""
-    scene = live_scene(arm, scene, dry_run, f"pick {cube}")
     p = _deg(pitch)
+    _check_clearance(clearance)
+    scene = live_scene(arm, scene, dry_run, f"pick {cube}")
     plan = plan_task(
         arm, scene, f"pick {cube}", lambda c, s: pick_any(c, s, cube, p),
         clearance=clearance, calibration=calibration,
@@ -212,6 +219,22 @@ def rotate_cube(
     return _done(arm, plan, dry_run)
 
 
+def stack_names(cubes: object) -> list[str]:
+    """``stack``'s cubes checked: two or more different names (InputError otherwise)."""
+    names: list[str] = []
+    if isinstance(cubes, str):
+        names = [cubes]  # one name: not its letters
+    elif isinstance(cubes, Sequence) and all(isinstance(c, str) for c in cubes):
+        names = [str(c) for c in cubes]
+    if len(names) < 2 or len(set(names)) != len(names):
+        given = names or shown(cubes)
+        raise InputError(
+            f"stack needs two or more different cubes, got {given}; give their names, "
+            "e.g. ['red', 'green']"
+        )
+    return names
+
+
 def stack(
     arm: Arm,
     scene: Scene,
@@ -225,10 +248,9 @@ def stack(
     """001: turn every cube in place (``rotate_first``: ``"forward"``,
     ``"backward"`` or None), then stack them on the first one, each one cube
     higher than the last."""
+    names = stack_names(cubes)
+    _check_clearance(clearance)
     scene = live_scene(arm, scene, dry_run, "stack")
-    names = [cubes] if isinstance(cubes, str) else list(cubes)  # one name: not its letters
-    if len(names) < 2 or len(set(names)) != len(names):
-        raise InputError(f"stack needs two or more different cubes, got {names}")
 
     def body(c: Context, s: State) -> State:
         for name in names if rotate_first else ():

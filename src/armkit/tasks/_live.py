@@ -14,7 +14,8 @@ import weakref
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
-from .._errors import ArmkitError
+from .._errors import ArmkitError, InputError
+from .._inputs import shown
 from ..scene import Scene, ScenePhysics, rest_scene
 from ._plan import Plan, Step, TaskError, cube_text, pose_error
 from ._precision import Precision, precision_of
@@ -73,7 +74,13 @@ def live_scene(arm: Arm, scene: Scene, dry_run: bool, task: str, held: str | Non
 
     Raises:
         TaskError: the gripper holds a cube other than ``held`` (nothing moves).
+        InputError: ``scene`` is not a Scene.
     """
+    if not isinstance(scene, Scene):
+        raise InputError(
+            f"{task}: scene must be a Scene; load one with armkit.scene.load_scene("
+            f"'board_001'), got {shown(scene)}"
+        )
     physics = attached(arm) if dry_run else attach_scene(arm, scene)
     if physics is None or physics.scene.name != scene.name:
         return scene

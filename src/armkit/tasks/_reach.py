@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from .._errors import InputError
+from .._inputs import is_number, shown
 from .._terminal import count
 from ..scene import Scene
 from ..sensing import DistanceSensor
@@ -95,6 +96,12 @@ def reach(
 
 
 def _check(near: float, shakes: int, amplitude: float) -> None:
+    numbers = is_number(near) and is_number(amplitude)
+    if not (numbers and isinstance(shakes, int | np.integer) and not isinstance(shakes, bool)):
+        raise InputError(
+            f"reach needs near and amplitude numbers [m] and shakes a whole number; got near "
+            f"{shown(near)}, shakes {shown(shakes)}, amplitude {shown(amplitude)}"
+        )
     if not (0.04 <= near <= 0.30 and 0 <= shakes <= 20 and 0 < amplitude <= 0.05):
         raise InputError(
             f"reach needs near 40..300 mm, shakes 0..20, amplitude 0..50 mm; got near "

@@ -8,7 +8,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .._errors import ArmkitError
+from .._errors import ArmkitError, InputError
+from .._inputs import shown
 from ._plan import Plan, Step
 
 if TYPE_CHECKING:
@@ -26,6 +27,11 @@ def run_plan(arm: Arm, plan: Plan, say: Callable[[int, Step], None] | None = Non
         ArmkitError: the arm is not where the plan starts (it moved since planning);
             nothing moves then.
     """
+    if not isinstance(plan, Plan):
+        raise InputError(
+            f"plan must be a Plan (from a task, e.g. tasks.pick(..., dry_run=True)), "
+            f"got {shown(plan)}"
+        )
     now = arm.driver.read()
     off = float(np.max(np.abs(now - plan.q_start)))
     if off > START_TOLERANCE:
