@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import inspect
 import math
 import sys
 import types
@@ -117,15 +118,22 @@ def test_a_job_runs_through_its_table_entry(
     a, _ = arm
     calls: list[tuple[Any, ...]] = []
 
-    def pick(arm_: Arm, scene: object, **kwargs: object) -> None:
+    real = armkit.tasks.move_item
+
+    def move_item(arm_: Arm, scene: object, **kwargs: object) -> None:
+        # the arguments must be ones the real task takes (a fake taking **kwargs hid
+        # 'pick(item=...)' while the real pick takes 'cube')
+        inspect.signature(real).bind(arm_, scene, **kwargs)
         calls.append((arm_, scene, kwargs))
         arm_.move_to(150, 0, 60, -90)
 
-    monkeypatch.setattr(armkit.tasks, "pick", pick, raising=False)
-    _run(a, "pose spot = xyz 150 0 30 pitch -90\npick spot\nturn waist by 10\n")
+    monkeypatch.setattr(armkit.tasks, "move_item", move_item)
+    text = "pose spot = xyz 150 0 30 pitch -90\nmove-item spot to xyz 150 50 30\nturn waist by 10\n"
+    _run(a, text)
     ((who, scene, kwargs),) = calls
     assert who is a and scene.name == "empty"  # a script without a scene: the empty table
     assert kwargs["item"] == pytest.approx([150.0, 0.0, 30.0])  # tasks take points in mm
+    assert kwargs["to"] == pytest.approx([150.0, 50.0, 30.0])
     assert a.angles()["waist"] == pytest.approx(10, abs=0.1)
 
 
@@ -155,10 +163,11 @@ def test_a_missing_job_function_refuses_the_run_before_any_motion(
 
     from armkit.script._jobs import JOBS
 
-    monkeypatch.setitem(JOBS, "search", replace(JOBS["search"], call="armkit.tasks:no_such_job"))
+    job = replace(JOBS["move-item"], call="armkit.tasks:no_such_job")
+    monkeypatch.setitem(JOBS, "move-item", job)
     a, driver = arm
-    with pytest.raises(ScriptCheckError, match="the job 'search' is not available"):
-        _run(a, "home\nsearch from 30 to 120 step 5\n")
+    with pytest.raises(ScriptCheckError, match="the job 'move-item' is not available"):
+        _run(a, "home\nmove-item xyz 150 0 30 to xyz 150 50 30\n")
     assert driver.sent == 0
 
 

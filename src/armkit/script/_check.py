@@ -88,6 +88,7 @@ def check_source(
     scene: SceneInfo | None = None,
     q0: F64 | None = None,
     grip0: float | None = None,
+    held: str | None = None,
     require_jobs: bool = False,
     repeat: int = 1,
     base_dir: Path | None = None,
@@ -101,6 +102,7 @@ def check_source(
         q0: joint angles at the start [rad], shape (dof,) (None: the model's home).
         grip0: gripper opening at the start [m] (None: not set yet, so the model's own
             grip length, as ``Arm`` before its first ``grip``; timed as if open).
+        held: the cube a ``pick`` job took before (the shell), for ``place``.
         require_jobs: a job whose function is missing is an error (``run``), not a warning.
         repeat: run the whole script this many times (``--repeat``).
         base_dir: where relative file names start (default: the script's folder).
@@ -119,7 +121,7 @@ def check_source(
     _check_driver(setup.driver, diagnostics)
     if scene is None and setup.scene is not None:
         scene = load_scene_info(setup.scene.value, here, setup.scene.value_loc, diagnostics)
-    arm = ModelArm(model, model.home if q0 is None else q0, grip0)
+    arm = ModelArm(model, model.home if q0 is None else q0, grip0, held)
     walker = Walker(Resolver(model, scene, here), arm, source.name, checking=True)
     _seed(walker, program, env)
     walker.walk(looped(program.statements, repeat))

@@ -25,7 +25,7 @@ from ._ast import (
 )
 from ._cursor import Cursor, Problem
 from ._jobs import JOBS, QUANTITY_KINDS, JobParam, job_keywords
-from ._lexer import Token
+from ._lexer import Token, is_cell
 from ._units import UNITS
 
 Reader = Callable[[Cursor, Token], Statement]
@@ -174,7 +174,11 @@ def read_job(c: Cursor, t: Token) -> Statement:
         if not p.required and (c.at_end() or c.peek() is None or _is_keyword(c, keyed)):
             continue
         args.append(_job_arg(c, p))
+    refused = dict(spec.refused)
     while not c.at_end():
+        nxt = c.peek()
+        if nxt is not None and nxt.text in refused and nxt.text not in keyed:
+            raise Problem(nxt.col, refused[nxt.text])
         word = c.word(tuple(keyed), "an argument keyword")
         p = keyed.pop(word.text)
         args.append(_job_arg(c, p))
@@ -193,8 +197,20 @@ def _is_keyword(c: Cursor, keyed: dict[str, JobParam]) -> bool:
 def _job_arg(c: Cursor, p: JobParam) -> JobArg:
     loc = c.loc()
     if p.kind == "where":
+        t = c.peek()
+        if t is not None and t.kind == "word" and "[" in t.text:  # board[ROW,COL]
+            if not is_cell(t.text):
+                raise Problem(
+                    t.col,
+                    f"expected a board's socket as NAME[ROW,COL] (board[0,1]), got {t.text!r}",
+                )
+            c.take(p.name.upper())
+            return JobArg(p.name, t.text, loc)
         return JobArg(p.name, c.target(p.name.upper()), loc)
     if p.kind == "object":
+        t = c.peek()
+        if p.hint and t is not None and (not t.is_name or t.text in c.reserved):
+            raise Problem(t.col, f"expected {p.name.upper()}, got {t.text!r}: {p.hint}")
         return JobArg(p.name, PoseName(c.name(p.name.upper()).text, loc), loc)
     if p.kind == "objects":
         names = [PoseName(c.name(p.name.upper()).text, loc)]

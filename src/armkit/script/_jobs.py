@@ -3,7 +3,9 @@
 function that does it.
 
 Adding a job is one entry in ``JOBS``: the parameters (how they are written and
-checked) and ``call``, ``"module:function"``, imported only when the job runs.
+checked), ``call``, ``"module:function"``, imported only when the job runs, and
+``check``, the function ``armkit check`` calls with the scene and the same
+arguments (the job's own argument checks, so what check passes the job takes).
 The function is called as ``function(arm, scene, **arguments)`` with
 
 - ``where`` arguments: a scene object's or place's name (str), or a gripper
@@ -13,6 +15,9 @@ The function is called as ``function(arm, scene, **arguments)`` with
 - ``file``: a ``pathlib.Path`` (relative paths are relative to the script);
 - ``choice``: the word; ``angle`` [rad]; ``length`` [m]; ``percent`` as a
   fraction; ``count`` an int. Optional arguments not written are not passed.
+
+``place`` puts down the cube the script's ``pick`` took: the runner passes it as
+``cube`` (the checker refuses a ``place`` with nothing picked).
 """
 
 from __future__ import annotations
@@ -21,6 +26,8 @@ import importlib
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Literal
+
+import numpy as np
 
 from .._errors import ScriptError
 from ._units import Dim
@@ -46,6 +53,7 @@ class JobParam:
         keyword: the word written before it (``to``), or None for a positional one.
         required: must be written.
         choices: the words of a ``choice``, or the suffixes a ``file`` may have.
+        hint: said when what is written cannot be this argument (how to write it).
     """
 
     name: str
@@ -53,6 +61,7 @@ class JobParam:
     keyword: str | None = None
     required: bool = True
     choices: tuple[str, ...] = ()
+    hint: str = ""
 
     @property
     def usage(self) -> str:
@@ -66,11 +75,16 @@ class JobParam:
 
 @dataclass(frozen=True)
 class JobSpec:
-    """A job: its parameters, the function that runs it, one line of help."""
+    """A job: its parameters, the function that runs it, one line of help, the
+    function that checks its arguments (``"module:function"``, called as
+    ``function(scene, **arguments)``; None: none), and words it refuses with why
+    (``refused``: word -> message)."""
 
     params: tuple[JobParam, ...]
     call: str
     help: str
+    check: str | None = None
+    refused: tuple[tuple[str, str], ...] = ()
 
     def usage(self, command: str) -> str:
         """``move-item ITEM to WHERE``."""
@@ -80,21 +94,35 @@ class JobSpec:
 DRAW_SUFFIXES = (".svg", ".gcode", ".nc", ".ngc", ".gc")
 PLAY_SUFFIXES = (".mid", ".midi", ".rtttl", ".txt")
 
+CHECKS = "armkit.script._job_checks"
+PICK_HINT = (
+    "pick takes a cube of the scene by its name (pick red); an item known only by "
+    "its point is carried with move-item xyz X Y Z to WHERE"
+)
+STACK_ON = (
+    "stack takes no 'on WHERE': the first cube named stays where it is and the others "
+    "go on it (stack red green blue puts green on red, blue on green)"
+)
+
 JOBS: dict[str, JobSpec] = {
     "pick": JobSpec(
-        (JobParam("item", "where"),),
+        (JobParam("cube", "object", hint=PICK_HINT),),
         "armkit.tasks:pick",
-        "pick up a scene object, or what is at a pose or xyz point",
+        "pick up a cube of the scene (by name) and stay above it",
+        check=f"{CHECKS}:pick",
     ),
     "place": JobSpec(
-        (JobParam("where", "where"),),
+        (JobParam("to", "where"),),
         "armkit.tasks:place",
-        "put the held object down at a scene place, a pose or an xyz point",
+        "put the picked cube down at a scene place, board[ROW,COL], a cube, a container, "
+        "a pose or an xyz point",
+        check=f"{CHECKS}:place",
     ),
     "move-item": JobSpec(
         (JobParam("item", "where"), JobParam("to", "where", keyword="to")),
         "armkit.tasks:move_item",
         "000: pick an item up, lift it, carry it and put it down",
+        check=f"{CHECKS}:move_item",
     ),
     "rotate-cube": JobSpec(
         (
@@ -103,11 +131,14 @@ JOBS: dict[str, JobSpec] = {
         ),
         "armkit.tasks:rotate_cube",
         "001: turn a cube onto its side (forward) or back up (backward) where it stands",
+        check=f"{CHECKS}:rotate_cube",
     ),
     "stack": JobSpec(
-        (JobParam("cubes", "objects"), JobParam("on", "where", keyword="on", required=False)),
+        (JobParam("cubes", "objects"),),
         "armkit.tasks:stack",
-        "001: stack cubes, each on the one before (the first on WHERE if given)",
+        "001: turn every cube in place, then stack them on the first, each on the one before",
+        check=f"{CHECKS}:stack",
+        refused=(("on", STACK_ON),),
     ),
     "search": JobSpec(
         (
@@ -118,6 +149,7 @@ JOBS: dict[str, JobSpec] = {
         ),
         "armkit.tasks:search",
         "002: scan with the distance sensor, pick up what is found, drop it in a container",
+        check=f"{CHECKS}:search",
     ),
     "draw": JobSpec(
         (
@@ -127,6 +159,7 @@ JOBS: dict[str, JobSpec] = {
         ),
         "armkit.drawing:draw",
         "draw an SVG or G-code file on a sheet (picking the pen up and putting it back)",
+        check=f"{CHECKS}:draw",
     ),
     "play": JobSpec(
         (
@@ -137,6 +170,7 @@ JOBS: dict[str, JobSpec] = {
         ),
         "armkit.music:play",
         "play a MIDI, RTTTL or note-list tune on the scene's instrument",
+        check=f"{CHECKS}:play",
     ),
 }
 
@@ -169,3 +203,24 @@ def job_function(command: str) -> Callable[..., object]:
             "'armkit check' accepts it, 'armkit run' cannot run it yet"
         )
     return func  # type: ignore[no-any-return]
+
+
+def job_check(command: str) -> Callable[..., object] | None:
+    """The function that checks ``command``'s arguments (None: the job has none)."""
+    spec = JOBS[command]
+    if spec.check is None:
+        return None
+    module_name, _, func_name = spec.check.partition(":")
+    return getattr(importlib.import_module(module_name), func_name)  # type: ignore[no-any-return]
+
+
+def as_called(args: dict[str, object]) -> dict[str, object]:
+    """The arguments as the job's function (and its check) takes them: a ``where``
+    point [m], shape (3,), as (x, y, z) [mm]; the rest as they are."""
+    return {k: _in_mm(v) for k, v in args.items()}
+
+
+def _in_mm(value: object) -> object:
+    if isinstance(value, np.ndarray) and value.shape == (3,):
+        return tuple(float(v) * 1000.0 for v in value)
+    return value

@@ -20,6 +20,9 @@ _NUMBER = re.compile(
 _STRING = re.compile(r'"(?P<body>(?:[^"\\]|\\.)*)"')
 _WORD = re.compile(r'[^\s#"=(),]+')
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_-]*\Z")
+# a board's socket, ``board[ROW,COL]`` (spaces allowed inside the brackets): one word
+_CELL = re.compile(r"[A-Za-z_][A-Za-z0-9_-]*\[[^\]#\"]*\]")
+_CELL_WHOLE = re.compile(r"[A-Za-z_][A-Za-z0-9_-]*\[\s*\d+\s*,\s*\d+\s*\]\Z")
 
 
 @dataclass(frozen=True)
@@ -84,7 +87,15 @@ def tokenize(line: str) -> list[Token]:
     return tokens
 
 
+def is_cell(text: str) -> bool:
+    """``text`` names a board's socket: ``NAME[ROW,COL]``."""
+    return _CELL_WHOLE.match(text) is not None
+
+
 def _word_or_number(line: str, i: int) -> Token:
+    cell = _CELL.match(line, i)
+    if cell is not None:
+        return Token("word", cell.group(0), i + 1)
     m = _NUMBER.match(line, i)
     if m is not None:
         return Token("number", m.group(0), i + 1, float(m["num"]), m["unit"])

@@ -17,11 +17,12 @@ import math
 from collections.abc import Hashable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import JointLimitError, UnreachableError
+from .._errors import JointLimitError, ScriptError, UnreachableError
 from ..drivers.timed import (
     Forecast,
     default_timing,
@@ -36,7 +37,7 @@ from ..motion import line, plan_path, time_path, trapezoid
 from ._ast import Loc, Statement
 from ._backend import Frame
 from ._plan import Plan, PlanStep
-from ._resolve import JointPose, Point, Target
+from ._resolve import UNKNOWN, JointPose, Point, Target
 
 F64 = NDArray[np.float64]
 GRIP_SPEED = 0.05  # gripper opening speed assumed for timing [m/s]
@@ -44,13 +45,18 @@ TOOL_ACCEL = 0.5  # tool acceleration of straight lines [m/s^2] (TimedStreaming'
 LINE_SPACING = 0.002  # straight lines are checked every 2 mm [m]
 SWEEP_SAMPLES = 16  # points checked against the table along a joint move
 TABLE_TOLERANCE = 1e-4  # [m]
+NOTHING_PICKED = (
+    "place puts down the cube the script picked, and no cube is picked here; "
+    "write 'pick CUBE' before it"
+)
 
 
 @dataclass(frozen=True)
 class ArmState:
     """What the checker knows of the arm; None = not known before it runs (``grip``:
     not set yet, the model's own grip length). ``motor_s``: motor-seconds a timed
-    arm has used [s] (its battery's count)."""
+    arm has used [s] (its battery's count). ``held``: the cube a ``pick`` job took
+    (until ``place``), None, or ``UNKNOWN``."""
 
     q: F64 | None
     grip: float | None
@@ -58,14 +64,18 @@ class ArmState:
     tool_speed: float = 0.05
     light: bool | None = None
     motor_s: float = 0.0
+    held: Any = None
 
 
 class ModelArm:
     """A ``Backend`` that simulates the script on the model and builds the ``Plan``."""
 
-    def __init__(self, model: ArmModel, q0: F64 | None, grip0: float | None) -> None:
+    def __init__(
+        self, model: ArmModel, q0: F64 | None, grip0: float | None, held: str | None = None
+    ) -> None:
         self.model = model
-        self.state = ArmState(None if q0 is None else np.array(q0, dtype=np.float64), grip0)
+        q = None if q0 is None else np.array(q0, dtype=np.float64)
+        self.state = ArmState(q, grip0, held=held)
         self.plan = Plan(model.joint_names)
         self.time = 0.0  # sum of the known durations so far [s]
         # an OWI-535's timing as its driver gives a unit not yet calibrated; None: not one
@@ -143,6 +153,7 @@ class ModelArm:
         self._step(q1, seconds)
 
     def job(self, command: str, args: dict[str, object]) -> None:
+        held = self._held(command, args)
         seed = self.model.home if self.state.q is None else self.state.q
         for name, value in args.items():
             if isinstance(value, np.ndarray):
@@ -150,13 +161,30 @@ class ModelArm:
                     ik(self._kin(), value, None, seed)
                 except UnreachableError as exc:
                     raise UnreachableError(f"{command} {name}: {exc}", reason=exc.reason) from None
-        self.state = replace(self.state, q=None, grip=None)
+        self.state = replace(self.state, q=None, grip=None, held=held)
         self._step(None, None)
+
+    def _held(self, command: str, args: dict[str, object]) -> Any:
+        """The cube held after the job ``command``; ScriptError if the job cannot be
+        done with what is held now (``place`` with nothing, any other with a cube)."""
+        held = self.state.held
+        if held is not UNKNOWN:
+            if command == "place" and held is None:
+                raise ScriptError(NOTHING_PICKED)
+            if command != "place" and held is not None:
+                raise ScriptError(
+                    f"{command}: the gripper holds {held} (picked by 'pick'); "
+                    "put it down first with 'place WHERE'"
+                )
+        if command == "pick":
+            cube = args.get("cube")
+            return UNKNOWN if cube is None else cube
+        return None if command == "place" else held
 
     def snapshot(self) -> Hashable | None:
         s = self.state
         q = None if s.q is None else tuple(np.round(s.q, 9).tolist())
-        return q, s.grip, s.speed, s.tool_speed, s.light
+        return q, s.grip, s.speed, s.tool_speed, s.light, repr(s.held)
 
     def elapsed(self) -> float:
         return self.time
@@ -170,13 +198,13 @@ class ModelArm:
         self.plan.total += iterations * seconds
 
     def lose_track(self) -> None:
-        """After a failed statement: where the arm is is no longer known."""
-        self.state = replace(self.state, q=None)
+        """After a failed statement: where the arm is, and what it holds, is no longer known."""
+        self.state = replace(self.state, q=None, held=UNKNOWN)
 
     @contextmanager
     def blind(self) -> Iterator[None]:
         saved = (self.state, self.time, self._recording)
-        self.state = ArmState(None, None)
+        self.state = ArmState(None, None, held=UNKNOWN)
         self._recording = False
         try:
             yield

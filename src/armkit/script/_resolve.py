@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -20,6 +20,9 @@ from ._ast import XYZ, Here, JobArg, JointList, Loc, Num, PoseName, Quantity, Ta
 from ._diagnostics import suggest
 from ._jobs import JOBS, JobParam
 from ._units import NOUN, Dim, UnitProblem, to_si
+
+if TYPE_CHECKING:
+    from ..scene import Scene
 
 F64 = NDArray[np.float64]
 SHEET_PRESETS = ("A4", "A5", "A6")
@@ -93,6 +96,18 @@ class SceneInfo:
     label: str
     names: frozenset[str] | None
     scene: object | None
+
+
+def job_scene(info: SceneInfo | None) -> Scene | None:
+    """The ``Scene`` jobs get: the script's, or the empty table if it names none
+    (None: its scene could not be loaded by this armkit)."""
+    if info is None:
+        from ..scene import load_scene
+
+        return load_scene("empty")
+    from ..scene import Scene as Loaded
+
+    return info.scene if isinstance(info.scene, Loaded) else None
 
 
 class Resolver:

@@ -20,9 +20,9 @@ from ..scene import Scene
 from ._ast import Loc, Source, Statement
 from ._backend import Frame
 from ._check import CheckResult, check_source, looped
-from ._jobs import job_function
-from ._model_arm import LINE_SPACING
-from ._resolve import JointPose, Point, Resolver, SceneInfo, Target
+from ._jobs import as_called, job_function
+from ._model_arm import LINE_SPACING, NOTHING_PICKED
+from ._resolve import JointPose, Point, Resolver, SceneInfo, Target, job_scene
 from ._walk import Walker
 
 T = TypeVar("T")
@@ -37,6 +37,7 @@ class ArmBackend:
         self.fraction: float | None = None  # joint moves: fraction of max speed (None: 1)
         self.tool_speed = TimedStreaming().speed  # straight lines [m/s]
         self.grip_width: float | None = None
+        self.held: str | None = None  # the cube a ``pick`` job took, until ``place``
 
     def begin(self, stmt: Statement, frames: tuple[Frame, ...]) -> None:
         if self.on_step is not None:
@@ -92,15 +93,23 @@ class ArmBackend:
 
     def job(self, command: str, args: dict[str, object]) -> None:
         func = job_function(command)
-        func(self.arm, self._scene(), **{k: _in_mm(v) for k, v in args.items()})
+        called = as_called(args)
+        if command == "place":  # the cube the script's ``pick`` took
+            if self.held is None:
+                raise ScriptError(NOTHING_PICKED)
+            called = {"cube": self.held, **called}
+        func(self.arm, self._scene(), **called)
+        if command == "pick":
+            self.held = str(args["cube"])
+        elif command == "place":
+            self.held = None
 
     def _scene(self) -> Scene:
         """The script's scene; a script that names none works on the empty table."""
-        if self.scene is not None and isinstance(self.scene.scene, Scene):
-            return self.scene.scene
-        from ..scene import load_scene
-
-        return load_scene("empty")
+        scene = job_scene(self.scene)
+        if scene is None:
+            raise ScriptError(f"the scene {self.scene and self.scene.label} could not be loaded")
+        return scene
 
     def snapshot(self) -> Hashable | None:
         return None
@@ -198,10 +207,3 @@ def run_checked(
     except BaseException:
         arm.stop()
         raise
-
-
-def _in_mm(value: object) -> object:
-    """A ``where`` point [m], shape (3,), as the tasks take it: (x, y, z) [mm]."""
-    if isinstance(value, np.ndarray) and value.shape == (3,):
-        return tuple(float(v) * 1000.0 for v in value)
-    return value

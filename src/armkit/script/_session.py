@@ -58,7 +58,8 @@ class Session:
         self.walker = Walker(self.resolver, self.backend, "<shell>", checking=False)
         self.walker.redefine = True
         self.teaching = Teaching(arm.model.name, pose_now(arm))
-        self.next_line = 1
+        self.next_line = 1  # the line the next statement starts on
+        self._typed = 0  # lines typed so far
         self.limp = False  # torque off (``limp``) until ``hold``
         self._pending: list[str] = []
         self._depth = 0
@@ -69,7 +70,11 @@ class Session:
         return [*self.resolver.poses, *self.walker.procs]
 
     def handle(self, line: str) -> Reply:
-        """One line typed: a shell word, a statement, or part of a block."""
+        """One line typed: a shell word, a statement, or part of a block. Every line
+        typed counts in the positions errors name (``<shell>:LINE:COL``)."""
+        if not self._pending:
+            self.next_line = self._typed + 1
+        self._typed += 1
         words = line.split()
         if not self._pending and words and words[0] in SHELL_WORDS:
             return self._shell_word(words)
@@ -93,10 +98,12 @@ class Session:
         """Check ``text`` against the arm as it is now, then run it."""
         source = Source("<shell>", text, self.next_line)
         self.next_line += max(1, len(source.lines))
+        self._typed = max(self._typed, self.next_line - 1)
         env = Env(self.resolver.poses, self.walker.procs)
         result = check_source(
             source, model=self.arm.model, scene=self.scene, q0=self.arm.driver.read(),
-            grip0=self.backend.grip_width, require_jobs=True, base_dir=self.base_dir, env=env,
+            grip0=self.backend.grip_width, held=self.backend.held, require_jobs=True,
+            base_dir=self.base_dir, env=env,
         )  # fmt: skip
         if any(isinstance(s, Header) for s in result.program.statements):
             return Reply("error: choose the arm, driver and scene when starting: "

@@ -29,8 +29,9 @@ from ._ast import (
 from ._backend import Backend, Frame, ScriptRunError
 from ._diagnostics import Diagnostic, suggest
 from ._grammar import BLOCKS, COMMANDS
-from ._jobs import JOBS
-from ._resolve import UNKNOWN, Arg, Fail, Resolver
+from ._job_checks import JobArgProblem
+from ._jobs import JOBS, as_called, job_check
+from ._resolve import UNKNOWN, Arg, Fail, Resolver, job_scene
 
 MAX_CALL_DEPTH = 50
 CHECK_BUDGET = 20_000  # statements the checker simulates before it stops unrolling repeats
@@ -128,9 +129,26 @@ class Walker:
         elif isinstance(s, RunMotor):
             self._run_motor(s)
         elif isinstance(s, Job):
-            b.job(s.command, r.job_args(s.command, s.args, b.here()))
+            args = r.job_args(s.command, s.args, b.here())
+            if self.checking:
+                self._check_job(s, args)
+            b.job(s.command, args)
         elif isinstance(s, Simple):
             self._simple(s)
+
+    def _check_job(self, s: Job, args: dict[str, object]) -> None:
+        """The job's own checks of its arguments (``JobSpec.check``), as it will get
+        them; skipped while an argument is not known before it runs."""
+        check = job_check(s.command)
+        scene = job_scene(self.resolver.scene)
+        values = [*args.values(), *(v for a in args.values() if isinstance(a, tuple) for v in a)]
+        if check is None or scene is None or any(v is None for v in values):
+            return
+        try:
+            check(scene, **as_called(args))
+        except JobArgProblem as exc:
+            at = [a.loc for name in exc.names for a in s.args if a.name == name]
+            raise Fail(at[0] if at else s.loc, str(exc)) from None
 
     def _simple(self, s: Simple) -> None:
         b, model = self.backend, self.resolver.model

@@ -1,0 +1,136 @@
+"""Each job's argument checks as ``armkit check`` makes them: the checks the job's
+own function (``armkit.tasks``, ``armkit.drawing``, ``armkit.music``) makes before
+it plans, called with the script's scene and the arguments the job will get
+(``_jobs.as_called``), so a script that passes its check does not stop half-way
+on an argument. No range or rule is written here a second time.
+
+Each function is ``check(scene, **arguments)`` (``JobSpec.check``); a refusal is a
+``JobArgProblem`` naming the arguments it is about (the checker points at the first
+one written).
+"""
+
+from __future__ import annotations
+
+import inspect
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
+from pathlib import Path
+
+from .._errors import ArmkitError, InputError
+from ..scene import Scene
+
+
+class JobArgProblem(InputError):
+    """A job's argument its function would refuse; ``names``: the arguments it is about."""
+
+    def __init__(self, names: tuple[str, ...], message: str) -> None:
+        super().__init__(message)
+        self.names = names
+
+
+@contextmanager
+def _about(*names: str) -> Iterator[None]:
+    try:
+        yield
+    except (ArmkitError, ValueError) as exc:
+        raise JobArgProblem(names, str(exc)) from None
+
+
+def pick(scene: Scene, cube: str) -> None:
+    """``tasks.pick``: a cube of the scene."""
+    with _about("cube"):
+        scene.cube(cube)
+
+
+def place(scene: Scene, to: str | Sequence[float]) -> None:
+    """``tasks.place``: where to, as ``tasks.resolve`` reads it."""
+    from ..tasks import resolve
+
+    with _about("to"):
+        resolve(scene, to)
+
+
+def move_item(scene: Scene, item: str | Sequence[float], to: str | Sequence[float]) -> None:
+    """``tasks.move_item``: a cube of the scene (or a point) and where to."""
+    from ..tasks import resolve
+
+    with _about("item"):
+        if isinstance(item, str):
+            scene.cube(item)
+        else:
+            resolve(scene, item)
+    with _about("to"):
+        resolve(scene, to)
+
+
+def rotate_cube(scene: Scene, cube: str, direction: str = "forward") -> None:
+    """``tasks.rotate_cube``: a cube of the scene (the direction is a choice the
+    grammar reads)."""
+    with _about("cube"):
+        scene.cube(cube)
+
+
+def stack(scene: Scene, cubes: Sequence[str]) -> None:
+    """``tasks.stack``: two or more different cubes of the scene."""
+    from ..tasks import stack_names
+
+    with _about("cubes"):
+        for name in stack_names(cubes):
+            scene.cube(name)
+
+
+def search(
+    scene: Scene,
+    start: float | None = None,
+    stop: float | None = None,
+    step: float | None = None,
+    into: str | None = None,
+) -> None:
+    """``tasks.search``: its scan angles (the job's defaults for those not written)
+    and the container."""
+    from ..tasks import search as job
+    from ..tasks._search import _only_container, check_angles
+
+    default = {k: p.default for k, p in inspect.signature(job).parameters.items()}
+    with _about("start", "stop", "step"):
+        check_angles(
+            default["start"] if start is None else start,
+            default["stop"] if stop is None else stop,
+            default["step"] if step is None else step,
+        )
+    with _about("into"):
+        scene.container(into or _only_container(scene))
+
+
+def draw(scene: Scene, file: Path, sheet: str | None = None, pen: str | None = None) -> None:
+    """``drawing.draw``: the sheet and the pen of the scene, and the file as it reads it."""
+    from ..drawing._job import find_pen, find_sheet
+    from ..drawing._plan import read_drawing
+
+    with _about("sheet"):
+        find_sheet(scene, sheet)
+    with _about("pen"):
+        find_pen(scene, pen)
+    with _about("file"):
+        read_drawing(file)
+
+
+def play(
+    scene: Scene,
+    file: Path,
+    on: str | None = None,
+    tempo: float | None = None,
+    transpose: int | None = None,
+) -> None:
+    """``music.play``: tempo, transpose, the instrument, and the score as it reads it."""
+    from ..music import load_score
+    from ..music._play import _tempo, _transpose, instruments
+
+    with _about("tempo"):
+        _tempo(tempo)
+    with _about("transpose"):
+        shift = _transpose(transpose)
+    with _about("on"):
+        instruments(scene, on)
+    with _about("file"):
+        load_score(file, shift)
