@@ -25,6 +25,8 @@ from ._fit import fit_transform as fit_transform
 from ._gcode import read_gcode as read_gcode
 from ._job import DrawJob as DrawJob
 from ._job import DrawOptions as DrawOptions
+from ._job import find_pen as find_pen
+from ._job import find_sheet as find_sheet
 from ._job import plan_draw as plan_draw
 from ._merge import merge_strokes as merge_strokes
 from ._metrics import DrawingMetrics as DrawingMetrics

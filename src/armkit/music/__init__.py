@@ -43,6 +43,9 @@ from ._performance import Strike as Strike
 from ._performance import check_performance as check_performance
 from ._plan import plan_performance as plan_performance
 from ._play import Played as Played
+from ._play import check_tempo as check_tempo
+from ._play import check_transpose as check_transpose
+from ._play import instruments as instruments
 from ._play import play as play
 from ._play import prepare as prepare
 from ._plot import PLOT_SUFFIXES as PLOT_SUFFIXES

@@ -107,8 +107,8 @@ def prepare(
     params: StrikeParams | None = None,
 ) -> Performance:
     """Plan and check the whole piece (see ``play``); the Performance to send."""
-    factor = _tempo(tempo)
-    shift = _transpose(transpose)
+    factor = check_tempo(tempo)
+    shift = check_transpose(transpose)
     layout = instruments(scene, on)
     score = file.transposed(shift) if isinstance(file, Score) else load_score(file, shift)
     model = mallet_model(arm.model, scene)
@@ -146,7 +146,8 @@ def _in_all(err: RangeError, shift: int) -> RangeError:
     return RangeError(message, err.notes, total)
 
 
-def _tempo(tempo: float | None) -> float:
+def check_tempo(tempo: float | None) -> float:
+    """The tempo factor (None: 1.0), 0.1..4; else InputError."""
     if tempo is None:
         return 1.0
     if not (isinstance(tempo, (int, float)) and math.isfinite(tempo) and 0.1 <= tempo <= 4.0):
@@ -156,7 +157,8 @@ def _tempo(tempo: float | None) -> float:
     return float(tempo)
 
 
-def _transpose(transpose: int | None) -> int:
+def check_transpose(transpose: int | None) -> int:
+    """The transposition [semitones] (None: 0), a whole number within +-48; else InputError."""
     if transpose is None:
         return 0
     if isinstance(transpose, bool) or not isinstance(transpose, int) or abs(transpose) > 48:

@@ -88,8 +88,8 @@ def search(
 ) -> None:
     """``tasks.search``: its scan angles (the job's defaults for those not written)
     and the container."""
+    from ..tasks import check_angles, only_container
     from ..tasks import search as job
-    from ..tasks._search import _only_container, check_angles
 
     default = {k: p.default for k, p in inspect.signature(job).parameters.items()}
     with _about("start", "stop", "step"):
@@ -99,13 +99,12 @@ def search(
             default["step"] if step is None else step,
         )
     with _about("into"):
-        scene.container(into or _only_container(scene))
+        scene.container(into or only_container(scene))
 
 
 def draw(scene: Scene, file: Path, sheet: str | None = None, pen: str | None = None) -> None:
     """``drawing.draw``: the sheet and the pen of the scene, and the file as it reads it."""
-    from ..drawing._job import find_pen, find_sheet
-    from ..drawing._plan import read_drawing
+    from ..drawing import find_pen, find_sheet, read_drawing
 
     with _about("sheet"):
         find_sheet(scene, sheet)
@@ -123,13 +122,12 @@ def play(
     transpose: int | None = None,
 ) -> None:
     """``music.play``: tempo, transpose, the instrument, and the score as it reads it."""
-    from ..music import load_score
-    from ..music._play import _tempo, _transpose, instruments
+    from ..music import check_tempo, check_transpose, instruments, load_score
 
     with _about("tempo"):
-        _tempo(tempo)
+        check_tempo(tempo)
     with _about("transpose"):
-        shift = _transpose(transpose)
+        shift = check_transpose(transpose)
     with _about("on"):
         instruments(scene, on)
     with _about("file"):

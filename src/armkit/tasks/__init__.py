@@ -24,6 +24,8 @@ from ._reach import ReachResult as ReachResult
 from ._reach import reach as reach
 from ._run import run_plan as run_plan
 from ._search import SearchResult as SearchResult
+from ._search import check_angles as check_angles
+from ._search import only_container as only_container
 from ._search import search as search
 from ._targets import Target as Target
 from ._targets import resolve as resolve

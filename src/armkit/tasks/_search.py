@@ -99,7 +99,7 @@ def search(
     """
     check_angles(start, stop, step)
     scene = live_scene(arm, scene, False, "search")
-    bin_name = into or _only_container(scene)
+    bin_name = into or only_container(scene)
     scene.container(bin_name)
     scan = plan_scan(arm, scene, start, stop, step)
     with scan_sensor(arm, scan, channel, port, seed) as sensor:
@@ -127,7 +127,8 @@ def check_angles(start: float, stop: float, step: float) -> None:
         )
 
 
-def _only_container(scene: Scene) -> str:
+def only_container(scene: Scene) -> str:
+    """The name of the scene's one container; InputError if it has none or several."""
     if len(scene.containers) != 1:
         names = ", ".join(c.name for c in scene.containers) or "none"
         raise InputError(f"search: say which container to drop into (into NAME); scene has {names}")
