@@ -7,9 +7,9 @@ from millimetres and degrees.
 from .._clock import Clock as Clock
 from .._clock import WallClock as WallClock
 from .._clock import clock_of as clock_of
+from .._polyline import distance_to_polyline as distance_to_polyline
 from ._approach import approach as approach
 from ._approach import retreat as retreat
-from ._deviation import distance_to_polyline as distance_to_polyline
 from ._paths import arc as arc
 from ._paths import circle as circle
 from ._paths import corners as corners

@@ -32,6 +32,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..._errors import UnreachableError
+from ..._polyline import distance_to_polyline
 from ...kinematics import fk
 from ...model import ArmModel
 from ._forecast import forecast_move
@@ -45,7 +46,6 @@ MIN_SHARE = 1.0  # a level spacing at least this share of the step
 SWITCH = 0.55  # a joint moves to its nearest level once the path is this many levels away
 STEP_POSES = 24  # poses along the path at which the smallest steps are worked out
 SWEEP_SAMPLES = 9  # tool points per run checked against the path
-CHUNK = 256  # tool points measured at once (memory: CHUNK x path points x 3)
 
 
 @dataclass(frozen=True)
@@ -172,17 +172,4 @@ def _deviation(model: ArmModel, sweeps: list[F64], points: F64) -> float:
     if not sweeps or len(points) < 2:
         return 0.0
     tool = fk(model, np.concatenate(sweeps))[:, :3, 3]
-    return float(_distance_to_polyline(tool, points).max())
-
-
-def _distance_to_polyline(x: F64, v: F64) -> F64:
-    """Distance [m] from each point of ``x``, (N, 3), to the polyline through ``v``, (M, 3)."""
-    a, ab = v[:-1], np.diff(v, axis=0)
-    length2 = np.maximum(np.sum(ab * ab, axis=1), 1e-30)
-    out = np.empty(x.shape[0])
-    for lo in range(0, x.shape[0], CHUNK):
-        rel = x[lo : lo + CHUNK, None, :] - a[None]
-        s = np.clip(np.sum(rel * ab, axis=2) / length2, 0.0, 1.0)
-        gap = rel - s[..., None] * ab
-        out[lo : lo + CHUNK] = np.sqrt(np.min(np.sum(gap * gap, axis=2), axis=1))
-    return out
+    return float(distance_to_polyline(tool, points).max())

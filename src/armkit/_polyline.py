@@ -1,11 +1,12 @@
-"""How far a travelled path strays from the ideal one."""
+"""How far a travelled path strays from the ideal one: distance to a polyline (used by
+``armkit.motion``, which exports it, and by the timed driver's waypoint planner)."""
 
 from __future__ import annotations
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._errors import InputError
+from ._errors import InputError
 
 F64 = NDArray[np.float64]
 _CHUNK = 1024
