@@ -16,6 +16,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ._errors import InputError
+from ._terminal import fixed
 
 F64 = NDArray[np.float64]
 
@@ -156,6 +157,6 @@ def mm(p: Any) -> str:
 
 
 def brief(v: float) -> str:
-    """A number for a message: one decimal, or 3 significant digits when huge (no -0.0)."""
-    text = f"{v:.1f}" if abs(v) < 1e6 else f"{v:.3g}"
-    return "0.0" if text == "-0.0" else text
+    """A number for a message: one decimal (``fixed``: no -0.0), or 3 significant digits
+    when huge."""
+    return fixed(v, 1) if abs(v) < 1e6 else f"{v:.3g}"
