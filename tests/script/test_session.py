@@ -117,9 +117,38 @@ def test_the_shell_loop_reads_lines_and_quits(
 ) -> None:
     a, _ = arm
     out = io.StringIO()
-    stdin = io.StringIO("move xyz 180 0 80 pitch -90\nmvoe\njog\nii\nwhere\nquit\nhome\n")
+    stdin = io.StringIO("move xyz 180 0 80 pitch -90\nmvoe\nturn waist by 10\nwhere\nquit\nhome\n")
     assert Shell(Session(a, base_dir=tmp_path), stdin=stdin, stdout=out).loop() == 0
     text = out.getvalue()
     assert "armkit x 180 y 0 z 80 p -90> " in text
     assert "unknown command 'mvoe'" in text
-    assert a.angles()["waist"] == pytest.approx(10, abs=0.2)
+    assert a.angles()["waist"] == pytest.approx(10, abs=0.2)  # and 'home' after quit never ran
+
+
+def test_jog_on_piped_input_is_refused_and_the_next_line_is_a_command(
+    arm: tuple[Arm, CountingDriver], tmp_path: Path
+) -> None:
+    """Piped lines are commands, never jog keys: 'jog' says why not and what to write,
+    sends nothing, saves no pose, records nothing; the shell reads on (was: the next
+    line was eaten as keys, 'v' of 'move' saving p1 and 'e' of 'xyz' turning the wrist)."""
+    a, driver = arm
+    s = Session(a, base_dir=tmp_path)
+    lines, sent = list(s.teaching.lines), driver.sent
+    out = io.StringIO()
+    assert Shell(s, stdin=io.StringIO("jog\njog 10\n"), stdout=out).loop() == 0
+    said = [t for t in out.getvalue().split("\n") if "jog" in t]
+    assert len(said) == 2 and said[0] == said[1]  # one line each, the same
+    assert said[0].endswith(
+        "error: jog reads single keys from a terminal and this input is not one (lines piped "
+        "or from a file), so nothing moved; write the moves as lines instead: turn waist by 5, "
+        "joints A1 ... An, move xyz X Y Z [pitch P], grip open|close"
+    )
+    assert "jog keys:" not in out.getvalue()
+    assert driver.sent == sent and s.teaching.lines == lines and not s.resolver.poses
+
+    out = io.StringIO()
+    stdin = io.StringIO("jog\nmove xyz 200 0 100 pitch -45\nwhere\n")
+    assert Shell(s, stdin=stdin, stdout=out).loop() == 0
+    assert "gripper at x 200.0 y 0.0 z 100.0 mm, pitch -45.0 deg" in out.getvalue()
+    assert not s.resolver.poses  # no 'v' key saved a pose
+    assert s.teaching.lines == [*lines, "move xyz 200 0 100 pitch -45"]

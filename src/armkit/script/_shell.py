@@ -1,6 +1,7 @@
 """``armkit shell``: the session at a terminal, with readline history, Tab
 completion of commands, pose names and joints, the arm's position in the prompt,
-and jog mode reading one key at a time (000's basic mode)."""
+and jog mode reading one key at a time (000's basic mode; refused when the input is
+not a terminal, so piped lines stay commands)."""
 
 from __future__ import annotations
 
@@ -94,6 +95,9 @@ class Shell:
         self.stdout.flush()
 
     def _jog(self, step: float) -> None:
+        if not self.stdin.isatty():  # piped lines would be eaten as keys: refuse, move nothing
+            self._say(self._no_jog())
+            return
         self._say(JOG_HELP)
 
         def show(text: str) -> None:
@@ -108,10 +112,16 @@ class Shell:
             self._say("\nstopped")
         self._say("")
 
+    def _no_jog(self) -> str:
+        """Why ``jog`` is refused on input that is not a terminal, and what to write."""
+        joint = self.session.arm.model.joint_names[0]
+        return (
+            "error: jog reads single keys from a terminal and this input is not one (lines "
+            "piped or from a file), so nothing moved; write the moves as lines instead: "
+            f"turn {joint} by 5, joints A1 ... An, move xyz X Y Z [pitch P], grip open|close"
+        )
+
     def _keys(self) -> Iterator[str]:
-        if not self.stdin.isatty():
-            yield from self.stdin.readline()
-            return
         fd = self.stdin.fileno()
         while data := os.read(fd, 1):
             yield data.decode("latin-1")
