@@ -81,8 +81,8 @@ def test_bad_angles_move_nothing(capsys: pytest.CaptureFixture[str]) -> None:
 def test_the_cli_search_keeps_the_object_in_the_bin(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["--arm", "lynx6", "--scene", "search_002", "search"]) == 0
     assert "found at 70.5 deg" in capsys.readouterr().out
-    assert main(["--arm", "lynx6", "--scene", "search_002", "search"]) == 0
-    assert "nothing found" in capsys.readouterr().out
+    assert main(["--arm", "lynx6", "--scene", "search_002", "search"]) == 1  # nothing left
+    assert "armkit: nothing found: scanned from 30 to 120 deg" in capsys.readouterr().err
 
 
 def test_the_simulated_ssc32_answers_va_to_vd_with_one_byte_each() -> None:

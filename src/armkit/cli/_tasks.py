@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 from typing import Any
 
 from .._errors import ArmkitError, InputError
@@ -24,8 +25,12 @@ TO_HELP = " TO is a place, board[ROW,COL], a cube to stack on or a container."
 SEARCH_EPILOG = (
     "Needs --scene (shipped: search_002, reach_003). The distance sensor (a Sharp GP2D120 on the "
     "hand, 4..30 cm) is read through the SSC-32's VA..VD on a Lynx6, else a serial ADC "
-    "board (emulated on a pty in the simulator). Angles in degrees, distances in mm."
+    "board (emulated on a pty in the simulator). Angles in degrees, distances in mm. Exit "
+    "status: 0 {found}; 1 {none} (one line on stderr says what was scanned and what to "
+    "try); 2 a mistake or a step that cannot be done (one line, 'armkit: error: ...')."
 )
+REACH_ARC = (30.0, 120.0, 5.0)  # [deg] reach's scan: from, to, step (002's base servo angles)
+NEAR, FAR = "4", "30 cm"  # the sensor's range (armkit.sensing.RANGE), as a result says it
 
 
 def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
@@ -67,8 +72,9 @@ def _search_command(sub: argparse._SubParsersAction[Any]) -> None:
     text = "002: scan with the distance sensor, pick up what it finds, drop it in a container"
     angles = " Scan angles are the base servo's, as in 002: 90 deg is straight ahead."
     p: argparse.ArgumentParser = sub.add_parser(
-        "search", help=text, description=text + "." + angles, epilog=SEARCH_EPILOG
-    )
+        "search", help=text, description=text + "." + angles,
+        epilog=SEARCH_EPILOG.format(found="found, picked up and dropped", none="nothing found"),
+    )  # fmt: skip
     for flag, default, what in (("--from", 30.0, "first"), ("--to", 120.0, "last"), ("--step", 5.0, "coarse step of the")):  # fmt: skip
         p.add_argument(flag, dest=flag[2:], type=float, default=default, metavar="DEG", help=f"{what} scan angle [deg] (default {default:g})")  # fmt: skip
     p.add_argument("--into", metavar="NAME", help="the container to drop it in (default: the scene's only one)")  # fmt: skip
@@ -77,7 +83,9 @@ def _search_command(sub: argparse._SubParsersAction[Any]) -> None:
     add_watch_options(p)
     p.set_defaults(func=_search)
     text = "003: find a hand held out with the distance sensor, come near it and shake it"
-    p = sub.add_parser("reach", help=text, description=text + ".", epilog=SEARCH_EPILOG)
+    scans = f" It scans the base {_arc(*REACH_ARC)}."
+    epilog = SEARCH_EPILOG.format(found="the hand found, come near and shaken", none="no hand found")  # fmt: skip
+    p = sub.add_parser("reach", help=text, description=text + "." + scans, epilog=epilog)
     p.add_argument("--height", type=float, default=110.0, metavar="MM", help="height of the scan, the hand's [mm] (default 110)")  # fmt: skip
     p.add_argument("--near", type=float, default=60.0, metavar="MM", help="stop when the sensor reads this [mm], 40..300 (default 60)")  # fmt: skip
     p.add_argument("--shakes", type=int, default=3, metavar="N", help="up-and-down shakes, 0..20 (default 3)")  # fmt: skip
@@ -94,11 +102,16 @@ def _reach(args: argparse.Namespace) -> int:
     scene = scene_of(args)
     if not math.isfinite(args.height) or not 0.0 < args.height <= 500.0:
         raise InputError(f"--height must be 0..500 mm, got {args.height}")
+    start, stop, step = (math.radians(a) for a in REACH_ARC)
     with watched_arm(args, scene) as arm:
         result = tasks.reach(
             arm, scene, height=args.height / 1000.0, near=args.near / 1000.0,
-            shakes=args.shakes, channel=args.channel, port=args.adc_port,
+            shakes=args.shakes, start=start, stop=stop, step=step, channel=args.channel,
+            port=args.adc_port,
         )  # fmt: skip
+        if not result.found:
+            todo = f"hold the hand out on that arc within {FAR} of the sensor, or give --height the hand's height"  # fmt: skip
+            return _nothing(args, arm, result, f"no hand found: scanned {_arc(*REACH_ARC)} at {args.height:g} mm height", todo)  # fmt: skip
         print("\n".join(result.lines()))
     return 0
 
@@ -114,8 +127,34 @@ def _search(args: argparse.Namespace) -> int:
             arm, scene, start=angles["from"], stop=angles["to"], step=angles["step"],
             into=args.into, channel=args.channel, port=args.adc_port,
         )  # fmt: skip
+        if not result.found:
+            arc = _arc(getattr(args, "from"), args.to, args.step)
+            todo = f"widen --from/--to (0..180), lower --step, or put the object within {FAR} of the sensor on that arc"  # fmt: skip
+            return _nothing(args, arm, result, f"nothing found: scanned {arc}", todo)
         print("\n".join(result.lines()))
     return 0
+
+
+def _arc(start: float, stop: float, step: float) -> str:
+    """A scan's arc as its options are written: 'from 100 to 120 deg every 5 deg (...)'."""
+    return f"from {start:g} to {stop:g} deg every {step:g} deg (90 is straight ahead)"
+
+
+def _nothing(args: argparse.Namespace, arm: Any, result: Any, scanned: str, todo: str) -> int:
+    """A scan that found nothing: the task's lines but its last (its own 'nothing
+    within 30 cm'), then one line on stderr: what was scanned, what to try; status 1."""
+    from ..drivers.timed import TimedDriver
+
+    print("\n".join(result.lines()[:-1]))
+    sys.stdout.flush()  # the result, then the line that ends it
+    said = f"armkit: {scanned}, the sensor seeing {NEAR}..{FAR}; {todo}"
+    if isinstance(arm.driver, TimedDriver):  # the OWI scanned where it thinks it was
+        said += (
+            f"; the {arm.model.name}'s angles are only estimated from motor run times: re-home "
+            f"it and scan again: armkit --arm {args.arm} --driver {args.driver} rehome"
+        )
+    print(said, file=sys.stderr)
+    return 1
 
 
 def _task(sub: argparse._SubParsersAction[Any], name: str, text: str) -> argparse.ArgumentParser:
