@@ -29,9 +29,10 @@ WAIT_MARGIN_S = 1.0  # extra time allowed for a move to report done
 class ServoArmDriver:
     """A servo arm on an SSC-32 or Maestro (implements ``armkit.drivers.Driver``).
 
-    Hobby servos report nothing: ``read()`` gives the angles of the pulses being
-    sent. After power-up the controller does not know where a servo is, so the
-    first move of each servo jumps at full speed; move home first.
+    Hobby servos report nothing: ``read()`` gives the angles of the pulses being sent
+    (as asked, where the controller reports the pulse sent: its read-back is coarser).
+    After power-up the controller does not know where a servo is, so the first move
+    of each servo jumps at full speed; move home first.
 
     Args:
         model: the arm; its joints' ``max_velocity`` [rad/s] limit every move.
@@ -62,6 +63,8 @@ class ServoArmDriver:
         self._last: dict[int, tuple[float, float, float, float]] = {}
         # channel -> last pulse sent [µs]; at start, what the controller is sending
         self._commanded = {ch: p for ch, p in bus.read(self._channels()).items() if p > 0}
+        # channel -> (pulse [µs], value [rad or m]) of the last command this driver sent
+        self._asked: dict[int, tuple[float, float]] = {}
 
     @property
     def joint_names(self) -> tuple[str, ...]:
@@ -109,12 +112,12 @@ class ServoArmDriver:
                 f"this move takes {seconds:.1f} s, longer than one {self.bus.name} command "
                 f"({self.bus.max_time_ms / 1000:.1f} s): it goes in pieces, so it must wait"
             )
+        parts[-1] = (goal, parts[-1][1])  # end on the goal itself, not the line's end
         for k, (target, piece_s) in enumerate(parts):
-            pulses = {
-                t.channel: t.to_pulse(float(a)) for t, a in zip(self.joints, target, strict=True)
-            }
+            values = {t.channel: float(a) for t, a in zip(self.joints, target, strict=True)}
+            pulses = {t.channel: t.to_pulse(values[t.channel]) for t in self.joints}
             time_ms = self._move_time_ms(pulses, starts, pad, piece_s, duration is not None, frac)
-            self._send(pulses, time_ms, wait or k < len(parts) - 1)
+            self._send(pulses, time_ms, wait or k < len(parts) - 1, values)
             starts, pad = dict(self._commanded), 0.0
 
     def _alive(self) -> None:
@@ -165,7 +168,7 @@ class ServoArmDriver:
         if now >= self._busy_until:
             return dict(self._commanded), 0.0
         read = {ch: p for ch, p in self.bus.read(self._channels()).items() if p > 0}
-        resolution, pad = self.bus.read_resolution_us, 0.0
+        resolution, pad = self.bus.readback.read_us, 0.0
         for ch, pulse in read.items():
             expected = self._expected(ch, now)
             if expected is not None and abs(expected - pulse) <= resolution:
@@ -183,13 +186,17 @@ class ServoArmDriver:
             return target
         return start + (target - start) * max(0.0, now - t0) / seconds
 
-    def _send(self, pulses: dict[int, float], time_ms: int, wait: bool) -> None:
+    def _send(
+        self, pulses: dict[int, float], time_ms: int, wait: bool, values: dict[int, float]
+    ) -> None:
+        """One move of ``pulses`` [µs] (from ``values`` [rad, m]) in ``time_ms`` [ms]."""
         now = self.clock.now()
         for ch, target in pulses.items():
             start = self._expected(ch, now) or self._commanded.get(ch, target)
             self._last[ch] = (start, target, now, time_ms / 1000.0)
         self.bus.move(pulses, time_ms or None)
         self._commanded.update(pulses)
+        self._asked.update({ch: (p, values[ch]) for ch, p in pulses.items()})
         self._busy_until = max(self._busy_until, now + time_ms / 1000.0)
         if wait:
             self.clock.sleep(self._busy_until - now)  # nothing to ask before it can be done
@@ -211,7 +218,7 @@ class ServoArmDriver:
         time_ms = 0
         if table is not self.grip_table:
             time_ms = self._move_time_ms(pulses, starts, pad, 0.0, False, frac)
-        self._send(pulses, time_ms, wait)
+        self._send(pulses, time_ms, wait, {table.channel: table.to_value(pulse_us)})
 
     def _table(self, name: str) -> ServoCalibration:
         for table in self.tables:
@@ -222,17 +229,29 @@ class ServoArmDriver:
     def read(self) -> NDArray[np.float64]:
         """Joint angles [rad], shape (dof,), from the pulses the controller reports.
 
-        A pulse within the read-back resolution of the last one sent gives back the
-        angle that was asked for; a servo never commanded reports its home angle.
+        A servo whose last move from this driver has ended, and whose controller
+        reports the pulse it was sent (``ReadBack.reports``: on the SSC-32 the reading's
+        10 µs bin holds it), reads as the angle asked for. Any other (a move still
+        running, a pulse someone else set, a servo this driver never moved) reads as
+        the controller reports it; a servo with no pulse reads as its home angle.
         """
+        now = self.clock.now()
         reported = self.bus.read([t.channel for t in self.joints])
-        angles = []
-        for table, joint in zip(self.joints, self.model.joints, strict=True):
-            pulse, sent = reported[table.channel], self._commanded.get(table.channel)
-            if sent is not None and abs(pulse - sent) <= self.bus.read_resolution_us:
-                pulse = sent
-            angles.append(table.to_value(pulse) if pulse > 0 else joint.home)
+        angles = [
+            self._angle(table, reported[table.channel], now, joint.home)
+            for table, joint in zip(self.joints, self.model.joints, strict=True)
+        ]
         return np.array(angles, dtype=np.float64)
+
+    def _angle(self, table: ServoCalibration, pulse: float, now: float, home: float) -> float:
+        """The angle [rad] of ``pulse`` [µs] read on ``table``'s channel at ``now`` [s]:
+        the one asked for if the controller reports the pulse sent for it once its move
+        has ended; else the reading's (``home`` [rad] for no pulse)."""
+        asked, last = self._asked.get(table.channel), self._last.get(table.channel)
+        ended = last is None or now >= last[2] + last[3]
+        if asked is not None and ended and self.bus.readback.reports(asked[0], pulse):
+            return asked[1]
+        return table.to_value(pulse) if pulse > 0 else home
 
     def grip(self, width: float) -> None:
         """Set the gripper opening ``width`` [m] through the gripper's table."""
@@ -240,7 +259,8 @@ class ServoArmDriver:
         self._alive()
         if self.grip_table is None:
             raise DeviceError(f"{self.model.name} has no gripper channel on the {self.bus.name}")
-        self._send({self.grip_table.channel: self.grip_table.to_pulse(width)}, 0, True)
+        channel = self.grip_table.channel
+        self._send({channel: self.grip_table.to_pulse(width)}, 0, True, {channel: width})
 
     def relax(self) -> None:
         """Pulses off on every channel of the arm: the servos stop holding (002's end,
@@ -249,6 +269,7 @@ class ServoArmDriver:
         self._alive()
         self.bus.off(self._channels())
         self._commanded.clear()
+        self._asked.clear()
         self._last.clear()
         self._busy_until = self.clock.now()
 
@@ -261,6 +282,8 @@ class ServoArmDriver:
         at = {ch: self._expected(ch, now) or p for ch, p in self._commanded.items()}
         self.bus.stop(self._channels(), at)
         self._commanded.update(at)
+        # a servo stopped short of its pulse holds where the board has it: no longer as asked
+        self._asked = {ch: a for ch, a in self._asked.items() if at.get(ch) == a[0]}
         self._last = {ch: (p, p, now, 0.0) for ch, p in at.items()}
         self._busy_until = now
 

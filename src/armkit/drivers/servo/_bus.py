@@ -1,11 +1,14 @@
 """The few things the servo arm driver asks of a servo controller, for SSC-32 and Maestro.
 
 Pulses are µs (floats; each controller rounds to its own resolution), times ms.
+How finely each controller takes and reports pulses is data (``ReadBack``), and one
+rule (``ReadBack.reports``) says whether a reading is the pulse that was sent.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import dataclass
 from typing import Protocol
 
 from ..._errors import DeviceError
@@ -13,16 +16,46 @@ from ...devices.maestro import Maestro
 from ...devices.ssc32 import SSC32, TIME_MAX_MS
 
 
+@dataclass(frozen=True)
+class ReadBack:
+    """How finely a controller takes pulses and reports them back.
+
+    Attributes:
+        command_us: step of the pulses it is sent [µs] (a commanded pulse goes out
+            rounded to the nearest step).
+        read_us: step of the pulses it reports [µs], each reading the nearest step to
+            the pulse it sends (the SSC-32's ``QP``: one byte = pulse / 10 µs, user
+            guide; the simulated board rounds to the nearest byte).
+    """
+
+    command_us: float
+    read_us: float
+
+    def on_wire(self, pulse_us: float) -> float:
+        """The pulse [µs] the controller sends for a command of ``pulse_us`` [µs]."""
+        return round(pulse_us / self.command_us) * self.command_us
+
+    def reports(self, sent_us: float, read_us: float) -> bool:
+        """Whether a reading of ``read_us`` [µs] is what the controller reports while it
+        sends the command ``sent_us`` [µs]: the pulse on the wire lies in the reading's
+        bin, within half a read step either way (10 µs bin on the SSC-32)."""
+        return abs(self.on_wire(sent_us) - read_us) <= self.read_us / 2.0
+
+
+SSC32_READBACK = ReadBack(command_us=1.0, read_us=10.0)  # #<ch>P<µs>; QP: pulse / 10 µs
+MAESTRO_READBACK = ReadBack(command_us=0.25, read_us=0.25)  # quarter-µs both ways
+
+
 class ServoBus(Protocol):
     """A servo controller as the driver sees it.
 
     Attributes:
-        name: driver name (``"ssc32"``).  read_resolution_us: step of read-back pulses [µs].
+        name: driver name (``"ssc32"``).  readback: how finely it takes and reports pulses.
         max_time_ms: longest single move [ms].
     """
 
     name: str
-    read_resolution_us: float
+    readback: ReadBack
     max_time_ms: int
 
     def move(self, pulses: dict[int, float], time_ms: int | None) -> None:
@@ -59,7 +92,7 @@ class SSC32Bus:
     """``ServoBus`` over an ``SSC32``: one group-move line per move, one ``QP`` line per read."""
 
     name = "ssc32"
-    read_resolution_us = 10.0
+    readback = SSC32_READBACK
     max_time_ms = TIME_MAX_MS
 
     def __init__(self, device: SSC32) -> None:
@@ -91,7 +124,7 @@ class MaestroBus:
     """``ServoBus`` over a ``Maestro``: per-servo speed limits make a group move."""
 
     name = "maestro"
-    read_resolution_us = 0.25
+    readback = MAESTRO_READBACK
     max_time_ms = 10 * TIME_MAX_MS
 
     def __init__(self, device: Maestro) -> None:
@@ -114,7 +147,7 @@ class MaestroBus:
         (factory 992..2000 µs) without a word, so a short pulse means a narrow range."""
         for ch, want in pulses.items():
             got = self.device.get_position(ch)
-            if got and abs(got - want) > self.read_resolution_us:
+            if got and not self.readback.reports(want, got):
                 raise DeviceError(
                     f"Maestro on {self.device.port}: channel {ch} sends {got:.2f} µs, not the "
                     f"{want:.2f} µs asked: its range in the Maestro clamps it (factory "
