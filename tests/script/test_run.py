@@ -120,12 +120,15 @@ def test_a_job_runs_through_its_table_entry(
 
     real = armkit.tasks.move_item
 
-    def move_item(arm_: Arm, scene: object, **kwargs: object) -> None:
+    def move_item(arm_: Arm, scene: Any, **kwargs: Any) -> object:
         # the arguments must be ones the real task takes (a fake taking **kwargs hid
         # 'pick(item=...)' while the real pick takes 'cube')
         inspect.signature(real).bind(arm_, scene, **kwargs)
+        if isinstance(arm_, armkit.tasks.Start):  # the check plans it: the real planner
+            return real(arm_, scene, **kwargs)
         calls.append((arm_, scene, kwargs))
         arm_.move_to(150, 0, 60, -90)
+        return None
 
     monkeypatch.setattr(armkit.tasks, "move_item", move_item)
     text = "pose spot = xyz 150 0 30 pitch -90\nmove-item spot to xyz 150 50 30\nturn waist by 10\n"

@@ -116,7 +116,7 @@ def _check(args: argparse.Namespace) -> int:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from ..script import MAX_REPEAT, check_source, run_checked
+    from ..script import MAX_REPEAT, check_source, live_objects, run_checked
 
     if not 1 <= args.repeat <= MAX_REPEAT:
         raise InputError(f"--repeat must be 1..{MAX_REPEAT}, got {args.repeat}")
@@ -124,7 +124,7 @@ def _run(args: argparse.Namespace) -> int:
     with _open(args, setup, source) as arm:
         result = check_source(
             source, model=arm.model, scene=_scene(args), q0=arm.driver.read(),
-            require_jobs=not args.dry_run, repeat=args.repeat,
+            live=live_objects(arm), require_jobs=not args.dry_run, repeat=args.repeat,
         )  # fmt: skip
         _report(result)
         result.raise_if_failed()

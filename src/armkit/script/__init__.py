@@ -71,6 +71,7 @@ from ._parse import parse as parse
 from ._plan import Plan as Plan
 from ._plan import PlanStep as PlanStep
 from ._resolve import SceneInfo as SceneInfo
+from ._run import live_objects as live_objects
 from ._run import run_checked as run_checked
 from ._run import run_source as run_source
 from ._session import Reply as Reply

@@ -5,7 +5,7 @@ problem and the plan with its time."""
 from __future__ import annotations
 
 import importlib
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -16,13 +16,14 @@ from numpy.typing import NDArray
 from .._errors import ArmkitError
 from ..connect import driver_names
 from ..model import ArmModel, load_model, shipped_models
+from ..scene import Scene
 from ._ast import Define, Header, Job, Loc, Num, Program, Repeat, Source, Statement
 from ._diagnostics import Diagnostic, ScriptCheckError, sorted_unique, suggest
 from ._jobs import JobUnavailable, job_function
 from ._model_arm import ModelArm
 from ._parse import parse
 from ._plan import Plan
-from ._resolve import Resolver, SceneInfo, Target
+from ._resolve import Resolver, SceneInfo, Target, job_scene
 from ._walk import Walker
 
 F64 = NDArray[np.float64]
@@ -89,6 +90,7 @@ def check_source(
     q0: F64 | None = None,
     grip0: float | None = None,
     held: str | None = None,
+    live: Callable[[Scene], Scene] | None = None,
     require_jobs: bool = False,
     repeat: int = 1,
     base_dir: Path | None = None,
@@ -103,6 +105,9 @@ def check_source(
         grip0: gripper opening at the start [m] (None: not set yet, so the model's own
             grip length, as ``Arm`` before its first ``grip``; timed as if open).
         held: the cube a ``pick`` job took before (the shell), for ``place``.
+        live: where the script's tasks will find the scene's objects, a function of the
+            scene (``live_objects`` of the arm it will run on); None: as the scene has
+            them (a script without a scene: the empty table). The tasks are planned so.
         require_jobs: a job whose function is missing is an error (``run``), not a warning.
         repeat: run the whole script this many times (``--repeat``).
         base_dir: where relative file names start (default: the script's folder).
@@ -121,7 +126,10 @@ def check_source(
     _check_driver(setup.driver, diagnostics)
     if scene is None and setup.scene is not None:
         scene = load_scene_info(setup.scene.value, here, setup.scene.value_loc, diagnostics)
-    arm = ModelArm(model, model.home if q0 is None else q0, grip0, held)
+    objects = job_scene(scene)
+    if live is not None and objects is not None:
+        objects = live(objects)
+    arm = ModelArm(model, model.home if q0 is None else q0, grip0, held, objects)
     walker = Walker(Resolver(model, scene, here), arm, source.name, checking=True)
     _seed(walker, program, env)
     walker.walk(looped(program.statements, repeat))

@@ -77,14 +77,17 @@ class JobParam:
 class JobSpec:
     """A job: its parameters, the function that runs it, one line of help, the
     function that checks its arguments (``"module:function"``, called as
-    ``function(scene, **arguments)``; None: none), and words it refuses with why
-    (``refused``: word -> message)."""
+    ``function(scene, **arguments)``; None: none), words it refuses with why
+    (``refused``: word -> message), and whether the function plans the job whole
+    before it moves and can plan it from a model and joints alone (``plans``: given an
+    ``armkit.tasks.Start``), so that ``armkit check`` plans it too."""
 
     params: tuple[JobParam, ...]
     call: str
     help: str
     check: str | None = None
     refused: tuple[tuple[str, str], ...] = ()
+    plans: bool = False
 
     def usage(self, command: str) -> str:
         """``move-item ITEM to WHERE``."""
@@ -99,6 +102,10 @@ PICK_HINT = (
     "pick takes a cube of the scene by its name (pick red); an item known only by "
     "its point is carried with move-item xyz X Y Z to WHERE"
 )
+NOTHING_PICKED = (
+    "place puts down the cube the script picked, and no cube is picked here; "
+    "write 'pick CUBE' before it"
+)
 STACK_ON = (
     "stack takes no 'on WHERE': the first cube named stays where it is and the others "
     "go on it (stack red green blue puts green on red, blue on green)"
@@ -110,6 +117,7 @@ JOBS: dict[str, JobSpec] = {
         "armkit.tasks:pick",
         "pick up a cube of the scene (by name) and stay above it",
         check=f"{CHECKS}:pick",
+        plans=True,
     ),
     "place": JobSpec(
         (JobParam("to", "where"),),
@@ -117,12 +125,14 @@ JOBS: dict[str, JobSpec] = {
         "put the picked cube down at a scene place, board[ROW,COL], a cube, a container, "
         "a pose or an xyz point",
         check=f"{CHECKS}:place",
+        plans=True,
     ),
     "move-item": JobSpec(
         (JobParam("item", "where"), JobParam("to", "where", keyword="to")),
         "armkit.tasks:move_item",
         "000: pick an item up, lift it, carry it and put it down",
         check=f"{CHECKS}:move_item",
+        plans=True,
     ),
     "rotate-cube": JobSpec(
         (
@@ -132,12 +142,14 @@ JOBS: dict[str, JobSpec] = {
         "armkit.tasks:rotate_cube",
         "001: turn a cube onto its side (forward) or back up (backward) where it stands",
         check=f"{CHECKS}:rotate_cube",
+        plans=True,
     ),
     "stack": JobSpec(
         (JobParam("cubes", "objects"),),
         "armkit.tasks:stack",
         "001: turn every cube in place, then stack them on the first, each on the one before",
         check=f"{CHECKS}:stack",
+        plans=True,
         refused=(("on", STACK_ON),),
     ),
     "search": JobSpec(
@@ -218,6 +230,17 @@ def as_called(args: dict[str, object]) -> dict[str, object]:
     """The arguments as the job's function (and its check) takes them: a ``where``
     point [m], shape (3,), as (x, y, z) [mm]; the rest as they are."""
     return {k: _in_mm(v) for k, v in args.items()}
+
+
+def called_with(command: str, args: dict[str, object], held: str | None) -> dict[str, object]:
+    """The keyword arguments ``command``'s function gets: ``as_called``, and for ``place``
+    the cube the script's ``pick`` took, ``held`` (ScriptError if none was)."""
+    called = as_called(args)
+    if command != "place":
+        return called
+    if held is None:
+        raise ScriptError(NOTHING_PICKED)
+    return {"cube": held, **called}
 
 
 def _in_mm(value: object) -> object:

@@ -17,12 +17,13 @@ import math
 from collections.abc import Hashable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import JointLimitError, ScriptError, UnreachableError
+from .._terminal import count
 from ..drivers.timed import (
     Forecast,
     default_timing,
@@ -34,10 +35,15 @@ from ..drivers.timed import (
 from ..kinematics import fk, fk_frames, ik
 from ..model import ArmModel
 from ..motion import line, plan_path, time_path, trapezoid
+from ..scene import Scene
 from ._ast import Loc, Statement
 from ._backend import Frame
+from ._jobs import JOBS, NOTHING_PICKED, called_with, job_function
 from ._plan import Plan, PlanStep
 from ._resolve import UNKNOWN, JointPose, Point, Target
+
+if TYPE_CHECKING:
+    from ..tasks import Plan as TaskPlan
 
 F64 = NDArray[np.float64]
 GRIP_SPEED = 0.05  # gripper opening speed assumed for timing [m/s]
@@ -45,10 +51,6 @@ TOOL_ACCEL = 0.5  # tool acceleration of straight lines [m/s^2] (TimedStreaming'
 LINE_SPACING = 0.002  # straight lines are checked every 2 mm [m]
 SWEEP_SAMPLES = 16  # points checked against the table along a joint move
 TABLE_TOLERANCE = 1e-4  # [m]
-NOTHING_PICKED = (
-    "place puts down the cube the script picked, and no cube is picked here; "
-    "write 'pick CUBE' before it"
-)
 
 
 @dataclass(frozen=True)
@@ -56,7 +58,9 @@ class ArmState:
     """What the checker knows of the arm; None = not known before it runs (``grip``:
     not set yet, the model's own grip length). ``motor_s``: motor-seconds a timed
     arm has used [s] (its battery's count). ``held``: the cube a ``pick`` job took
-    (until ``place``), None, or ``UNKNOWN``."""
+    (until ``place``), None, or ``UNKNOWN``. ``objects``: the scene as the tasks so far
+    leave it (``tasks.Plan.rest``), what the next task is planned with; None: not known
+    (after a job that is not planned ahead, such as ``search``)."""
 
     q: F64 | None
     grip: float | None
@@ -65,17 +69,19 @@ class ArmState:
     light: bool | None = None
     motor_s: float = 0.0
     held: Any = None
+    objects: Scene | None = None
 
 
 class ModelArm:
     """A ``Backend`` that simulates the script on the model and builds the ``Plan``."""
 
     def __init__(
-        self, model: ArmModel, q0: F64 | None, grip0: float | None, held: str | None = None
-    ) -> None:
+        self, model: ArmModel, q0: F64 | None, grip0: float | None, held: str | None = None,
+        objects: Scene | None = None,
+    ) -> None:  # fmt: skip
         self.model = model
         q = None if q0 is None else np.array(q0, dtype=np.float64)
-        self.state = ArmState(q, grip0, held=held)
+        self.state = ArmState(q, grip0, held=held, objects=objects)
         self.plan = Plan(model.joint_names)
         self.time = 0.0  # sum of the known durations so far [s]
         # an OWI-535's timing as its driver gives a unit not yet calibrated; None: not one
@@ -154,6 +160,11 @@ class ModelArm:
 
     def job(self, command: str, args: dict[str, object]) -> None:
         held = self._held(command, args)
+        plan = self._plan_job(command, args)
+        if plan is not None:  # planned whole, as it will be when it runs
+            self.state = replace(self.state, grip=None, held=held, objects=plan.rest)
+            self._step(plan.q_end, None, note=f"{command}: {count(len(plan.steps), 'step')}")
+            return
         seed = self.model.home if self.state.q is None else self.state.q
         for name, value in args.items():
             if isinstance(value, np.ndarray):
@@ -161,8 +172,23 @@ class ModelArm:
                     ik(self._kin(), value, None, seed)
                 except UnreachableError as exc:
                     raise UnreachableError(f"{command} {name}: {exc}", reason=exc.reason) from None
-        self.state = replace(self.state, q=None, grip=None, held=held)
+        self.state = replace(self.state, q=None, grip=None, held=held, objects=None)
         self._step(None, None)
+
+    def _plan_job(self, command: str, args: dict[str, object]) -> TaskPlan | None:
+        """The job planned from where the arm is, with the objects where the tasks so far
+        leave them (TaskError if it cannot be done); None if it is not planned ahead or
+        either is not known."""
+        s = self.state
+        if not JOBS[command].plans or s.q is None or s.objects is None or s.held is UNKNOWN:
+            return None
+        from ..tasks import Plan as TaskPlan
+        from ..tasks import Start
+
+        called = called_with(command, args, s.held)
+        plan = job_function(command)(Start(self.model, s.q), s.objects, **called)
+        assert isinstance(plan, TaskPlan)
+        return plan
 
     def _held(self, command: str, args: dict[str, object]) -> Any:
         """The cube held after the job ``command``; ScriptError if the job cannot be
@@ -184,7 +210,8 @@ class ModelArm:
     def snapshot(self) -> Hashable | None:
         s = self.state
         q = None if s.q is None else tuple(np.round(s.q, 9).tolist())
-        return q, s.grip, s.speed, s.tool_speed, s.light, repr(s.held)
+        objects = None if s.objects is None else _cubes(s.objects)
+        return q, s.grip, s.speed, s.tool_speed, s.light, repr(s.held), objects
 
     def elapsed(self) -> float:
         return self.time
@@ -333,3 +360,8 @@ class ModelArm:
         else:
             self.plan.total += duration
             self.time += duration
+
+
+def _cubes(scene: Scene) -> Hashable:
+    """Where the scene's cubes are, to compare states (to 1 nm)."""
+    return tuple((c.name, tuple(np.round(c.T, 9).ravel().tolist())) for c in scene.cubes)

@@ -20,8 +20,8 @@ from ..scene import Scene
 from ._ast import Loc, Source, Statement
 from ._backend import Frame
 from ._check import CheckResult, check_source, looped
-from ._jobs import as_called, job_function
-from ._model_arm import LINE_SPACING, NOTHING_PICKED
+from ._jobs import called_with, job_function
+from ._model_arm import LINE_SPACING
 from ._resolve import JointPose, Point, Resolver, SceneInfo, Target, job_scene
 from ._walk import Walker
 
@@ -38,6 +38,7 @@ class ArmBackend:
         self.tool_speed = TimedStreaming().speed  # straight lines [m/s]
         self.grip_width: float | None = None
         self.held: str | None = None  # the cube a ``pick`` job took, until ``place``
+        self.objects: Scene | None = None  # the scene as the last task left it
 
     def begin(self, stmt: Statement, frames: tuple[Frame, ...]) -> None:
         if self.on_step is not None:
@@ -92,24 +93,29 @@ class ArmBackend:
         )
 
     def job(self, command: str, args: dict[str, object]) -> None:
-        func = job_function(command)
-        called = as_called(args)
-        if command == "place":  # the cube the script's ``pick`` took
-            if self.held is None:
-                raise ScriptError(NOTHING_PICKED)
-            called = {"cube": self.held, **called}
-        func(self.arm, self._scene(), **called)
+        from ..tasks import Plan
+
+        done = job_function(command)(
+            self.arm, self._scene(), **called_with(command, args, self.held)
+        )
+        if isinstance(done, Plan):  # on hardware the next task plans with the cubes moved
+            self.objects = done.rest
         if command == "pick":
             self.held = str(args["cube"])
         elif command == "place":
             self.held = None
 
     def _scene(self) -> Scene:
-        """The script's scene; a script that names none works on the empty table."""
-        scene = job_scene(self.scene)
+        scene = self.scene_now()
         if scene is None:
             raise ScriptError(f"the scene {self.scene and self.scene.label} could not be loaded")
         return scene
+
+    def scene_now(self) -> Scene | None:
+        """The scene as the last task left it, else the script's (a script that names
+        none works on the empty table; None: it cannot be loaded). A simulated arm's
+        tasks see its objects live (``objects_on``)."""
+        return self.objects if self.objects is not None else job_scene(self.scene)
 
     def snapshot(self) -> Hashable | None:
         return None
@@ -178,6 +184,7 @@ def run_source(
         model=arm.model,
         scene=scene,
         q0=arm.driver.read(),
+        live=live_objects(arm),
         require_jobs=True,
         repeat=repeat,
         base_dir=base_dir,
@@ -185,6 +192,15 @@ def run_source(
     result.raise_if_failed()
     run_checked(arm, result, repeat=repeat, base_dir=base_dir, on_step=on_step)
     return result
+
+
+def live_objects(arm: Arm, carried: Scene | None = None) -> Callable[[Scene], Scene]:
+    """Where ``arm``'s tasks will find a script scene's objects (``check_source``'s
+    ``live``): on a simulated arm where they are now, else as the last task left them
+    (``carried``), else as the scene has them."""
+    from ..tasks import objects_now
+
+    return lambda scene: objects_now(arm, scene if carried is None else carried)
 
 
 def run_checked(

@@ -23,7 +23,7 @@ from ._diagnostics import ScriptCheckError
 from ._grammar import RESERVED, usage_of
 from ._lexer import LexError, Token, tokenize
 from ._resolve import JointPose, Resolver, SceneInfo
-from ._run import ArmBackend, run_source
+from ._run import ArmBackend, live_objects, run_source
 from ._teach import Jog, Teaching, joints_line, pose_now, torque
 from ._walk import Walker
 
@@ -102,7 +102,8 @@ class Session:
         env = Env(self.resolver.poses, self.walker.procs)
         result = check_source(
             source, model=self.arm.model, scene=self.scene, q0=self.arm.driver.read(),
-            grip0=self.backend.grip_width, held=self.backend.held, require_jobs=True,
+            grip0=self.backend.grip_width, held=self.backend.held, live=live_objects(self.arm, self.backend.objects),
+            require_jobs=True,
             base_dir=self.base_dir, env=env,
         )  # fmt: skip
         if any(isinstance(s, Header) for s in result.program.statements):

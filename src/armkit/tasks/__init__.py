@@ -1,6 +1,7 @@
 """Jobs for an arm on a scene: pick, place, move an item, rotate and stack cubes
 (seeds 000 and 001). Each task is planned whole -- every IK and every clearance
-check -- before anything moves; ``dry_run=True`` returns the plan only."""
+check -- before anything moves; ``dry_run=True`` returns the plan only, and a ``Start`` (a
+model and its joints) in place of the arm plans without one."""
 
 from ._calibration import Calibration as Calibration
 from ._calibration import CalibrationError as CalibrationError
@@ -16,6 +17,7 @@ from ._jobs import stack_names as stack_names
 from ._live import TaskFailed as TaskFailed
 from ._live import attach_scene as attach_scene
 from ._live import attached as attached
+from ._live import objects_now as objects_now
 from ._live import run_checked as run_checked
 from ._plan import Plan as Plan
 from ._plan import Step as Step
@@ -27,5 +29,6 @@ from ._search import SearchResult as SearchResult
 from ._search import check_angles as check_angles
 from ._search import only_container as only_container
 from ._search import search as search
+from ._start import Start as Start
 from ._targets import Target as Target
 from ._targets import resolve as resolve

@@ -24,6 +24,7 @@ from ._live import live_scene, run_checked
 from ._plan import Plan
 from ._points import move_point
 from ._precision import precision_of
+from ._start import Start
 from ._state import Context, Options, State
 from ._targets import resolve
 
@@ -35,7 +36,7 @@ CalibrationLike = Calibration | str | Path | None
 
 
 def plan_task(
-    arm: Arm,
+    arm: Arm | Start,
     scene: Scene,
     task: str,
     body: Body,
@@ -44,7 +45,7 @@ def plan_task(
     calibration: CalibrationLike = None,
     held: str | None = None,
 ) -> Plan:
-    """Plan ``body`` from the arm's joints now; nothing moves.
+    """Plan ``body`` from the arm's joints now (a ``Start``'s); nothing moves.
 
     Args:
         clearance: height of the first waypoint above each grasp and release [mm],
@@ -67,7 +68,7 @@ def plan_task(
     options = Options(clearance=clearance / 1000.0, waypoints=waypoints, calibration=cal)
     ctx = Context(arm.model, options, task)
     start = time.perf_counter()
-    q0 = arm.driver.read()
+    q0 = arm.q.copy() if isinstance(arm, Start) else arm.driver.read()
     st = State(q0, scene, None, None)
     if held is not None:
         picked = pick_any(ctx, st, held, None)
@@ -103,14 +104,15 @@ def _check_clearance(clearance: float) -> None:
         raise InputError(f"clearance must be 30..500 mm (001: at least 30), got {shown(clearance)}")
 
 
-def _done(arm: Arm, plan: Plan, dry_run: bool) -> Plan:
-    if not dry_run:
+def _done(arm: Arm | Start, plan: Plan, dry_run: bool) -> Plan:
+    """The plan, after running it on ``arm`` unless ``dry_run`` (a ``Start`` only plans)."""
+    if not dry_run and not isinstance(arm, Start):
         run_checked(arm, plan)
     return plan
 
 
 def pick(
-    arm: Arm,
+    arm: Arm | Start,
     scene: Scene,
     cube: str,
     *,
@@ -132,7 +134,7 @@ def pick(
 
 
 def place(
-    arm: Arm,
+    arm: Arm | Start,
     scene: Scene,
     cube: str,
     to: str | Sequence[float],
@@ -156,7 +158,7 @@ def place(
 
 
 def move_item(
-    arm: Arm,
+    arm: Arm | Start,
     scene: Scene,
     item: str | Sequence[float],
     to: str | Sequence[float],
@@ -199,7 +201,7 @@ def move_item(
 
 
 def rotate_cube(
-    arm: Arm,
+    arm: Arm | Start,
     scene: Scene,
     cube: str,
     direction: str = "forward",
@@ -236,7 +238,7 @@ def stack_names(cubes: object) -> list[str]:
 
 
 def stack(
-    arm: Arm,
+    arm: Arm | Start,
     scene: Scene,
     cubes: Sequence[str],
     *,

@@ -20,6 +20,7 @@ from ..scene import Scene, ScenePhysics, rest_scene
 from ._plan import Plan, Step, TaskError, cube_text, pose_error
 from ._precision import Precision, precision_of
 from ._run import run_plan
+from ._start import Start
 
 if TYPE_CHECKING:
     from ..arm import Arm
@@ -68,9 +69,12 @@ def attached(arm: Arm) -> ScenePhysics | None:
     return None if found is None else found[0]
 
 
-def live_scene(arm: Arm, scene: Scene, dry_run: bool, task: str, held: str | None = None) -> Scene:
+def live_scene(
+    arm: Arm | Start, scene: Scene, dry_run: bool, task: str, held: str | None = None
+) -> Scene:
     """The scene to plan ``task`` with: on a simulated arm the objects where they are
-    now (attaching the physics unless ``dry_run``), else ``scene`` as given.
+    now (attaching the physics unless ``dry_run``), else (hardware, a ``Start``)
+    ``scene`` as given.
 
     Raises:
         TaskError: the gripper holds a cube other than ``held`` (nothing moves).
@@ -81,6 +85,8 @@ def live_scene(arm: Arm, scene: Scene, dry_run: bool, task: str, held: str | Non
             f"{task}: scene must be a Scene; load one with armkit.scene.load_scene("
             f"'board_001'), got {shown(scene)}"
         )
+    if isinstance(arm, Start):
+        return scene
     physics = attached(arm) if dry_run else attach_scene(arm, scene)
     if physics is None or physics.scene.name != scene.name:
         return scene
@@ -91,6 +97,16 @@ def live_scene(arm: Arm, scene: Scene, dry_run: bool, task: str, held: str | Non
             f"{task}: the gripper holds {name}; put it down first (place {name} TO)",
             step=task,
         )
+    return rest_scene(physics)
+
+
+def objects_now(arm: Arm, scene: Scene) -> Scene:
+    """``scene`` with its objects where they are now: on a simulated arm with the
+    scene's physics attached, as they rest there (a held cube in the gripper); else
+    as given (what a task on ``arm`` would plan with; ``armkit check`` plans with it)."""
+    physics = attached(arm)
+    if physics is None or physics.scene.name != scene.name:
+        return scene
     return rest_scene(physics)
 
 

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numpy.typing import NDArray
@@ -63,6 +63,22 @@ class Plan:
     before: Scene
     after: Scene
     planning_time: float
+
+    @property
+    def q_end(self) -> F64:
+        """The arm's joints at the end of the plan [rad], shape (dof,)."""
+        last = next((s.q for s in reversed(self.steps) if s.q is not None), self.q_start)
+        return last.copy()
+
+    @property
+    def rest(self) -> Scene:
+        """The scene the next task plans with (as ``armkit.scene.rest_scene`` gives a
+        simulated one): ``after``, but a cube still held where it was picked from."""
+        held = self.steps[-1].holding if self.steps else None
+        if held is None:
+            return self.after
+        cubes = tuple(c for c in self.after.cubes if c.name != held)
+        return replace(self.after, cubes=(*cubes, self.before.cube(held)))
 
     @property
     def moves(self) -> int:

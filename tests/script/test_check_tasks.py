@@ -1,0 +1,113 @@
+"""The check plans a script's tasks as they will run: a ``place`` that cannot be done
+(it would tip the cube, or hit one) was passed by ``armkit check`` and refused by
+``armkit run`` only after the lines before it had moved the arm. Now the check plans
+every task (``pick``, ``place``, ``move-item``, ``rotate-cube``, ``stack``) from where
+the arm will be, with the cubes where the tasks before it leave them (on a simulated
+arm: where they are now), and refuses the script at the task's line; nothing moves."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+import pytest
+from script_arms import counting_arm
+
+import armkit.tasks
+from armkit import Arm
+from armkit.script import ScriptCheckError, Source, check_source, run_source
+from armkit.tasks import Start
+
+TIPS = "scene board_001\nmove 200 0 150\npick red\nplace board[0,1]\nhome\n"
+
+
+def _check(text: str) -> Any:
+    return check_source(Source("job.arm", text))
+
+
+def test_a_place_that_cannot_be_planned_fails_the_check_at_its_line() -> None:
+    result = _check(TIPS)
+    assert not result.ok
+    (d,) = result.diagnostics
+    assert d.loc.line == 4
+    assert "place red: cannot put red in board[0, 1]" in d.message
+
+
+def test_run_refuses_it_before_the_first_line_moves() -> None:
+    arm, driver = counting_arm()
+    before = arm.driver.read()
+    with pytest.raises(ScriptCheckError, match=r"job.arm:4:1: place red: cannot put red"):
+        run_source(arm, Source("job.arm", TIPS))
+    assert driver.sent == 0
+    np.testing.assert_array_equal(arm.driver.read(), before)
+
+
+def test_the_check_follows_the_cubes_from_task_to_task() -> None:
+    # red goes onto green; green is then under red, which only a check that carries the
+    # cubes from one task to the next knows (the scene file has green free)
+    result = _check("scene board_001\npick red\nplace green\npick green\n")
+    (d,) = result.diagnostics
+    assert d.loc.line == 4 and "under red" in d.message
+    assert _check("scene board_001\npick red\nplace green\npick blue\nplace red\n").ok
+
+
+def test_after_a_task_the_arm_is_where_its_plan_ends() -> None:
+    result = _check("scene board_001\npick red\nhome\n")
+    pick, home = result.plan.steps
+    assert pick.duration is None and pick.q is not None  # planned, timed when it runs
+    assert home.duration is not None and home.duration > 0.0  # timed from the plan's end
+
+
+def test_on_a_simulated_arm_the_check_plans_with_the_cubes_where_they_are() -> None:
+    arm, driver = counting_arm()
+    run_source(arm, Source("a.arm", "scene board_001\npick red\nplace green\n"))
+    sent = driver.sent
+    with pytest.raises(ScriptCheckError, match=r"b.arm:2:1: pick green: .*under red"):
+        run_source(arm, Source("b.arm", "scene board_001\npick green\n"))
+    assert driver.sent == sent
+
+
+def test_on_hardware_each_task_plans_with_the_cubes_where_the_last_one_left_them(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # dry runs on an arm without the scene's physics attached see the scene they are
+    # given, as tasks on real hardware do
+    seen: dict[str, list[Any]] = {"pick": [], "place": []}
+    for name in seen:
+        real = getattr(armkit.tasks, name)
+
+        def planned(
+            arm_: Any, scene: Any, *, _real: Any = real, _name: str = name, **kw: Any
+        ) -> Any:
+            if not isinstance(arm_, Start):
+                seen[_name].append(scene)
+            return _real(arm_, scene, dry_run=True, **kw)
+
+        monkeypatch.setattr(armkit.tasks, name, planned)
+    arm: Arm = counting_arm()[0]
+    run_source(
+        arm, Source("job.arm", "scene board_001\npick red\nplace green\npick blue\nplace red\n")
+    )
+    red_when_blue_goes_on_it = seen["place"][1].cube("red")
+    assert red_when_blue_goes_on_it.position == pytest.approx([0.22, 0.0, 0.028])
+
+
+def test_what_the_check_cannot_know_it_leaves_to_the_run() -> None:
+    # after a job that is not planned ahead (a search moves an object the check cannot
+    # foresee) the tasks after it are checked by their arguments only
+    result = check_source(Source("job.arm", "arm lynx6\nscene search_002\nsearch\nhome\n"))
+    assert result.ok
+    assert [s.duration for s in result.plan.steps] == [None, None]
+
+
+def test_a_task_given_a_start_only_plans() -> None:
+    arm, driver = counting_arm()
+    scene = armkit.scene.load_scene("board_001")
+    plan = armkit.tasks.pick(Start(arm.model, arm.model.home), scene, "red")
+    assert driver.sent == 0 and plan.steps[-1].holding == "red"
+    assert plan.rest.cube("red").position == pytest.approx(scene.cube("red").position)
+    np.testing.assert_allclose(plan.q_end, plan.steps[-1].q)
+    with pytest.raises(armkit.InputError, match=r"q must have shape \(4,\)"):
+        Start(arm.model, np.zeros(3))
+    with pytest.raises(armkit.InputError, match="Start needs an ArmModel"):
+        Start("openmanipulator_x", np.zeros(4))  # type: ignore[arg-type]
