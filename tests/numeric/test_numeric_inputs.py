@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from armkit import InputError
 from armkit.kinematics import Target, ik, ik_batch
 from armkit.model import load_model
 
@@ -13,21 +14,38 @@ P = np.array([0.2, 0.0, 0.1])
 
 
 @pytest.mark.parametrize(
-    ("target", "word"),
+    ("args", "word"),
     [
-        (Target(np.array([np.nan, 0.0, 0.1])), "position"),
-        (Target(np.array([np.inf, 0.0, 0.1])), "position"),
-        (Target(np.array([0.2, 0.0])), "position"),
-        (Target(P, pitch=float("nan")), "pitch"),
-        (Target(P, orientation=np.eye(3) * 2.0), "orientation"),
-        (Target(P, orientation=np.diag([1.0, 1.0, -1.0])), "orientation"),
-        (Target(P, orientation=np.eye(4)), "orientation"),
-        (Target(P, orientation=np.full((3, 3), np.nan)), "orientation"),
+        (("abc",), "position must be numbers"),
+        ((np.array([np.nan, 0.0, 0.1]),), "position"),
+        ((np.array([np.inf, 0.0, 0.1]),), "position"),
+        ((np.array([0.2, 0.0]),), "position"),
+        ((np.zeros((2, 3, 1)),), "position"),
+        ((P, float("nan")), "pitch"),
+        ((P, "up"), "pitch"),
+        ((P, np.zeros(3)), "pitch"),
+        ((np.zeros((2, 3)), np.zeros(3)), "pitch"),
+        ((P, None, np.eye(3) * 2.0), "orientation"),
+        ((P, None, np.diag([1.0, 1.0, -1.0])), "orientation"),
+        ((P, None, np.eye(4)), "orientation"),
+        ((P, None, np.full((3, 3), np.nan)), "orientation"),
+        ((np.zeros((2, 3)), None, np.eye(3)), "orientation"),
+        ((P, 0.1, np.eye(3)), "not both"),
     ],
 )
-def test_bad_target_names_the_field(target: Target, word: str) -> None:
-    with pytest.raises(ValueError, match=word):
-        ik(MODEL, target, q_seed=MODEL.home, method="lm")
+def test_bad_target_is_refused_when_made_naming_the_field(
+    args: tuple[object, ...], word: str
+) -> None:
+    with pytest.raises(InputError, match=word):
+        Target(*args)  # type: ignore[arg-type]
+
+
+def test_good_targets_are_kept_as_given() -> None:
+    assert Target([0.2, 0.0, 0.1]).mask == "position"
+    assert Target(np.zeros((2, 3)), 0.1).mask == "position+pitch"
+    assert Target(np.zeros((2, 3)), np.zeros(2)).pitch.shape == (2,)
+    assert Target(np.zeros((0, 3)), None, np.zeros((0, 3, 3))).mask == "pose"
+    assert Target(P, None, np.eye(3)).orientation is not None
 
 
 def test_unknown_method_lists_the_valid_ones() -> None:

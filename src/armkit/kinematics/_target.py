@@ -7,6 +7,9 @@ from typing import Any
 
 from numpy.typing import ArrayLike
 
+from .._errors import InputError
+from .._inputs import angle, array, rotation
+
 
 @dataclass(frozen=True, slots=True, eq=False)
 class Target:
@@ -25,6 +28,18 @@ class Target:
     position: ArrayLike
     pitch: Any = None
     orientation: ArrayLike | None = None
+
+    def __post_init__(self) -> None:  # InputError naming the field; the values kept as given
+        if self.pitch is not None and self.orientation is not None:
+            raise InputError("give pitch or orientation, not both")
+        P = array(self.position, "position", ((3,), (None, 3)), "m")
+        n = None if P.ndim == 1 else len(P)
+        if self.pitch is not None and n is None:
+            angle(self.pitch, "pitch")
+        elif self.pitch is not None:
+            array(self.pitch, "pitch", ((), (n,)), "rad")
+        if self.orientation is not None:
+            rotation(self.orientation, "orientation", n)
 
     @property
     def mask(self) -> str:
