@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 from drawing_support import EXAMPLES, FakeSheet
 
+from armkit import InputError
 from armkit.drawing import (
     DrawingError,
     DrawingWarning,
@@ -108,3 +109,25 @@ def test_files_are_told_apart_by_suffix(tmp_path: Path) -> None:
         plan_drawing(tmp_path / "empty.gcode", A5)
     with pytest.raises(DrawingError, match="tolerance"):
         plan_drawing(EXAMPLES / "seed001.gcode", A5, tolerance=0.0)
+
+
+@pytest.mark.parametrize(
+    ("width", "height", "said"),
+    [
+        (-1.0, 0.2, "PaperSize width .* got -1 m \\(-1000.0 mm\\)"),
+        (0.2, 0.0, "PaperSize height .* got 0 m"),
+        (210.0, 148.0, "at most 10000 mm, given in metres .* got 210 m \\(210000.0 mm\\)"),
+        (float("nan"), 0.2, "width .* got nan$"),
+        (0.2, float("inf"), "height .* got inf$"),
+        ("a4", 0.2, "width .* got 'a4'"),
+        (True, 0.2, "width .* got True"),
+    ],
+)
+def test_paper_size_is_refused_when_made(width: object, height: object, said: str) -> None:
+    with pytest.raises(InputError, match=f"{said}") as e:
+        PaperSize(width, height)  # type: ignore[arg-type]
+    assert "A5 is PaperSize(0.148, 0.210)" in str(e.value) and "\n" not in str(e.value)
+
+
+def test_paper_size_keeps_good_sizes() -> None:
+    assert PaperSize(0.148, 0.210).width == 0.148 and PaperSize(10.0, 1e-3).height == 1e-3

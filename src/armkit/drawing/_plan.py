@@ -18,7 +18,8 @@ from typing import Protocol
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._inputs import is_number, shown
+from .._errors import InputError
+from .._inputs import brief, is_number, shown
 from ._errors import DrawingError, DrawingWarning
 from ._figure import Figure
 from ._fit import Fit, apply, clip_to_box, fit_transform
@@ -31,6 +32,7 @@ from ._svg import read_svg
 
 F64 = NDArray[np.float64]
 GCODE_SUFFIXES = (".gcode", ".nc", ".ngc", ".gc", ".g", ".tap")
+MAX_SHEET = 10.0  # [m] a sheet's width or height, as any size in a scene (10000 mm)
 
 
 class SheetLike(Protocol):
@@ -50,10 +52,25 @@ class SheetPlane(Protocol):
 
 @dataclass(frozen=True)
 class PaperSize:
-    """A sheet's size alone [m] (the scene's ``Sheet`` also places it)."""
+    """A sheet's size alone [m] (the scene's ``Sheet`` also places it): width and
+    height each > 0 and at most 10 m (A5 portrait is ``PaperSize(0.148, 0.210)``).
+
+    Raises:
+        InputError: a width or height that is not a number in that range.
+    """
 
     width: float
     height: float
+
+    def __post_init__(self) -> None:
+        for name, v in (("width", self.width), ("height", self.height)):
+            if not (is_number(v) and 0.0 < v <= MAX_SHEET):  # NaN fails too
+                finite = is_number(v) and math.isfinite(v)
+                got = f"{shown(v)} m ({brief(float(v) * 1e3)} mm)" if finite else shown(v)
+                raise InputError(
+                    f"PaperSize {name} must be more than 0 and at most {MAX_SHEET * 1e3:g} mm, "
+                    f"given in metres (A5 is PaperSize(0.148, 0.210)), got {got}"
+                )
 
 
 @dataclass(frozen=True)
