@@ -15,8 +15,9 @@ from script_arms import counting_arm
 
 import armkit.tasks
 from armkit import Arm
+from armkit.motion import trapezoid
 from armkit.script import ScriptCheckError, Source, check_source, run_source
-from armkit.tasks import Start
+from armkit.tasks import GRIP_S, Start
 
 TIPS = "scene board_001\nmove 200 0 150\npick red\nplace board[0,1]\nhome\n"
 
@@ -54,8 +55,26 @@ def test_the_check_follows_the_cubes_from_task_to_task() -> None:
 def test_after_a_task_the_arm_is_where_its_plan_ends() -> None:
     result = _check("scene board_001\npick red\nhome\n")
     pick, home = result.plan.steps
-    assert pick.duration is None and pick.q is not None  # planned, timed when it runs
+    assert pick.note == "pick: 9 steps" and pick.q is not None  # planned and timed
     assert home.duration is not None and home.duration > 0.0  # timed from the plan's end
+
+
+@pytest.mark.parametrize(
+    "jobs",
+    ["pick red\nplace green", "rotate-cube red backward", "move-item blue to xyz 180 -100 0"],
+)
+def test_the_check_times_the_tasks_as_the_simulator_runs_them(jobs: str) -> None:
+    # moves at full speed; around each gripper command the simulator waits until the
+    # gripper has moved (hardware: tasks.GRIP_S before and after)
+    arm = counting_arm()[0]
+    t0 = arm.clock.now()
+    result = run_source(arm, Source("job.arm", f"scene board_001\n{jobs}\nhome\n"))
+    took = arm.clock.now() - t0
+    assert result.plan.unknown == 0
+    assert result.plan.total == pytest.approx(took, rel=0.03)
+    hardware = check_source(Source("job.arm", f"scene board_001\n{jobs}\n"), hardware=True)
+    grips = sum(1 for s in _task_steps(jobs) if s.grip is not None)
+    assert hardware.plan.total == pytest.approx(_moves_time(jobs) + grips * 2 * GRIP_S)
 
 
 def test_on_a_simulated_arm_the_check_plans_with_the_cubes_where_they_are() -> None:
@@ -111,3 +130,34 @@ def test_a_task_given_a_start_only_plans() -> None:
         Start(arm.model, np.zeros(3))
     with pytest.raises(armkit.InputError, match="Start needs an ArmModel"):
         Start("openmanipulator_x", np.zeros(4))  # type: ignore[arg-type]
+
+
+def _task_steps(jobs: str) -> list[Any]:
+    """The steps of the one task in ``jobs`` planned from home on board_001 (place: after
+    the pick before it)."""
+    model = armkit.load_model("openmanipulator_x")
+    scene = armkit.scene.load_scene("board_001")
+    first, *rest = jobs.split("\n")
+    words = first.split()
+    if words[0] == "pick":
+        plan = armkit.tasks.pick(Start(model, model.home), scene, words[1])
+        after = armkit.tasks.place(
+            Start(model, plan.q_end), plan.rest, words[1], rest[0].split()[1]
+        )
+        return [*plan.steps, *after.steps]
+    if words[0] == "rotate-cube":
+        return list(
+            armkit.tasks.rotate_cube(Start(model, model.home), scene, words[1], words[2]).steps
+        )
+    task = armkit.tasks.move_item(Start(model, model.home), scene, words[1], (180.0, -100.0, 0.0))
+    return list(task.steps)
+
+
+def _moves_time(jobs: str) -> float:
+    model = armkit.load_model("openmanipulator_x")
+    q, took = model.home, 0.0
+    for step in _task_steps(jobs):
+        if step.q is not None:
+            took += trapezoid(model, q, step.q, 1.0).duration
+            q = step.q
+    return took

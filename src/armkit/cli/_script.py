@@ -102,7 +102,8 @@ def _check(args: argparse.Namespace) -> int:
     arm = _choose(args, "arm", setup.arm, source)
     scene = _scene(args)
     model = load_model(arm) if arm != (setup.arm.value if setup.arm else None) else None
-    result = check_source(source, model=model, scene=scene)
+    hardware = _choose(args, "driver", setup.driver, source) != "sim"
+    result = check_source(source, model=model, scene=scene, hardware=hardware)
     _report(result)
     result.raise_if_failed()
     if args.plan:
@@ -124,7 +125,8 @@ def _run(args: argparse.Namespace) -> int:
     with _open(args, setup, source) as arm:
         result = check_source(
             source, model=arm.model, scene=_scene(args), q0=arm.driver.read(),
-            live=live_objects(arm), require_jobs=not args.dry_run, repeat=args.repeat,
+            live=live_objects(arm), hardware=arm.world is None,
+            require_jobs=not args.dry_run, repeat=args.repeat,
         )  # fmt: skip
         _report(result)
         result.raise_if_failed()

@@ -91,6 +91,7 @@ def check_source(
     grip0: float | None = None,
     held: str | None = None,
     live: Callable[[Scene], Scene] | None = None,
+    hardware: bool = False,
     require_jobs: bool = False,
     repeat: int = 1,
     base_dir: Path | None = None,
@@ -108,6 +109,7 @@ def check_source(
         live: where the script's tasks will find the scene's objects, a function of the
             scene (``live_objects`` of the arm it will run on); None: as the scene has
             them (a script without a scene: the empty table). The tasks are planned so.
+        hardware: it runs on real hardware, not the simulator (a task's waits differ).
         require_jobs: a job whose function is missing is an error (``run``), not a warning.
         repeat: run the whole script this many times (``--repeat``).
         base_dir: where relative file names start (default: the script's folder).
@@ -129,7 +131,7 @@ def check_source(
     objects = job_scene(scene)
     if live is not None and objects is not None:
         objects = live(objects)
-    arm = ModelArm(model, model.home if q0 is None else q0, grip0, held, objects)
+    arm = ModelArm(model, model.home if q0 is None else q0, grip0, held, objects, hardware)
     walker = Walker(Resolver(model, scene, here), arm, source.name, checking=True)
     _seed(walker, program, env)
     walker.walk(looped(program.statements, repeat))

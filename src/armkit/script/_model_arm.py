@@ -8,7 +8,9 @@ will run it instead: the runs ``armkit.drivers.timed.forecast_move`` plans with
 the timing model a new unit starts with (``default_timing``), one joint at a
 time, gravity, overshoot and battery included, and its straight lines through the
 waypoints the driver will follow them by (``plan_path_runs``), the plan's distance
-from the line noted on the step.
+from the line noted on the step. The tasks (``pick``, ``place``, ...) are planned
+whole by ``armkit.tasks`` from where the arm is, with the cubes where the tasks
+before them leave them, and timed as ``tasks.run_plan`` carries them out.
 """
 
 from __future__ import annotations
@@ -77,9 +79,9 @@ class ModelArm:
 
     def __init__(
         self, model: ArmModel, q0: F64 | None, grip0: float | None, held: str | None = None,
-        objects: Scene | None = None,
+        objects: Scene | None = None, hardware: bool = False,
     ) -> None:  # fmt: skip
-        self.model = model
+        self.model, self.hardware = model, hardware
         q = None if q0 is None else np.array(q0, dtype=np.float64)
         self.state = ArmState(q, grip0, held=held, objects=objects)
         self.plan = Plan(model.joint_names)
@@ -162,8 +164,9 @@ class ModelArm:
         held = self._held(command, args)
         plan = self._plan_job(command, args)
         if plan is not None:  # planned whole, as it will be when it runs
+            took = self._task_time(plan)
             self.state = replace(self.state, grip=None, held=held, objects=plan.rest)
-            self._step(plan.q_end, None, note=f"{command}: {count(len(plan.steps), 'step')}")
+            self._step(plan.q_end, took, note=f"{command}: {count(len(plan.steps), 'step')}")
             return
         seed = self.model.home if self.state.q is None else self.state.q
         for name, value in args.items():
@@ -189,6 +192,23 @@ class ModelArm:
         plan = job_function(command)(Start(self.model, s.q), s.objects, **called)
         assert isinstance(plan, TaskPlan)
         return plan
+
+    def _task_time(self, plan: TaskPlan) -> float:
+        """How long ``tasks.run_plan`` takes to carry ``plan`` out [s]: its joint moves at
+        full speed (a timed arm's as its driver runs them), each gripper command between
+        two waits for the arm to stand still: ``GRIP_S`` each on hardware, on the
+        simulator until the gripper has moved."""
+        from ..tasks import GRIP_S
+
+        q, took = plan.q_start, 0.0
+        for step in plan.steps:
+            if step.q is not None:
+                took += self._onto_time(q, step.q)
+                q = step.q
+            elif step.grip is not None:
+                took += 2.0 * GRIP_S if self.hardware else self._grip_time(step.grip)
+                self.state = replace(self.state, grip=step.grip)
+        return took
 
     def _held(self, command: str, args: dict[str, object]) -> Any:
         """The cube held after the job ``command``; ScriptError if the job cannot be

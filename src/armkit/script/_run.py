@@ -185,6 +185,7 @@ def run_source(
         scene=scene,
         q0=arm.driver.read(),
         live=live_objects(arm),
+        hardware=arm.world is None,
         require_jobs=True,
         repeat=repeat,
         base_dir=base_dir,

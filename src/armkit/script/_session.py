@@ -103,6 +103,7 @@ class Session:
         result = check_source(
             source, model=self.arm.model, scene=self.scene, q0=self.arm.driver.read(),
             grip0=self.backend.grip_width, held=self.backend.held, live=live_objects(self.arm, self.backend.objects),
+            hardware=self.arm.world is None,
             require_jobs=True,
             base_dir=self.base_dir, env=env,
         )  # fmt: skip

@@ -24,6 +24,7 @@ from ._plan import Step as Step
 from ._plan import TaskError as TaskError
 from ._reach import ReachResult as ReachResult
 from ._reach import reach as reach
+from ._run import GRIP_S as GRIP_S
 from ._run import run_plan as run_plan
 from ._search import SearchResult as SearchResult
 from ._search import check_angles as check_angles
