@@ -152,3 +152,61 @@ def test_jog_on_piped_input_is_refused_and_the_next_line_is_a_command(
     assert "gripper at x 200.0 y 0.0 z 100.0 mm, pitch -45.0 deg" in out.getvalue()
     assert not s.resolver.poses  # no 'v' key saved a pose
     assert s.teaching.lines == [*lines, "move xyz 200 0 100 pitch -45"]
+
+
+@pytest.mark.parametrize(
+    ("line", "said"),
+    [
+        ("where extra", "error: where takes no argument, got 'extra'"),
+        ("poses x", "error: poses takes no argument, got 'x'"),
+        ("quit now", "error: quit takes no argument, got 'now'"),
+        ("exit 0 1", "error: exit takes no argument, got '0 1'"),
+        ("limp please", "error: limp takes no argument, got 'please'"),
+        ("hold it", "error: hold takes no argument, got 'it'"),
+        ("help move x", "error: help takes at most one WORD (help [WORD]), got 'move x'"),
+        ("jog 5 6", "error: jog takes at most one STEP_DEG (jog [STEP_DEG]), got '5 6'"),
+        ("save", "error: save takes one NAME (save NAME), got none"),
+        ("save a b", "error: save takes one NAME (save NAME), got 'a b'"),
+        ("write", "error: write takes one FILE (write FILE), got none"),
+        ("write a.arm b", "error: write takes one FILE (write FILE), got 'a.arm b'"),
+        (
+            "run a.arm b",
+            "error: run takes one FILE (run FILE), got 'a.arm b'; "
+            "a timed motor is run JOINT forward|backward|left|right TIME",
+        ),
+    ],
+)
+def test_shell_words_refuse_extra_words_and_do_nothing(
+    arm: tuple[Arm, CountingDriver], tmp_path: Path, line: str, said: str
+) -> None:
+    """A shell word with too many (or, for save and write, no) words says so in one line and
+    does nothing else (was: 'where extra' printed where, 'quit now' quit, 'jog 5 6' jogged)."""
+    a, driver = arm
+    s = Session(a, base_dir=tmp_path)
+    lines, sent = list(s.teaching.lines), driver.sent
+    reply = s.handle(line)
+    assert (reply.text, reply.quit, reply.jog, reply.more) == (said, False, None, False)
+    assert driver.sent == sent and s.teaching.lines == lines and not s.resolver.poses
+    assert list(tmp_path.iterdir()) == [] and not s.limp
+    assert s.handle("where").text.startswith("gripper at")  # the next line is read as usual
+
+
+def test_a_block_with_no_end_when_the_input_ends_says_nothing_of_it_ran(
+    arm: tuple[Arm, CountingDriver], tmp_path: Path
+) -> None:
+    """Was: the half-typed block was dropped without a word. The exit status stays 0, as
+    for a line that fails."""
+    a, driver = arm
+    s = Session(a, base_dir=tmp_path)
+    out = io.StringIO()
+    stdin = io.StringIO("where\nrepeat 3\n  turn wrist by 5\n  repeat 2\n  end\n")
+    assert Shell(s, stdin=stdin, stdout=out).loop() == 0
+    assert driver.sent == 0
+    assert out.getvalue().endswith(
+        "... ... ... ... error: the repeat block opened at line 2 has no 'end' before the "
+        "input ended; nothing of it ran\n"
+    )
+    assert s.end_of_input().text == ""  # said once, the block dropped
+    out = io.StringIO()  # a closed block: no such line
+    assert Shell(s, stdin=io.StringIO("define f\nturn wrist by 5\nend\n"), stdout=out).loop() == 0
+    assert "error" not in out.getvalue()

@@ -20,7 +20,7 @@ from ._ast import Header, Source
 from ._backend import ScriptRunError
 from ._check import Env, check_source
 from ._diagnostics import ScriptCheckError
-from ._grammar import RESERVED, usage_of
+from ._grammar import DIRECTIONS, RESERVED, usage_of
 from ._lexer import LexError, Token, tokenize
 from ._resolve import JointPose, Resolver, SceneInfo
 from ._run import ArmBackend, live_objects, run_source
@@ -28,6 +28,8 @@ from ._teach import Jog, Teaching, joints_line, pose_now, torque
 from ._walk import Walker
 
 SHELL_WORDS = ("where", "poses", "save", "write", "jog", "limp", "hold", "help", "quit", "exit")
+ARGUMENTS = {"help": "[WORD]", "jog": "[STEP_DEG]", "save": "NAME", "write": "FILE"}
+"""The shell words that take one argument ([optional]); the others take none."""
 HELP = """\
 the language: move, line, joints, turn, grip, home, wait, speed, light, run, pose,
   repeat N ... end, define NAME(P, ...) ... end, and the jobs (help WORD for one)
@@ -80,6 +82,11 @@ class Session:
             return self._shell_word(words)
         if not self._pending and len(words) == 2 and words[0] == "run":
             return Reply(LIMP) if self.limp else self._run_file(words[1])
+        if not self._pending and words[:1] == ["run"] and len(words) > 2 and self._not_timed(words):
+            return Reply(
+                f"error: run takes one FILE (run FILE), got {' '.join(words[1:])!r}; a timed "
+                "motor is run JOINT forward|backward|left|right TIME"
+            )
         self._pending.append(line)
         self._depth += _depth_change(line)
         if self._depth > 0:
@@ -93,6 +100,21 @@ class Session:
     def cancel(self) -> None:
         """Drop a half-typed block (Ctrl-C at the prompt)."""
         self._pending, self._depth = [], 0
+
+    def end_of_input(self) -> Reply:
+        """The input ended: a half-typed block is dropped, and the reply says so."""
+        if not self._pending:
+            return Reply()
+        opened = self._pending[0].split()[0]
+        self.cancel()
+        return Reply(
+            f"error: the {opened} block opened at line {self.next_line} has no 'end' before "
+            "the input ended; nothing of it ran"
+        )
+
+    def _not_timed(self, words: list[str]) -> bool:
+        """Whether ``run A B ...`` is not the language's ``run JOINT DIRECTION TIME``."""
+        return words[1] not in self.arm.model.joint_names and words[2] not in DIRECTIONS
 
     def execute(self, text: str) -> Reply:
         """Check ``text`` against the arm as it is now, then run it."""
@@ -157,10 +179,12 @@ class Session:
 
     def _shell_word(self, words: list[str]) -> Reply:
         word, args = words[0], words[1:]
+        if wrong := _wrong_count(word, args):
+            return Reply(wrong)
         if word in ("quit", "exit"):
             return Reply(self._torque(True).text if self.limp else "", quit=True)
         if word in ("limp", "hold"):
-            return self._torque(word == "hold") if not args else Reply(f"error: usage: {word}")
+            return self._torque(word == "hold")
         if word == "where":
             return Reply(self.where())
         if word == "poses":
@@ -173,8 +197,6 @@ class Session:
             return Reply(usage_of(args[0]) or f"no command {args[0]!r}; type help")
         if word == "jog":
             return Reply(LIMP) if self.limp else self._jog_word(args)
-        if len(args) != 1:
-            return Reply(f"error: usage: {word} {'NAME' if word == 'save' else 'FILE'}")
         return self._save(args[0]) if word == "save" else self._write(args[0])
 
     def _jog_word(self, args: list[str]) -> Reply:
@@ -259,6 +281,19 @@ def _unreadable(exc: OSError | UnicodeDecodeError) -> str:
     if isinstance(exc, UnicodeDecodeError):
         return "it is not a text file (UTF-8); give a script file (.arm)"
     return f"it cannot be read ({(exc.strerror or type(exc).__name__).lower()})"
+
+
+def _wrong_count(word: str, args: list[str]) -> str:
+    """'' if the shell word ``word`` may take ``args``, else the one-line error."""
+    what = ARGUMENTS.get(word, "")
+    optional = what.startswith("[")
+    if len(args) <= bool(what) and (args or optional or not what):
+        return ""
+    got = repr(" ".join(args)) if args else "none"
+    if not what:
+        return f"error: {word} takes no argument, got {got}"
+    most = "at most " if optional else ""
+    return f"error: {word} takes {most}one {what.strip('[]')} ({word} {what}), got {got}"
 
 
 def _depth_change(line: str) -> int:

@@ -61,6 +61,8 @@ class Shell:
                 try:
                     line = self._input("... " if more else self.prompt())
                 except EOFError:
+                    if text := self.session.end_of_input().text:  # a block with no 'end'
+                        self._say(("\n" if self.stdin.isatty() else "") + text)
                     break
                 except KeyboardInterrupt:
                     self.session.cancel()
