@@ -18,7 +18,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ._arm_inputs import Timing, number, numbers, pitch_radians, timing_of
 from ._closing import close_after
-from ._errors import DeviceError, InputError, UnreachableError
+from ._errors import DeviceError, InputError
 from .connect import World, open_driver, world_of
 from .drivers import Driver
 from .kinematics import fk, ik, pitch_follows, pitch_of
@@ -35,7 +35,7 @@ from .motion import (
     plan_path,
     retreat,
 )
-from .scene import Scene, check_clear, joint_sweep, load_scene
+from .scene import Scene, load_scene, move_refusal
 
 F64 = NDArray[np.float64]
 REACHED = math.radians(0.2)  # a move with a timeout is done when every joint is this close
@@ -278,24 +278,11 @@ class Arm:
         follow(self.driver, self._kin, path, NaiveStepping(), self.clock)
 
     def _check_clear(self, path: F64) -> None:
-        """Refuse a move from here through ``path`` (K, dof) [rad], sampled in joint
-        space, that puts a link below the table, into the base column or into the scene's
-        objects."""
-        hit = check_clear(self._kin, path, self.scene)
-        where = "there"
-        if hit is None:
-            hit = check_clear(self._kin, joint_sweep(self.driver.read(), path), self.scene)
-            where = "on the way"
-        if hit is not None:
-            raise UnreachableError(
-                f"move refused: {where}, {hit.describe()}; "
-                + (
-                    "choose a point further from the base"
-                    if hit.object == "base column"
-                    else "choose a higher point or another way"
-                ),
-                reason="table" if hit.object == "table" else "collision",
-            )
+        """Refuse a move from here through ``path`` (K, dof) [rad] that puts a link below the
+        table, into the base column or into the scene's objects (``scene.move_refusal``)."""
+        refused = move_refusal(self._kin, self.driver.read(), path, self.scene)
+        if refused is not None:
+            raise refused
 
     def _wait_until(self, q: F64, timeout: float) -> None:
         deadline = self.clock.now() + timeout

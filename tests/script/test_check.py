@@ -40,7 +40,7 @@ def test_several_mistakes_each_with_line_and_column() -> None:
     assert "2deg is an angle, but a time is needed" in text
     assert "grip 300 mm is outside openmanipulator_x's 20..75 mm" in text
     assert "cannot reach (900.0, 0.0, 50.0) mm" in text
-    assert "30.0 mm below the table" in text
+    assert "30.0 mm into the table" in text  # as Arm refuses it (scene.move_refusal)
     assert "this repeat has no 'end'" in text
 
 
@@ -157,7 +157,7 @@ dip above
     found = {(d.loc.line, d.loc.col): d for d in result.diagnostics}
     assert found[3, 8].message == "spot is the number 30, but a name is needed"
     assert found[3, 8].notes == ("in dip called at line 10",)
-    assert "below the table" in found[4, 3].message
+    assert "into the table" in found[4, 3].message
     assert found[4, 3].notes == ("in dip called at line 9",)
     assert found[4, 18].message == "depth is 'above', a name, but a length is needed"
     assert "did you mean 'dip'?" in found[11, 1].message

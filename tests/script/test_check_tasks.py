@@ -161,3 +161,28 @@ def _moves_time(jobs: str) -> float:
             took += trapezoid(model, q, step.q, 1.0).duration
             q = step.q
     return took
+
+
+@pytest.mark.parametrize(
+    ("move", "hit"),
+    [
+        ("move 220 0 15", "the gripper would be 12.5 mm into the green"),
+        ("move 310 45 4", "the gripper would be 16.0 mm into the board"),
+        ("move 0 0 5", "the gripper would be 25.0 mm into the base column"),
+    ],
+)
+def test_moves_are_checked_as_the_arm_checks_them(move: str, hit: str) -> None:
+    # the checker had its own table test (frame origins only), so a script could pass
+    # check with a link in the table or the gripper in a cube and be refused by run
+    arm, driver = counting_arm()
+    text = f"scene board_001\nmove 200 0 150\n{move}\n"
+    with pytest.raises(ScriptCheckError, match=f"job.arm:3:1: move refused: there, {hit}"):
+        run_source(arm, Source("job.arm", text))
+    assert driver.sent == 0
+
+
+def test_after_a_task_moves_are_checked_against_the_cubes_where_it_left_them() -> None:
+    moved = "scene board_001\npick red\nplace xyz 180 -100 0\n"
+    refused = _check(moved + "move 180 -100 20 pitch -90\n")
+    assert "the gripper would be 5.0 mm into the red" in refused.diagnostics[0].message
+    assert _check(moved + "move 220 -45 20 pitch -90\n").ok  # where red stood

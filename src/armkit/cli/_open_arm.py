@@ -1,6 +1,7 @@
 """The arm a motion command (and ``armkit run``) moves: opened once every file it will
 write is known to be writable, with the OWI's uncertain-estimate warning as one CLI
-line, and watched as ``--view``/``--gif`` say (``armkit.cli._watch``)."""
+line, and watched as ``--view``/``--gif`` say (``armkit.cli._watch``); with ``--scene``
+its moves are checked against the scene's objects (where a simulated arm has them)."""
 
 from __future__ import annotations
 
@@ -17,7 +18,7 @@ from ..drivers.timed import TimedDriver
 from ..model import load_model
 from ._args import check_folder
 from ._kept import open_kept
-from ._watch import watch_world, watching
+from ._watch import kept_objects, watch_world, watching
 
 
 @contextlib.contextmanager
@@ -31,12 +32,15 @@ def open_arm(args: argparse.Namespace) -> Iterator[Arm]:
         check_sim_port(model, args.port)
         check_output_path(args.port, "--port (the simulated arm's state file)")
     world = watch_world(args)
+    scene = _scene(args)
     try:
-        arm = Arm(model, open_kept(model, args, world))
+        arm = Arm(model, open_kept(model, args, world), scene=scene)
         if isinstance(arm.driver, TimedDriver):  # before moving from an uncertain estimate
             rehome = f"armkit --arm {args.arm} --driver {args.driver} rehome"
             arm.driver.warn = lambda text: print(f"armkit: warning: {text}: {rehome}", file=sys.stderr)  # fmt: skip
-        with arm, watching(args, arm, _scene(args)):
+        with arm, kept_objects(args, arm, scene), watching(args, arm, scene) as physics:
+            if physics is not None:  # moves are checked against the objects where they are
+                arm.scene = physics.scene
             yield arm
     finally:
         if world is not None:
@@ -44,9 +48,8 @@ def open_arm(args: argparse.Namespace) -> Iterator[Arm]:
 
 
 def _scene(args: argparse.Namespace) -> Any:
-    """The --scene to show and simulate while watching (None if not watching or none)."""
-    if not (getattr(args, "view", False) or getattr(args, "gif", None)):
-        return None
+    """The --scene (None if not given): every move is checked against its objects, which
+    a simulated arm keeps between commands (``--port FILE``) and shows when watched."""
     from ._scene import scene_of
 
     return scene_of(args, required=False)

@@ -31,6 +31,7 @@ from ._physics import SceneEvent as SceneEvent
 from ._physics import ScenePhysics as ScenePhysics
 from ._picture import PICTURE_SUFFIXES as PICTURE_SUFFIXES
 from ._picture import top_view as top_view
+from ._refusal import move_refusal as move_refusal
 from ._scene import Scene as Scene
 from ._show import describe as describe
 from ._state import load_physics as load_physics
@@ -38,6 +39,7 @@ from ._state import physics_text as physics_text
 from ._state import rest_scene as rest_scene
 from ._state import save_physics as save_physics
 from ._state import scene_state_file as scene_state_file
+from ._state import without as without
 from ._support import Rect as Rect
 from ._support import Settled as Settled
 from ._support import settle as settle

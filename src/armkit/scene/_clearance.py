@@ -25,6 +25,7 @@ from ._scene import Scene
 F64 = NDArray[np.float64]
 TOUCH = 0.2e-3  # [m]: surfaces this far into each other still only touch
 SWEEP_STEP = 0.0175  # [rad] (1 deg): joint-space sampling of a move for the check
+COLUMN = "base column"  # the object a link folding into the arm's own base hits
 INTO_COLUMN = 2e-3  # [m]: how far a link's capsule may reach into the base column's (both
 # are rough envelopes of the real parts)
 
@@ -130,7 +131,7 @@ def _column(caps: Capsules, column: int, names: tuple[str, ...]) -> Collision | 
     gap = segment_segment_distance(*ends) - caps.radii[arm, None] - caps.radii[None, col]
     dist = np.full(caps.p0.shape[:2], np.inf)
     dist[:, arm] = gap.min(axis=2)
-    return _first(dist, caps.links, names, -INTO_COLUMN, "base column")
+    return _first(dist, caps.links, names, -INTO_COLUMN, COLUMN)
 
 
 def _shorter(length: F64, radius: F64) -> F64:

@@ -131,7 +131,8 @@ def check_source(
     objects = job_scene(scene)
     if live is not None and objects is not None:
         objects = live(objects)
-    arm = ModelArm(model, model.home if q0 is None else q0, grip0, held, objects, hardware)
+    start = model.home if q0 is None else q0
+    arm = ModelArm(model, start, grip0, held, objects, hardware, has_scene=scene is not None)
     walker = Walker(Resolver(model, scene, here), arm, source.name, checking=True)
     _seed(walker, program, env)
     walker.walk(looped(program.statements, repeat))

@@ -1,7 +1,9 @@
 """The checker's arm: the model's kinematics and timing instead of a device.
 
 It follows the script statement by statement, solving every target (reach,
-joint limits, the table plane, straight lines point by point) and timing every
+joint limits, straight lines point by point) and checking every move's clearance
+as ``Arm`` will (``scene.move_refusal``: the table, the base column and the
+scene's objects where the tasks leave them), and timing every
 motion with ``armkit.motion``, so a script is known good, and how long it
 takes, before anything moves. An OWI-535 (timed motors) is timed as its driver
 will run it instead: the runs ``armkit.drivers.timed.forecast_move`` plans with
@@ -15,7 +17,6 @@ before them leave them, and timed as ``tasks.run_plan`` carries them out.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Hashable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, replace
@@ -24,7 +25,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import JointLimitError, ScriptError, UnreachableError
+from .._errors import ScriptError, UnreachableError
 from .._terminal import count
 from ..drivers.timed import (
     Forecast,
@@ -34,10 +35,10 @@ from ..drivers.timed import (
     grip_seconds,
     plan_path_runs,
 )
-from ..kinematics import fk, fk_frames, ik
-from ..model import ArmModel
+from ..kinematics import fk, ik
+from ..model import ArmModel, check_joints
 from ..motion import line, plan_path, time_path, trapezoid
-from ..scene import Scene
+from ..scene import Scene, move_refusal, without
 from ._ast import Loc, Statement
 from ._backend import Frame
 from ._jobs import JOBS, NOTHING_PICKED, called_with, job_function
@@ -51,8 +52,6 @@ F64 = NDArray[np.float64]
 GRIP_SPEED = 0.05  # gripper opening speed assumed for timing [m/s]
 TOOL_ACCEL = 0.5  # tool acceleration of straight lines [m/s^2] (TimedStreaming's default)
 LINE_SPACING = 0.002  # straight lines are checked every 2 mm [m]
-SWEEP_SAMPLES = 16  # points checked against the table along a joint move
-TABLE_TOLERANCE = 1e-4  # [m]
 
 
 @dataclass(frozen=True)
@@ -79,9 +78,12 @@ class ModelArm:
 
     def __init__(
         self, model: ArmModel, q0: F64 | None, grip0: float | None, held: str | None = None,
-        objects: Scene | None = None, hardware: bool = False,
+        objects: Scene | None = None, hardware: bool = False, has_scene: bool = False,
     ) -> None:  # fmt: skip
         self.model, self.hardware = model, hardware
+        # the scene's boards, containers, ... (its cubes move); None: moves are checked
+        # against the table alone, as ``Arm`` checks them without a scene
+        self._fixed = replace(objects, cubes=()) if has_scene and objects is not None else None
         q = None if q0 is None else np.array(q0, dtype=np.float64)
         self.state = ArmState(q, grip0, held=held, objects=objects)
         self.plan = Plan(model.joint_names)
@@ -111,14 +113,16 @@ class ModelArm:
     def turn(self, joint: str, angle: float | None, relative: bool) -> None:
         q0 = self.state.q
         j = self.model.joint_index(joint)
-        if angle is not None and not relative:
-            self._check_pose(self.model.home, only=(j, angle))
+        if angle is not None and not relative:  # its limits, before the pose is known
+            at = self.model.home.copy()
+            at[j] = angle
+            check_joints(self.model, at)
         if angle is None or q0 is None:
             self._step(None, None)
             return
         q1 = q0.copy()
         q1[j] = q0[j] + angle if relative else angle
-        self._check_pose(q1)
+        self._check_move(q1)
         self._joint_move(q0, q1)
 
     def grip(self, width: float | None) -> None:
@@ -128,7 +132,7 @@ class ModelArm:
 
     def home(self) -> None:
         q1 = self.model.home
-        self._check_pose(q1)
+        self._check_move(q1)
         self._joint_move(self.state.q, q1)
 
     def wait(self, seconds: float | None) -> None:
@@ -269,10 +273,7 @@ class ModelArm:
         else:
             seed = self.model.home if self.state.q is None else self.state.q
             q = np.asarray(ik(self._kin(), target.xyz, target.pitch, seed).q, dtype=np.float64)
-        self._check_pose(q)
-        if self.state.q is not None and self.model.gripper.kind != "timed":
-            for s in np.linspace(0.0, 1.0, SWEEP_SAMPLES)[1:-1]:
-                self._check_table(self.state.q + s * (q - self.state.q), "on the way there ")
+        self._check_move(q)
         return q
 
     def _point(self, target: Target) -> Point:
@@ -289,8 +290,7 @@ class ModelArm:
             return
         points = line(start, goal.xyz, LINE_SPACING)
         path = plan_path(kin, points, goal.pitch, q0)
-        for q in path.q:
-            self._check_table(q, "along the line ")
+        self._check_move(path.q[-1], path.q)
         if self.timing is not None:  # as the timed driver follows it: waypoints, not a stream
             runs = plan_path_runs(self.timing, kin, q0, self.state.motor_s, path.q, path.points)
             self.state = replace(self.state, motor_s=runs.motor_s)
@@ -300,40 +300,26 @@ class ModelArm:
         onto = self._onto_time(q0, path.q[0])  # ``follow``'s move onto its start
         self._step(path.q[-1].copy(), onto + took)
 
-    def _check_pose(self, q: F64, only: tuple[int, float] | None = None) -> None:
-        """Joint limits and the table for ``q`` [rad]; with ``only`` = (joint, angle),
-        just that joint's limits."""
-        if only is not None:
-            q = q.copy()
-            q[only[0]] = only[1]
-        for joint, angle in zip(self.model.joints, q, strict=True):
-            if not joint.lower - 1e-9 <= angle <= joint.upper + 1e-9:
-                raise JointLimitError(
-                    f"{joint.name} {math.degrees(angle):.2f} deg is outside its limits "
-                    f"{math.degrees(joint.lower):.2f}..{math.degrees(joint.upper):.2f} deg"
-                )
-        if only is None:
-            self._check_table(q, "")
+    def _check_move(self, q: F64, path: F64 | None = None) -> None:
+        """Joint limits at ``q`` [rad], and clearance as ``Arm`` checks it
+        (``scene.move_refusal``): at the poses ``path`` (K, dof) [rad] (default: q) and on
+        the way there from where the arm is, when that is known."""
+        check_joints(self.model, q)
+        poses = q[None, :] if path is None else path
+        refused = move_refusal(self._kin(), self.state.q, poses, self._obstacles())
+        if refused is not None:
+            raise refused
 
-    def _check_table(self, q: F64, where: str) -> None:
-        z = fk_frames(self._kin(), q)[1:, 2, 3]
-        k = int(np.argmin(z))
-        table = self.model.table_z
-        if z[k] < table - TABLE_TOLERANCE:
-            raise UnreachableError(
-                f"{where}the {self._part(k + 1)} would be {(table - z[k]) * 1000:.1f} mm below "
-                f"the table (z {table * 1000:g} mm); choose a higher target",
-                reason="table",
-            )
-
-    def _part(self, frame: int) -> str:
-        dof = self.model.dof
-        if frame == dof + 1:
-            return "gripper point"
-        if frame == dof:
-            return "flange"
-        k = frame if self.model.convention == "standard" else frame - 1
-        return f"{self.model.joint_names[k]} joint"
+    def _obstacles(self) -> Scene | None:
+        """What moves are checked against, as ``Arm`` will check them: the script's scene
+        with its cubes where the tasks leave them (a held one left out); its cubes left
+        out where that is not known (after a ``search``); None if it names no scene."""
+        s = self.state
+        if self._fixed is None:
+            return None
+        if s.objects is None or s.held is UNKNOWN:
+            return self._fixed
+        return without(s.objects, s.held)
 
     # -- timing ----------------------------------------------------------
     def _joint_move(self, q0: F64 | None, q1: F64) -> None:

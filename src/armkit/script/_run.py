@@ -16,7 +16,7 @@ from .._errors import DeviceError, ScriptError
 from ..arm import Arm
 from ..kinematics import fk
 from ..motion import TimedStreaming, line
-from ..scene import Scene
+from ..scene import Scene, without
 from ._ast import Loc, Source, Statement
 from ._backend import Frame
 from ._check import CheckResult, check_source, looped
@@ -30,10 +30,16 @@ StepHook = Callable[[Statement, tuple[Frame, ...]], None]
 
 
 class ArmBackend:
-    """A ``Backend`` that moves a real (or simulated) arm."""
+    """A ``Backend`` that moves a real (or simulated) arm; with a script's scene, the arm's
+    moves are checked against its objects (where the tasks leave them)."""
 
     def __init__(self, arm: Arm, scene: SceneInfo | None, on_step: StepHook | None = None):
         self.arm, self.scene, self.on_step = arm, scene, on_step
+        loaded = None if scene is None else job_scene(scene)
+        if loaded is not None:
+            from ..tasks import obstacles_now
+
+            arm.scene = obstacles_now(arm, loaded)
         self.fraction: float | None = None  # joint moves: fraction of max speed (None: 1)
         self.tool_speed = TimedStreaming().speed  # straight lines [m/s]
         self.grip_width: float | None = None
@@ -98,12 +104,15 @@ class ArmBackend:
         done = job_function(command)(
             self.arm, self._scene(), **called_with(command, args, self.held)
         )
-        if isinstance(done, Plan):  # on hardware the next task plans with the cubes moved
-            self.objects = done.rest
         if command == "pick":
             self.held = str(args["cube"])
         elif command == "place":
             self.held = None
+        if isinstance(done, Plan):  # on hardware the next task plans with the cubes moved
+            self.objects = done.rest
+        from ..tasks import obstacles_now  # the arm's moves: checked against them too
+
+        self.arm.scene = obstacles_now(self.arm, without(self._scene(), self.held))
 
     def _scene(self) -> Scene:
         scene = self.scene_now()

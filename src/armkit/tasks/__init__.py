@@ -18,6 +18,7 @@ from ._live import TaskFailed as TaskFailed
 from ._live import attach_scene as attach_scene
 from ._live import attached as attached
 from ._live import objects_now as objects_now
+from ._live import obstacles_now as obstacles_now
 from ._live import run_checked as run_checked
 from ._plan import Plan as Plan
 from ._plan import Step as Step

@@ -100,6 +100,15 @@ def live_scene(
     return rest_scene(physics)
 
 
+def obstacles_now(arm: Arm, scene: Scene) -> Scene:
+    """What ``arm``'s moves are checked against: on a simulated arm with ``scene``'s
+    physics attached, the objects at rest there (a held cube left out); else ``scene``."""
+    physics = attached(arm)
+    if physics is None or physics.scene.name != scene.name:
+        return scene
+    return physics.scene
+
+
 def objects_now(arm: Arm, scene: Scene) -> Scene:
     """``scene`` with its objects where they are now: on a simulated arm with the
     scene's physics attached, as they rest there (a held cube in the gripper); else
