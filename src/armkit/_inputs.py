@@ -54,7 +54,8 @@ def shown(value: Any) -> str:
         return "None"
     if isinstance(value, str):
         return repr(value[:20])
-    return f"a {type(value).__name__}"
+    name = type(value).__name__
+    return f"{'an' if name[:1].lower() in 'aeiou' else 'a'} {name}"
 
 
 def array(

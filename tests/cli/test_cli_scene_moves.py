@@ -1,4 +1,6 @@
-"""With ``--scene``, a plain move is checked against the scene's objects as a task is:
+"""A simulated arm kept between commands keeps its cubes for every command and script.
+
+With ``--scene``, a plain move is checked against the scene's objects as a task is:
 ``armkit --scene board_001 move 220 0 20 --pitch -90`` put the gripper 8 mm into the
 green cube (the Arm of the motion commands was opened without the scene). The check
 is the one ``Arm`` makes (``scene.move_refusal``), against the objects where a simulated
@@ -48,3 +50,40 @@ def test_without_a_scene_only_the_table_and_the_base_are_checked(
     assert main([*port, "move", "220", "0", "20", "--pitch", "-90"]) == 0
     assert main([*port, "move", "0", "0", "5"]) == 2
     assert "into the base column" in capsys.readouterr().err
+
+
+def _where(kept: list[str], capsys: pytest.CaptureFixture[str]) -> str:
+    capsys.readouterr()
+    assert main([*kept, "where"]) == 0
+    return capsys.readouterr().out
+
+
+def test_place_with_nothing_in_the_gripper_is_refused_before_moving(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # it ran all its steps, then found the cube had not come along
+    kept = ["--scene", "board_001", "--port", str(tmp_path / "arm.json")]
+    before = _where(kept, capsys)
+    assert main([*kept, "place", "red", "--xyz", "150", "-150", "0"]) == 2
+    assert "place red: the gripper holds nothing; pick red up first" in capsys.readouterr().err
+    assert _where(kept, capsys) == before
+
+
+def test_scripts_and_commands_share_the_kept_cubes(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # scripts opened the arm without the scene's kept objects: red picked by a command
+    # was picked again from its socket by a script
+    port = str(tmp_path / "arm.json")
+    kept = ["--scene", "board_001", "--port", port]
+    assert main([*kept, "pick", "red"]) == 0
+    script = tmp_path / "s.arm"
+    script.write_text("scene board_001\nmove 200 0 150\npick red\n")
+    before = _where(kept, capsys)
+    assert main(["--port", port, "run", str(script)]) == 2
+    assert "s.arm:3:1: pick: the gripper holds red" in capsys.readouterr().err
+    assert _where(kept, capsys) == before  # refused by the check: nothing moved
+    script.write_text("scene board_001\nplace xyz 180 -100 0\nhome\n")
+    assert main(["--port", port, "run", "-q", str(script)]) == 0
+    assert main([*kept, "move", "180", "-100", "20", "--pitch", "-90"]) == 2  # red is there
+    assert "into the red" in capsys.readouterr().err

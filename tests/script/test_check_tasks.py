@@ -186,3 +186,12 @@ def test_after_a_task_moves_are_checked_against_the_cubes_where_it_left_them() -
     refused = _check(moved + "move 180 -100 20 pitch -90\n")
     assert "the gripper would be 5.0 mm into the red" in refused.diagnostics[0].message
     assert _check(moved + "move 220 -45 20 pitch -90\n").ok  # where red stood
+
+
+def test_opening_the_gripper_lets_the_held_cube_go() -> None:
+    # the check kept the cube held after 'grip open', so a 'place' passed the check and
+    # ran all its steps on a cube that had dropped
+    dropped = _check("scene board_001\npick red\ngrip open\nplace xyz 150 -150 0\n")
+    assert "no cube is picked here" in dropped.diagnostics[0].message
+    assert _check("scene board_001\npick red\ngrip open\nhome\npick red\n").ok
+    assert _check("scene board_001\npick red\ngrip 20mm\nplace xyz 150 -150 0\n").ok

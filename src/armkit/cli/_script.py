@@ -118,6 +118,7 @@ def _check(args: argparse.Namespace) -> int:
 
 def _run(args: argparse.Namespace) -> int:
     from ..script import MAX_REPEAT, check_source, live_objects, run_checked
+    from ..tasks import held_now
 
     if not 1 <= args.repeat <= MAX_REPEAT:
         raise InputError(f"--repeat must be 1..{MAX_REPEAT}, got {args.repeat}")
@@ -125,7 +126,7 @@ def _run(args: argparse.Namespace) -> int:
     with _open(args, setup, source) as arm:
         result = check_source(
             source, model=arm.model, scene=_scene(args), q0=arm.driver.read(),
-            live=live_objects(arm), hardware=arm.world is None,
+            held=held_now(arm), live=live_objects(arm), hardware=arm.world is None,
             require_jobs=not args.dry_run, repeat=args.repeat,
         )  # fmt: skip
         _report(result)
@@ -191,7 +192,20 @@ def _open(
         ns.driver = _choose(args, "driver", setup.driver, source)
         if setup.driver is not None and setup.driver.port is not None and args.port is None:
             ns.port = setup.driver.port
+        if setup.scene is not None and getattr(args, "scene", None) is None:
+            ns.scene = _scene_file(setup.scene, source)  # the arm's moves, kept objects
     return open_arm(ns)
+
+
+def _scene_file(header: Header, source: Source) -> str | None:
+    """The file of the scene a script's ``scene`` line names (None if it cannot be
+    loaded: the check says why)."""
+    from ..scene import Scene
+    from ..script import load_scene_info
+
+    info = load_scene_info(header.value, Path(source.name).parent, header.value_loc, [])
+    scene = None if info is None else info.scene
+    return str(scene.source) if isinstance(scene, Scene) and scene.source else None
 
 
 def _scene(args: argparse.Namespace) -> SceneInfo | None:

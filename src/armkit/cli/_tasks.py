@@ -221,8 +221,6 @@ def _plan(
     to = _to(args)
     if args.command == "place":
         return tasks.place(arm, scene, args.cube, to, pitch=args.pitch, **options)
-    if not (math.isfinite(args.lift) and 0 <= args.lift <= 500):
-        raise InputError(f"--lift must be 0..500 mm, got {args.lift}")
     return tasks.move_item(arm, scene, args.cube, to, lift=args.lift, pitch=args.pitch, **options)
 
 

@@ -41,7 +41,7 @@ from ..motion import line, plan_path, time_path, trapezoid
 from ..scene import Scene, move_refusal, without
 from ._ast import Loc, Statement
 from ._backend import Frame
-from ._jobs import JOBS, NOTHING_PICKED, called_with, job_function
+from ._jobs import JOBS, NOTHING_PICKED, called_with, job_function, lets_go
 from ._plan import Plan, PlanStep
 from ._resolve import UNKNOWN, JointPose, Point, Target
 
@@ -127,7 +127,13 @@ class ModelArm:
 
     def grip(self, width: float | None) -> None:
         took = None if width is None else self._grip_time(width)
-        self.state = replace(self.state, grip=width)
+        s = self.state
+        if isinstance(s.held, str) and (width is None or lets_go(s.objects, s.held, width)):
+            # the cube drops where it is: no longer held, and where it lands not known
+            held = None if width is not None else UNKNOWN
+            self.state = replace(s, grip=width, held=held, objects=None)
+        else:
+            self.state = replace(s, grip=width)
         self._step(self.state.q, took)
 
     def home(self) -> None:

@@ -17,10 +17,11 @@ from ..arm import Arm
 from ..kinematics import fk
 from ..motion import TimedStreaming, line
 from ..scene import Scene, without
+from ..tasks import Plan, held_now, objects_now, obstacles_now
 from ._ast import Loc, Source, Statement
 from ._backend import Frame
 from ._check import CheckResult, check_source, looped
-from ._jobs import called_with, job_function
+from ._jobs import called_with, job_function, lets_go
 from ._model_arm import LINE_SPACING
 from ._resolve import JointPose, Point, Resolver, SceneInfo, Target, job_scene
 from ._walk import Walker
@@ -35,16 +36,12 @@ class ArmBackend:
 
     def __init__(self, arm: Arm, scene: SceneInfo | None, on_step: StepHook | None = None):
         self.arm, self.scene, self.on_step = arm, scene, on_step
-        loaded = None if scene is None else job_scene(scene)
-        if loaded is not None:
-            from ..tasks import obstacles_now
-
-            arm.scene = obstacles_now(arm, loaded)
         self.fraction: float | None = None  # joint moves: fraction of max speed (None: 1)
         self.tool_speed = TimedStreaming().speed  # straight lines [m/s]
         self.grip_width: float | None = None
-        self.held: str | None = None  # the cube a ``pick`` job took, until ``place``
+        self.held = held_now(arm)  # the cube a ``pick`` job took, until ``place``
         self.objects: Scene | None = None  # the scene as the last task left it
+        self._refresh_scene()
 
     def begin(self, stmt: Statement, frames: tuple[Frame, ...]) -> None:
         if self.on_step is not None:
@@ -77,6 +74,9 @@ class ArmBackend:
         w = _known(width, "the width")
         self.arm.grip(w * 1000.0)
         self.grip_width = w
+        if self.held is not None and lets_go(self.scene_now(), self.held, w):
+            self.held = self.objects = None  # dropped where it was: not known where
+            self._refresh_scene()
 
     def home(self) -> None:
         self.arm.home(speed=self.fraction)
@@ -99,8 +99,6 @@ class ArmBackend:
         )
 
     def job(self, command: str, args: dict[str, object]) -> None:
-        from ..tasks import Plan
-
         done = job_function(command)(
             self.arm, self._scene(), **called_with(command, args, self.held)
         )
@@ -110,9 +108,14 @@ class ArmBackend:
             self.held = None
         if isinstance(done, Plan):  # on hardware the next task plans with the cubes moved
             self.objects = done.rest
-        from ..tasks import obstacles_now  # the arm's moves: checked against them too
+        self._refresh_scene()
 
-        self.arm.scene = obstacles_now(self.arm, without(self._scene(), self.held))
+    def _refresh_scene(self) -> None:
+        """Check the arm's moves against the objects where they are now (a simulated
+        arm's) or where the tasks left them (a held cube left out)."""
+        scene = self.scene_now()
+        if self.scene is not None and scene is not None:  # else: as the arm was opened
+            self.arm.scene = obstacles_now(self.arm, without(scene, self.held))
 
     def _scene(self) -> Scene:
         scene = self.scene_now()
@@ -193,6 +196,7 @@ def run_source(
         model=arm.model,
         scene=scene,
         q0=arm.driver.read(),
+        held=held_now(arm),
         live=live_objects(arm),
         hardware=arm.world is None,
         require_jobs=True,
@@ -208,8 +212,6 @@ def live_objects(arm: Arm, carried: Scene | None = None) -> Callable[[Scene], Sc
     """Where ``arm``'s tasks will find a script scene's objects (``check_source``'s
     ``live``): on a simulated arm where they are now, else as the last task left them
     (``carried``), else as the scene has them."""
-    from ..tasks import objects_now
-
     return lambda scene: objects_now(arm, scene if carried is None else carried)
 
 

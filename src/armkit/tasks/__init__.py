@@ -17,6 +17,7 @@ from ._jobs import stack_names as stack_names
 from ._live import TaskFailed as TaskFailed
 from ._live import attach_scene as attach_scene
 from ._live import attached as attached
+from ._live import held_now as held_now
 from ._live import objects_now as objects_now
 from ._live import obstacles_now as obstacles_now
 from ._live import run_checked as run_checked

@@ -176,6 +176,8 @@ def move_item(
     scene does not know (then ``to`` must be a point or a place too, and the grasp
     and the item's own clearance cannot be checked).
     """
+    if not (is_number(lift) and 0.0 <= lift <= 500.0):
+        raise InputError(f"lift must be 0..500 mm, got {shown(lift)}")
     scene = live_scene(arm, scene, dry_run, "move")
     target = resolve(scene, to)
     p = _deg(pitch)

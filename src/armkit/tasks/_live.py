@@ -77,27 +77,48 @@ def live_scene(
     ``scene`` as given.
 
     Raises:
-        TaskError: the gripper holds a cube other than ``held`` (nothing moves).
-        InputError: ``scene`` is not a Scene.
+        TaskError: the gripper holds a cube other than ``held``, or (on a simulated arm)
+            nothing when ``held`` is to be put down (nothing moves).
+        InputError: ``arm`` is not an Arm or a Start, ``scene`` not a Scene.
     """
-    if not isinstance(scene, Scene):
-        raise InputError(
-            f"{task}: scene must be a Scene; load one with armkit.scene.load_scene("
-            f"'board_001'), got {shown(scene)}"
-        )
+    _check_inputs(arm, scene, task)
     if isinstance(arm, Start):
         return scene
     physics = attached(arm) if dry_run else attach_scene(arm, scene)
     if physics is None or physics.scene.name != scene.name:
         return scene
-    holding = physics.holding
-    if holding is not None and holding.cube.name != held:
-        name = holding.cube.name
+    holding = None if physics.holding is None else physics.holding.cube.name
+    if holding != held and holding is not None:
         raise TaskError(
-            f"{task}: the gripper holds {name}; put it down first (place {name} TO)",
+            f"{task}: the gripper holds {holding}; put it down first (place {holding} TO)",
             step=task,
         )
+    if holding != held:
+        raise TaskError(f"{task}: the gripper holds nothing; pick {held} up first", step=task)
     return rest_scene(physics)
+
+
+def _check_inputs(arm: object, scene: object, task: str) -> None:
+    from ..arm import Arm
+
+    if not isinstance(arm, Arm | Start):
+        raise InputError(
+            f"{task}: arm must be an armkit.Arm (or a tasks.Start, a model and its joints, "
+            f"to plan without one), got {shown(arm)}"
+        )
+    if not isinstance(scene, Scene):
+        raise InputError(
+            f"{task}: scene must be a Scene; load one with armkit.scene.load_scene("
+            f"'board_001'), got {shown(scene)}"
+        )
+
+
+def held_now(arm: Arm) -> str | None:
+    """The cube a simulated arm's gripper holds (its scene's physics), else None (also on
+    hardware, where armkit cannot know)."""
+    physics = attached(arm)
+    holding = None if physics is None else physics.holding
+    return None if holding is None else holding.cube.name
 
 
 def obstacles_now(arm: Arm, scene: Scene) -> Scene:

@@ -23,6 +23,9 @@ SETTLE_MAX_S = 5.0  # [s] the longest wait for a simulated arm to come to rest
 def run_plan(arm: Arm, plan: Plan, say: Callable[[int, Step], None] | None = None) -> None:
     """Move ``arm`` through ``plan``: joint moves and gripper commands in order.
 
+    On a simulated arm the plan's scene is simulated with it (its physics attached to
+    the arm's world, as a task that runs attaches it), so the cubes move as planned.
+
     Raises:
         ArmkitError: the arm is not where the plan starts (it moved since planning);
             nothing moves then.
@@ -32,6 +35,9 @@ def run_plan(arm: Arm, plan: Plan, say: Callable[[int, Step], None] | None = Non
             f"plan must be a Plan (from a task, e.g. tasks.pick(..., dry_run=True)), "
             f"got {shown(plan)}"
         )
+    from ._live import attach_scene  # _live runs plans through here
+
+    attach_scene(arm, plan.before)
     now = arm.driver.read()
     off = float(np.max(np.abs(now - plan.q_start)))
     if off > START_TOLERANCE:
