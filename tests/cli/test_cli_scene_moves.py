@@ -87,3 +87,20 @@ def test_scripts_and_commands_share_the_kept_cubes(
     assert main(["--port", port, "run", "-q", str(script)]) == 0
     assert main([*kept, "move", "180", "-100", "20", "--pitch", "-90"]) == 2  # red is there
     assert "into the red" in capsys.readouterr().err
+
+
+def test_scene_show_shows_the_cubes_as_kept(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # it printed the scene file: red 'in board[0, 0]' while the gripper held it
+    kept = ["--scene", "board_001", "--port", str(tmp_path / "arm.json")]
+    assert main([*kept, "pick", "red"]) == 0
+    capsys.readouterr()
+    assert main([*kept, "scene", "show", "--no-picture"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("as kept for the simulated openmanipulator_x (")
+    assert "  red: in the gripper\n" in out and "board[0, 0]" not in out
+    assert main([*kept, "place", "red", "--xyz", "180", "-100", "0"]) == 0
+    capsys.readouterr()
+    assert main([*kept, "scene", "show", "--no-picture"]) == 0
+    assert "red: 25.0 mm at (179.8, -100.0, 0.0) mm" in capsys.readouterr().out

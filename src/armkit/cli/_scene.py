@@ -58,6 +58,25 @@ def scene_of(args: argparse.Namespace, required: bool = True) -> Any:
     return load_scene(args.scene)
 
 
+def _kept(args: argparse.Namespace, model: Any, scene: Any) -> tuple[Any, str | None]:
+    """The scene with its cubes where the simulated arm of --arm/--port keeps them (what
+    its next command sees), and the held cube's name; the file's when nothing is kept."""
+    from ..scene import load_physics, scene_state_file
+    from ..sim import kept_key
+
+    if args.driver != "sim" or args.port == "emu":
+        return scene, None
+    path = scene_state_file(scene, kept_key(model, args.port))
+    if not path.exists():
+        return scene, None
+    physics = load_physics(path, scene)
+    print(
+        f"as kept for the simulated {model.name} ({path}; 'armkit scene reset {scene.name}' restores the file's)"
+    )
+    held = physics.holding
+    return physics.scene, None if held is None else held.cube.name
+
+
 def _reset(args: argparse.Namespace) -> int:
     from .._files import config_dir
     from .._lock import held
@@ -93,7 +112,10 @@ def _show(args: argparse.Namespace) -> int:
     out = None if args.no_picture else Path(args.output or f"{scene.name}_top.png")
     if out is not None:
         check_output_path(out, "-o/--output", PICTURE_SUFFIXES)
+    scene, held = _kept(args, model, scene)
     print("\n".join(describe(scene)))
+    if held is not None:
+        print(f"  {held}: in the gripper")
     if out is not None:
         top_view(scene, out, model)
         print(f"top view written to {out}")
