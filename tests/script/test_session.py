@@ -118,7 +118,7 @@ def test_the_shell_loop_reads_lines_and_quits(
     a, _ = arm
     out = io.StringIO()
     stdin = io.StringIO("move xyz 180 0 80 pitch -90\nmvoe\nturn waist by 10\nwhere\nquit\nhome\n")
-    assert Shell(Session(a, base_dir=tmp_path), stdin=stdin, stdout=out).loop() == 0
+    assert Shell(Session(a, base_dir=tmp_path), stdin=stdin, stdout=out).loop() == 1  # mvoe
     text = out.getvalue()
     assert "armkit x 180 y 0 z 80 p -90> " in text
     assert "unknown command 'mvoe'" in text
@@ -135,7 +135,7 @@ def test_jog_on_piped_input_is_refused_and_the_next_line_is_a_command(
     s = Session(a, base_dir=tmp_path)
     lines, sent = list(s.teaching.lines), driver.sent
     out = io.StringIO()
-    assert Shell(s, stdin=io.StringIO("jog\njog 10\n"), stdout=out).loop() == 0
+    assert Shell(s, stdin=io.StringIO("jog\njog 10\n"), stdout=out).loop() == 1
     said = [t for t in out.getvalue().split("\n") if "jog" in t]
     assert len(said) == 2 and said[0] == said[1]  # one line each, the same
     assert said[0].endswith(
@@ -148,7 +148,7 @@ def test_jog_on_piped_input_is_refused_and_the_next_line_is_a_command(
 
     out = io.StringIO()
     stdin = io.StringIO("jog\nmove xyz 200 0 100 pitch -45\nwhere\n")
-    assert Shell(s, stdin=stdin, stdout=out).loop() == 0
+    assert Shell(s, stdin=stdin, stdout=out).loop() == 1  # the refused jog
     assert "gripper at x 200.0 y 0.0 z 100.0 mm, pitch -45.0 deg" in out.getvalue()
     assert not s.resolver.poses  # no 'v' key saved a pose
     assert s.teaching.lines == [*lines, "move xyz 200 0 100 pitch -45"]
@@ -194,13 +194,13 @@ def test_shell_words_refuse_extra_words_and_do_nothing(
 def test_a_block_with_no_end_when_the_input_ends_says_nothing_of_it_ran(
     arm: tuple[Arm, CountingDriver], tmp_path: Path
 ) -> None:
-    """Was: the half-typed block was dropped without a word. The exit status stays 0, as
-    for a line that fails."""
+    """Was: the half-typed block was dropped without a word. Piped, the exit status is 1,
+    as for any line that fails."""
     a, driver = arm
     s = Session(a, base_dir=tmp_path)
     out = io.StringIO()
     stdin = io.StringIO("where\nrepeat 3\n  turn wrist by 5\n  repeat 2\n  end\n")
-    assert Shell(s, stdin=stdin, stdout=out).loop() == 0
+    assert Shell(s, stdin=stdin, stdout=out).loop() == 1
     assert driver.sent == 0
     assert out.getvalue().endswith(
         "... ... ... ... error: the repeat block opened at line 2 has no 'end' before the "

@@ -7,14 +7,18 @@ first); misspelt names get a "did you mean" from ``difflib``.
 from __future__ import annotations
 
 import difflib
+import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
 from typing import Literal
 
 from .._errors import ScriptError
+from .._inputs import brief
 from ._ast import Loc, Source
 
 Severity = Literal["error", "warning"]
+# a number of 10 or more digits before its point, standing alone (not in a path or a name)
+_LONG_NUMBER = re.compile(r"(?<![\w./\\-])-?\d{10,}(?:\.\d+)?(?![\w/\\]|\.\d)")
 
 
 @dataclass(frozen=True)
@@ -34,6 +38,7 @@ class Diagnostic:
     notes: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
+        object.__setattr__(self, "message", compact_numbers(self.message))
         object.__setattr__(self, "notes", collapse(self.notes))
 
     def format(self, source: Source) -> str:
@@ -45,6 +50,13 @@ class Diagnostic:
             lines += ["    " + text.expandtabs(1), "    " + " " * (self.loc.col - 1) + "^"]
         lines += [f"    note: {n}" for n in self.notes]
         return "\n".join(lines)
+
+
+def compact_numbers(text: str) -> str:
+    """``text`` with every number of 10 or more digits before its point in 3 significant
+    digits: ``waist 1e+308 deg is outside its limits``, not the 300 digits that
+    ``f"{angle:.2f}"`` gives (the unit written after it stays)."""
+    return _LONG_NUMBER.sub(lambda m: brief(float(m.group(0))), text)
 
 
 def suggest(word: str, choices: Iterable[str]) -> str:

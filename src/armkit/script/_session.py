@@ -8,18 +8,20 @@ parse, a check on the model and the motion itself.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from .._errors import ArmkitError
 from .._files import write_atomic
 from .._terminal import count
 from ..arm import Arm
+from ..model import ArmModel, load_model, shipped_models
 from ._ast import Header, Source
 from ._backend import ScriptRunError
 from ._check import Env, check_source
-from ._diagnostics import ScriptCheckError
+from ._diagnostics import ScriptCheckError, compact_numbers
 from ._grammar import DIRECTIONS, RESERVED, usage_of
 from ._lexer import LexError, Token, tokenize
 from ._resolve import JointPose, Resolver, SceneInfo
@@ -37,6 +39,9 @@ the shell: where | poses | save NAME | write FILE | jog [STEP_DEG] | run FILE |
   limp (torque off: move the arm by hand, save reads its true angles; Dynamixel) |
   hold (torque on where it is) | help [WORD] | quit  (Tab completes; arrows: history)"""
 LIMP = "error: the arm is limp (torque off); type hold before moving it"
+ANSWERED_IN_A_BLOCK = ("where", "poses", "help")
+"""Shell words that only show something: inside an open block they are answered at once
+and the block stays open (the others are refused there, and ``quit`` drops the block)."""
 
 
 @dataclass
@@ -47,6 +52,12 @@ class Reply:
     more: bool = False  # a block is open: read more lines
     quit: bool = False
     jog: float | None = None  # enter jog mode with this step [deg]
+    failed: bool = False  # the line failed: ``text`` is its error
+
+
+def _error(text: str, *, more: bool = False) -> Reply:
+    """A line that failed, with its error (``more``: a block is still open)."""
+    return Reply(text, more=more, failed=True)
 
 
 class Session:
@@ -78,12 +89,14 @@ class Session:
             self.next_line = self._typed + 1
         self._typed += 1
         words = line.split()
+        if self._pending and ((words[:1] and words[0] in SHELL_WORDS) or _run_file(words)):
+            return self._in_block(words)
         if not self._pending and words and words[0] in SHELL_WORDS:
             return self._shell_word(words)
-        if not self._pending and len(words) == 2 and words[0] == "run":
-            return Reply(LIMP) if self.limp else self._run_file(words[1])
+        if not self._pending and _run_file(words):
+            return _error(LIMP) if self.limp else self._run_file(words[1])
         if not self._pending and words[:1] == ["run"] and len(words) > 2 and self._not_timed(words):
-            return Reply(
+            return _error(
                 f"error: run takes one FILE (run FILE), got {' '.join(words[1:])!r}; a timed "
                 "motor is run JOINT forward|backward|left|right TIME"
             )
@@ -94,8 +107,36 @@ class Session:
         text = "\n".join(self._pending)
         self._pending, self._depth = [], 0
         if self.limp and text.strip():
-            return Reply(LIMP)
+            return _error(LIMP)
         return self.execute(text) if text.strip() else Reply()
+
+    def _in_block(self, words: list[str]) -> Reply:
+        """A shell word typed while a block is open: it is never part of the block.
+        ``quit`` quits, dropping the block; ``where``, ``poses`` and ``help`` are answered
+        and the block stays open; the others are refused and the block stays open."""
+        word = words[0]
+        if word != "run" and (wrong := _wrong_count(word, words[1:])):
+            self._pending.append("")  # the block's lines keep the numbers they were typed on
+            return _error(wrong, more=True)
+        if word in ("quit", "exit"):
+            dropped = f"{word}: {self._open_block()} was dropped: nothing of it ran"
+            self.cancel()
+            reply = self._shell_word(words)
+            return Reply("\n".join(t for t in (dropped, reply.text) if t), quit=True)
+        self._pending.append("")
+        if word in ANSWERED_IN_A_BLOCK:
+            return Reply(self._shell_word(words).text, more=True)
+        shown = "run FILE" if word == "run" else word
+        return _error(
+            f"error: {shown} is a shell word, not a statement a block can hold, and "
+            f"{self._open_block()} is open: nothing done; finish the block with end, or quit "
+            "to drop it",
+            more=True,
+        )
+
+    def _open_block(self) -> str:
+        """``the repeat block opened at line 2`` (a block is open)."""
+        return f"the {self._pending[0].split()[0]} block opened at line {self.next_line}"
 
     def cancel(self) -> None:
         """Drop a half-typed block (Ctrl-C at the prompt)."""
@@ -105,12 +146,9 @@ class Session:
         """The input ended: a half-typed block is dropped, and the reply says so."""
         if not self._pending:
             return Reply()
-        opened = self._pending[0].split()[0]
+        block = self._open_block()
         self.cancel()
-        return Reply(
-            f"error: the {opened} block opened at line {self.next_line} has no 'end' before "
-            "the input ended; nothing of it ran"
-        )
+        return _error(f"error: {block} has no 'end' before the input ended; nothing of it ran")
 
     def _not_timed(self, words: list[str]) -> bool:
         """Whether ``run A B ...`` is not the language's ``run JOINT DIRECTION TIME``."""
@@ -130,15 +168,16 @@ class Session:
             base_dir=self.base_dir, env=env,
         )  # fmt: skip
         if any(isinstance(s, Header) for s in result.program.statements):
-            return Reply("error: choose the arm, driver and scene when starting: "
-                         "armkit --arm NAME --driver NAME shell")  # fmt: skip
+            return _error("error: choose the arm, driver and scene when starting: "
+                          "armkit --arm NAME --driver NAME shell")  # fmt: skip
         if not result.ok:
-            return Reply(ScriptCheckError(source, result.diagnostics).report())
+            return _error(ScriptCheckError(source, result.diagnostics).report())
         try:
             self.walker.walk(result.program.statements)
         except (ArmkitError, KeyboardInterrupt) as exc:
             self.arm.stop()
-            return Reply(f"error: {exc}" if isinstance(exc, ScriptRunError) else "stopped")
+            ran = isinstance(exc, ScriptRunError)
+            return _error(f"error: {compact_numbers(str(exc))}" if ran else "stopped")
         self.teaching.record(text)
         return Reply()
 
@@ -180,7 +219,7 @@ class Session:
     def _shell_word(self, words: list[str]) -> Reply:
         word, args = words[0], words[1:]
         if wrong := _wrong_count(word, args):
-            return Reply(wrong)
+            return _error(wrong)
         if word in ("quit", "exit"):
             return Reply(self._torque(True).text if self.limp else "", quit=True)
         if word in ("limp", "hold"):
@@ -196,16 +235,16 @@ class Session:
                 return Reply(HELP)
             return Reply(usage_of(args[0]) or f"no command {args[0]!r}; type help")
         if word == "jog":
-            return Reply(LIMP) if self.limp else self._jog_word(args)
+            return _error(LIMP) if self.limp else self._jog_word(args)
         return self._save(args[0]) if word == "save" else self._write(args[0])
 
     def _jog_word(self, args: list[str]) -> Reply:
         try:
             step = float(args[0]) if args else 5.0
         except ValueError:
-            return Reply(f"error: jog takes a step in degrees, got {args[0]!r}")
+            return _error(f"error: jog takes a step in degrees, got {args[0]!r}")
         if not 0.1 <= step <= 45.0:
-            return Reply(f"error: the jog step must be in 0.1..45 deg, got {step:g}")
+            return _error(f"error: the jog step must be in 0.1..45 deg, got {step:g}")
         return Reply(jog=step)
 
     def _torque(self, on: bool) -> Reply:
@@ -215,7 +254,7 @@ class Session:
         try:
             torque(self.arm, on)
         except ArmkitError as exc:
-            return Reply(f"error: {exc}")
+            return _error(f"error: {exc}")
         self.limp = not on
         if not on:
             return Reply(
@@ -226,7 +265,7 @@ class Session:
 
     def _save(self, name: str) -> Reply:
         if not Token("word", name, 1).is_name or name in RESERVED:
-            return Reply(
+            return _error(
                 f"error: {name!r} cannot name a pose (a letter, then letters, digits, _ or -; "
                 "not a word of the language)"
             )
@@ -237,14 +276,17 @@ class Session:
     def _write(self, name: str) -> Reply:
         path = (self.base_dir / name).expanduser()
         if path.is_dir():
-            return Reply(f"error: cannot write {path}: it is a directory; give a file name in it, such as {path / 'taught.arm'}")  # fmt: skip
+            return _error(f"error: cannot write {path}: it is a directory; give a file name in it, such as {path / 'taught.arm'}")  # fmt: skip
         if not path.parent.is_dir():
-            return Reply(f"error: cannot write {path}: no folder {path.parent}")
+            return _error(f"error: cannot write {path}: no folder {path.parent}")
+        here = path.parent
+        scene = None if self.scene is None else self._file_or_name(self.scene.label, here)
+        arm = _arm_word(self.arm.model, here)
         try:
-            write_atomic(path, self.teaching.script(), durable=False)
+            write_atomic(path, replace(self.teaching, arm=arm, scene=scene).script(), durable=False)
         except OSError as exc:
             why = (exc.strerror or type(exc).__name__).lower()
-            return Reply(
+            return _error(
                 f"error: cannot write {path}: the folder {path.parent} does not take new "
                 f"files ({why}); choose another folder"
             )
@@ -258,16 +300,52 @@ class Session:
         try:
             text = path.read_text(encoding="utf-8")
         except (OSError, UnicodeDecodeError) as exc:
-            return Reply(f"error: cannot run {path}: {_unreadable(exc)}")
+            return _error(f"error: cannot run {path}: {_unreadable(exc)}")
         try:
             run_source(self.arm, Source(str(path), text), scene=self.scene)
         except ScriptCheckError as exc:
-            return Reply(exc.report())
+            return _error(exc.report())
         except (ArmkitError, OSError, KeyboardInterrupt) as exc:
             self.arm.stop()
-            return Reply(f"error: {exc}")
+            return _error(f"error: {compact_numbers(str(exc))}")
         self.teaching.lines += [f"# ran {name}; it ended here:", joints_line(pose_now(self.arm))]
         return Reply(f"ran {name}")
+
+    def _file_or_name(self, label: str, here: Path) -> str:
+        """The scene ``label`` as a script in ``here`` finds it: a file the session read
+        (next to where it started, or a path) by its path from ``here``; else the name of
+        a shipped scene, as given."""
+        for candidate in (self.base_dir / label, Path(label)):
+            if candidate.is_file():
+                return _path_from(candidate, here)
+        return label
+
+
+def _arm_word(model: ArmModel, here: Path) -> str:
+    """The ``arm`` line's word for ``model`` in a script in ``here``: a shipped model's
+    name, else its file (a .toml by its path from ``here``, where the checker looks for
+    it; a URDF, which is read from where armkit runs, by its absolute path)."""
+    source = model.source
+    if source is None or (
+        model.name in shipped_models() and load_model(model.name).source == source
+    ):
+        return model.name
+    if source.suffix == ".toml":
+        return _path_from(source, here)
+    return str(source.resolve())
+
+
+def _path_from(path: Path, here: Path) -> str:
+    """``path`` from the folder ``here`` (relative where it can be, else absolute), with /."""
+    try:
+        return Path(os.path.relpath(path.resolve(), here.resolve())).as_posix()
+    except ValueError:  # another drive (Windows)
+        return str(path.resolve())
+
+
+def _run_file(words: list[str]) -> bool:
+    """Whether ``words`` are the shell's ``run FILE`` (the language's run takes three)."""
+    return len(words) == 2 and words[0] == "run"
 
 
 def _unreadable(exc: OSError | UnicodeDecodeError) -> str:

@@ -1,7 +1,12 @@
 """``armkit shell``: the session at a terminal, with readline history, Tab
 completion of commands, pose names and joints, the arm's position in the prompt,
 and jog mode reading one key at a time (000's basic mode; refused when the input is
-not a terminal, so piped lines stay commands)."""
+not a terminal, so piped lines stay commands).
+
+Exit status: at a terminal 0 (a mistake typed is answered and the shell reads on); with
+lines piped or from a file, 1 if any line failed (its error printed; the lines after it
+still ran), else 0. As for every command, 2 if the shell could not start (a bad option,
+an arm that cannot be opened)."""
 
 from __future__ import annotations
 
@@ -43,6 +48,7 @@ class Shell:
         self.session, self.history = session, history
         self.stdin, self.stdout = stdin or sys.stdin, stdout or sys.stdout
         self._matches: list[str] = []
+        self.failed = False  # a line failed (its error was printed)
 
     def prompt(self) -> str:
         """``armkit x 180 y 0 z 80 p -90> ``: where the gripper is [mm, deg] (``limp>``
@@ -52,7 +58,8 @@ class Shell:
         return f"armkit x {round(x)} y {round(y)} z {round(z)} p {round(pitch)}{limp}> "
 
     def loop(self) -> int:
-        """Read, check, run, until ``quit`` or end of input."""
+        """Read, check, run, until ``quit`` or end of input; the exit status (see the
+        module doc: 1 if a line failed and the input is not a terminal, else 0)."""
         readline = self._readline()
         self._say(f"armkit shell on {self.session.arm.model.name}; help for the commands")
         more = False
@@ -61,8 +68,10 @@ class Shell:
                 try:
                     line = self._input("... " if more else self.prompt())
                 except EOFError:
-                    if text := self.session.end_of_input().text:  # a block with no 'end'
-                        self._say(("\n" if self.stdin.isatty() else "") + text)
+                    end = self.session.end_of_input()
+                    if end.text:  # a block with no 'end'
+                        self._say(("\n" if self.stdin.isatty() else "") + end.text)
+                    self.failed |= end.failed
                     break
                 except KeyboardInterrupt:
                     self.session.cancel()
@@ -70,6 +79,7 @@ class Shell:
                     more = False
                     continue
                 reply = self.session.handle(line)
+                self.failed |= reply.failed
                 if reply.text:
                     self._say(reply.text)
                 if reply.quit:
@@ -80,7 +90,7 @@ class Shell:
         finally:
             if readline is not None and self.history is not None:
                 _save_history(readline, self.history)
-        return 0
+        return 1 if self.failed and not self.stdin.isatty() else 0
 
     def _input(self, prompt: str) -> str:
         if self.stdin is sys.stdin and self.stdout is sys.stdout:
@@ -99,6 +109,7 @@ class Shell:
     def _jog(self, step: float) -> None:
         if not self.stdin.isatty():  # piped lines would be eaten as keys: refuse, move nothing
             self._say(self._no_jog())
+            self.failed = True
             return
         self._say(JOG_HELP)
 

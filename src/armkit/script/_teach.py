@@ -46,16 +46,18 @@ class Teaching:
     """What a shell session did, as script lines that replay it.
 
     Attributes:
-        arm: the model's name (the script's ``arm`` line).
+        arm: the model's name or file (the script's ``arm`` line).
         start: joint angles when the session began [rad], shape (dof,).
         lines: the statements given, the taught poses and the jogs, in order.
         origin: where it was taught (the script's first comment).
+        scene: the scene's name or file (the script's ``scene`` line), or None.
     """
 
     arm: str
     start: F64
     lines: list[str] = field(default_factory=list)
     origin: str = "the armkit shell"
+    scene: str | None = None
 
     def record(self, text: str) -> None:
         """Add statements that ran (a line, or a block of lines)."""
@@ -68,14 +70,23 @@ class Teaching:
         return line
 
     def script(self) -> str:
-        """The session as a script: the arm, where it started, then every line."""
+        """The session as a script: the arm and scene, where it started, then every line."""
         stamp = datetime.now().strftime("%Y-%m-%d %H:%M")
         head = [
             f"# taught in {self.origin} on {stamp}; replay with: armkit run FILE",
-            f"arm {self.arm}",
+            f"arm {header_word(self.arm)}",
+            *([f"scene {header_word(self.scene)}"] if self.scene is not None else []),
             f"{joints_line(self.start)}   # where the session started",
         ]
         return "\n".join(head + self.lines) + "\n"
+
+
+def header_word(value: str) -> str:
+    """``value`` as one word of an ``arm``/``scene`` line: as it is, or quoted when it has
+    a space or a character that would end the word (``#``, ``=``, ``(``, ``)``, ``,``)."""
+    if value and not any(c.isspace() or c in '#"=(),' for c in value):
+        return value
+    return '"' + value.replace('"', '\\"') + '"'
 
 
 @dataclass
