@@ -75,14 +75,18 @@ def build_parser() -> argparse.ArgumentParser:
         "--port",
         default=None,
         metavar="PORT",
-        help="serial port or device for the driver ('emu' = emulator)",
+        help="the serial port or device of ssc32, maestro and dynamixel (/dev/ttyUSB0; they "
+        "need one), or 'emu' for an emulated device; with --driver sim, a state file "
+        "(arm.json) that keeps that simulated arm between commands (default: none, the "
+        "simulated arm kept in $ARMKIT_CONFIG_DIR/sim_<arm>.json)",
     )
     parser.add_argument(
         "--scene",
         default=None,
         metavar="FILE|NAME",
         help="what is on the table: a scene .toml file (mm, deg) or a shipped scene "
-        "(see 'armkit scene list'); tasks and moves are checked against it",
+        "(see 'armkit scene list'); tasks and moves are checked against it (default: none, "
+        "an empty table)",
     )
     parser.add_argument("--version", action="version", version=f"armkit {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")

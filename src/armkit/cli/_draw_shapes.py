@@ -51,8 +51,14 @@ def add_draw(sub: argparse._SubParsersAction[Any]) -> None:
     size = number("mm", 0.0, SIZE_MM, low_open=True)
     p = shapes.add_parser("circle", help="circle (or arc), horizontal or in the plane of --normal")
     _center_option(p)
-    p.add_argument("--radius", type=size, required=True, metavar="MM", help="[mm]")
-    p.add_argument("--start", type=angle, default=0.0, metavar="DEG", help="start angle (0 = +x)")
+    p.add_argument("--radius", type=size, required=True, metavar="MM", help="radius [mm]")
+    p.add_argument(
+        "--start",
+        type=angle,
+        default=0.0,
+        metavar="DEG",
+        help="angle of the first point [deg], 0 = +x, 90 = +y (default 0)",
+    )
     p.add_argument(
         "--sweep",
         type=number("deg", -SWEEP_DEG, SWEEP_DEG, nonzero=True),
@@ -68,7 +74,14 @@ def add_draw(sub: argparse._SubParsersAction[Any]) -> None:
     _draw_options(p)
     p = shapes.add_parser("rect", help="rectangle, horizontal or in the plane of --normal")
     _center_option(p)
-    p.add_argument("--size", nargs=2, type=size, required=True, metavar=("W", "D"), help="[mm]")
+    p.add_argument(
+        "--size",
+        nargs=2,
+        type=size,
+        required=True,
+        metavar=("W", "D"),
+        help="width (along x) and depth (along y) [mm]",
+    )
     add_plane_option(p)
     _draw_options(p)
     p = shapes.add_parser("cube", help="every edge of a cube in one stroke (seed 001)")
@@ -78,16 +91,21 @@ def add_draw(sub: argparse._SubParsersAction[Any]) -> None:
         type=coordinate,
         required=True,
         metavar=("X", "Y", "Z"),
-        help="lowest [mm]",
+        help="the corner with the lowest x, y and z [mm]",
     )
-    p.add_argument("--size", type=size, required=True, metavar="MM", help="edge [mm]")
+    p.add_argument("--size", type=size, required=True, metavar="MM", help="edge length [mm]")
     _draw_options(p)
     add_file_commands(shapes)
 
 
 def _center_option(p: argparse.ArgumentParser) -> None:
     p.add_argument(
-        "--center", nargs=3, type=coordinate, required=True, metavar=("X", "Y", "Z"), help="[mm]"
+        "--center",
+        nargs=3,
+        type=coordinate,
+        required=True,
+        metavar=("X", "Y", "Z"),
+        help="centre [mm]",
     )
 
 
@@ -99,7 +117,14 @@ def _draw_options(p: argparse.ArgumentParser) -> None:
         help="gripper pitch [deg] (0 level, -90 down); default: the arm's own, else one"
         " pitch for the whole path, the nearest the first point's that fits",
     )
-    p.add_argument("--mode", choices=MODES, default="timed", help="how waypoints are sent")
+    p.add_argument(
+        "--mode",
+        choices=MODES,
+        default="timed",
+        help="how waypoints are sent: naive (each once the arm is at the last), early (the "
+        "next at --fraction of the way to the last), timed (on a clock, the tool at --speed) "
+        "(default timed)",
+    )
     p.add_argument(
         "--spacing",
         type=number("mm", 0.1, 1000.0),
@@ -118,12 +143,13 @@ def _draw_options(p: argparse.ArgumentParser) -> None:
         "--fraction",
         type=number("", 0.0, 1.0, low_open=True),
         default=0.5,
-        help="early mode: send the next waypoint at this fraction of a move, (0, 1]",
+        help="early mode: send the next waypoint at this fraction of a move, (0, 1] (default 0.5)",
     )
     p.add_argument(
         "--record",
         metavar="FILE.csv",
-        help="simulated arms only: write t_s,<joint>_deg,... one row per 1 ms of simulated time",
+        help="simulated arms only: write t_s,<joint>_deg,... one row per 1 ms of simulated "
+        "time (default: no file)",
     )
     add_watch_options(p)
     p.set_defaults(func=_draw)

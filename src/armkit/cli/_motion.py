@@ -35,7 +35,11 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     for axis in "xyz":
         p.add_argument(axis, type=coordinate, metavar=axis.upper(), help=f"target {axis} [mm]")
     p.add_argument(
-        "--pitch", type=angle, metavar="DEG", help="gripper pitch [deg] (0 level, -90 down)"
+        "--pitch",
+        type=angle,
+        metavar="DEG",
+        help="gripper pitch [deg] (0 level, -90 down); default: the arm's own where its model "
+        "has one (owi535: 0), else the pitch nearest the gripper's now that reaches X Y Z",
     )
     _timing_options(p)
     add_watch_options(p)
@@ -62,13 +66,13 @@ def _timing_options(p: argparse.ArgumentParser) -> None:
         "--speed",
         type=number("", 0.0, 1.0, low_open=True),
         metavar="FRACTION",
-        help="fraction of each joint's max speed, (0, 1]",
+        help="fraction of each joint's max speed, (0, 1] (default 1: full speed)",
     )
     p.add_argument(
         "--duration",
         type=number("s", 0.0, MAX_MOVE_S),
         metavar="S",
-        help=f"time for the move [s], at most {MAX_MOVE_S:g}",
+        help=f"time for the move [s], at most {MAX_MOVE_S:g} (default: as fast as --speed allows)",
     )
 
 

@@ -48,7 +48,10 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         epilog=EPILOG,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("--host", default="127.0.0.1", help="address to serve on (default 127.0.0.1)")
+    p.add_argument(
+        "--host", default="127.0.0.1", metavar="ADDRESS",
+        help="address to serve on (default 127.0.0.1)",
+    )  # fmt: skip
     p.add_argument(
         "--port",
         dest="http_port",
@@ -60,13 +63,19 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         "before 'view'",
     )
     p.add_argument("--rate", type=float, metavar="HZ", help="updates per second [Hz] (default 30; 45 with --follow, so that at least 30 new states a second reach the page from a file another process writes)")  # fmt: skip
-    p.add_argument("--frames", action="store_true", help="draw every joint frame's axes")
+    p.add_argument(
+        "--frames", action="store_true", help="draw every joint frame's axes (default: off)"
+    )
     p.add_argument(
         "--follow",
         action="store_true",
         help="show the simulated arm as other armkit commands move it (no teaching)",
     )
-    p.add_argument("--target", nargs=3, type=float, metavar=("X", "Y", "Z"), help="target [mm]")
+    p.add_argument(
+        "--target", nargs=3, type=float, metavar=("X", "Y", "Z"),
+        help="show a target marker at X Y Z [mm], green if the arm reaches it clear, red with "
+        "why not (default: none; drag it on the page)",
+    )  # fmt: skip
     p.add_argument("--pitch", type=float, metavar="DEG", help="target pitch [deg] (default any)")
     p.add_argument(
         "--pose",
@@ -74,7 +83,8 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         type=float,
         action="append",
         metavar="DEG",
-        help="joint angles [deg], one per joint; repeat for a path (moves the arm)",
+        help="joint angles [deg], one per joint; repeat for a path (moves the arm; default: "
+        "the arm stays where it is; --gif: over each cube and home)",
     )
     _picture_options(p)
     p.set_defaults(func=run_view)
@@ -94,16 +104,29 @@ def _picture_options(p: argparse.ArgumentParser) -> None:
         "--write",
         metavar="FILE.arm",
         help="when the view stops, write the recorded poses and the moves made as a script "
-        "'armkit run' replays (joint angles in deg, gripper in mm)",
-    )
-    p.add_argument("--screenshot", metavar="FILE.png", help="write a picture of the view and exit")
-    p.add_argument(
-        "--size", nargs=2, type=int, default=(1024, 768), metavar=("W", "H"), help="picture [px]"
+        "'armkit run' replays (joint angles in deg, gripper in mm; default: no file)",
     )
     p.add_argument(
-        "--gif", metavar="FILE.gif", help="write an animation of the --pose path and exit"
+        "--screenshot", metavar="FILE.png",
+        help="write a picture of the view and exit (default: serve the page)",
+    )  # fmt: skip
+    p.add_argument(
+        "--size",
+        nargs=2,
+        type=int,
+        default=(1024, 768),
+        metavar=("W", "H"),
+        help="size of the --screenshot picture [px] (default 1024 768)",
     )
-    p.add_argument("--fps", type=float, default=15.0, help="animation frames per second [1/s]")
+    p.add_argument(
+        "--gif",
+        metavar="FILE.gif",
+        help="write an animation of the --pose path and exit (default: serve the page)",
+    )
+    p.add_argument(
+        "--fps", type=float, default=15.0, metavar="HZ",
+        help="--gif frames per second [1/s] (default 15)",
+    )  # fmt: skip
 
 
 def run_view(args: argparse.Namespace) -> int:
