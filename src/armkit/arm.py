@@ -35,7 +35,7 @@ from .motion import (
     plan_path,
     retreat,
 )
-from .scene import Scene, load_scene, move_refusal
+from .scene import Held, Scene, load_scene, move_refusal
 
 F64 = NDArray[np.float64]
 REACHED = math.radians(0.2)  # a move with a timeout is done when every joint is this close
@@ -51,7 +51,9 @@ class Position(NamedTuple):
 
 
 class Arm:
-    """Drive an arm by where the gripper should go (mm, degrees).
+    """Drive an arm by where the gripper should go (mm, degrees). Every numeric argument
+    must be a number (an int, a float or a numpy one; not True or False, not text such as
+    ``"20"``): InputError naming the argument and its unit otherwise, before anything moves.
 
     Args:
         model: a shipped arm name, a model file path, or an ``ArmModel``.
@@ -61,6 +63,10 @@ class Arm:
         scene: what is on the table: a ``Scene`` or a scene name or file (loaded with
             ``armkit.scene.load_scene``); every move is checked against it, and against
             the table plane even without one.
+
+    Attributes ``scene`` and ``held`` (a ``scene.Held``: the cube in the gripper and its
+    pose in the tool frame, checked with the links; the tasks and the script runner
+    set it) may be changed between moves.
     """
 
     def __init__(
@@ -90,6 +96,7 @@ class Arm:
             self.driver = driver
         self.clock = clock_of(self.driver)
         self._kin = self.model
+        self.held: Held | None = None  # a cube in the gripper: checked with the links
 
     @property
     def world(self) -> World | None:
@@ -110,13 +117,16 @@ class Arm:
         timeout: float | None = None,
     ) -> None:
         """Move the gripper point to (x, y, z) [mm], approach ``pitch`` [deg] above the
-        horizontal (None: the model's default, else any), by a joint move.
+        horizontal, -180..180 (-90: pointing straight down; None: the model's default,
+        else any), by a joint move.
 
         Args:
             speed: fraction of every joint's max velocity, (0, 1]; None = 1.
             duration: time for the move [s]; None = as fast as allowed.
             wait: block until the arm is there.  timeout: give up after [s] (DeviceError).
         Raises:
+            InputError: a value that is not a number (text such as ``"200"`` included),
+                or a pitch outside -180..180; nothing moves.
             UnreachableError: the point (and pitch) is out of reach or the joint limits.
         """
         timing = timing_of(speed, duration, wait, timeout)  # checked before solving
@@ -164,6 +174,8 @@ class Arm:
         kin = self.model.with_grip_width(width)
         self.driver.grip(width)
         self._kin = kin
+        if self.held is not None and self.held.released_by(width):
+            self.held = None
 
     def home(self, *, speed: float | None = None) -> None:
         """Move every joint to the model's home angles."""
@@ -280,7 +292,7 @@ class Arm:
     def _check_clear(self, path: F64) -> None:
         """Refuse a move from here through ``path`` (K, dof) [rad] that puts a link below the
         table, into the base column or into the scene's objects (``scene.move_refusal``)."""
-        refused = move_refusal(self._kin, self.driver.read(), path, self.scene)
+        refused = move_refusal(self._kin, self.driver.read(), path, self.scene, self.held)
         if refused is not None:
             raise refused
 

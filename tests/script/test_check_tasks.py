@@ -98,9 +98,12 @@ def test_on_hardware_each_task_plans_with_the_cubes_where_the_last_one_left_them
         def planned(
             arm_: Any, scene: Any, *, _real: Any = real, _name: str = name, **kw: Any
         ) -> Any:
-            if not isinstance(arm_, Start):
-                seen[_name].append(scene)
-            return _real(arm_, scene, dry_run=True, **kw)
+            if isinstance(arm_, Start):
+                return _real(arm_, scene, **kw)
+            seen[_name].append(scene)
+            plan = _real(arm_, scene, dry_run=True, **kw)
+            arm_.held = plan.held  # what run_plan leaves it holding
+            return plan
 
         monkeypatch.setattr(armkit.tasks, name, planned)
     arm: Arm = counting_arm()[0]
@@ -195,3 +198,20 @@ def test_opening_the_gripper_lets_the_held_cube_go() -> None:
     assert "no cube is picked here" in dropped.diagnostics[0].message
     assert _check("scene board_001\npick red\ngrip open\nhome\npick red\n").ok
     assert _check("scene board_001\npick red\ngrip 20mm\nplace xyz 150 -150 0\n").ok
+
+
+def test_a_held_cube_is_checked_with_the_links() -> None:
+    # the check and Arm left the held cube out: 'move ... 5 pitch -90' after 'pick red'
+    # put red 7.5 mm into the table, in check and in run
+    arm, driver = counting_arm()
+    text = "scene board_001\npick red\nmove xyz 150 -150 5 pitch -90\ngrip open\n"
+    with pytest.raises(ScriptCheckError, match=r"3:1: move refused: there, the held red "
+                       r"would be 7\.5 mm into the table"):  # fmt: skip
+        run_source(arm, Source("job.arm", text))
+    assert driver.sent == 0
+    run_source(arm, Source("job.arm", "scene board_001\npick red\n"))
+    assert arm.held is not None and arm.held.cube.name == "red"
+    with pytest.raises(armkit.UnreachableError, match="the held red would be 7"):
+        arm.move_to(150, -150, 5, -90)
+    arm.grip(75)  # lets it go
+    assert arm.held is None

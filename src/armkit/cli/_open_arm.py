@@ -40,7 +40,9 @@ def open_arm(args: argparse.Namespace) -> Iterator[Arm]:
             arm.driver.warn = lambda text: print(f"armkit: warning: {text}: {rehome}", file=sys.stderr)  # fmt: skip
         with arm, kept_objects(args, arm, scene), watching(args, arm, scene) as physics:
             if physics is not None:  # moves are checked against the objects where they are
-                arm.scene = physics.scene
+                from ..tasks import held_now
+
+                arm.scene, arm.held = physics.scene, held_now(arm)
             yield arm
     finally:
         if world is not None:

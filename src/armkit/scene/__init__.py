@@ -39,7 +39,6 @@ from ._state import physics_text as physics_text
 from ._state import rest_scene as rest_scene
 from ._state import save_physics as save_physics
 from ._state import scene_state_file as scene_state_file
-from ._state import without as without
 from ._support import Rect as Rect
 from ._support import Settled as Settled
 from ._support import settle as settle

@@ -37,6 +37,11 @@ class Held:
     cube: Cube
     T_tool_object: F64
 
+    def released_by(self, width: float) -> bool:
+        """Whether opening the jaws to ``width`` [m] lets it go: wider than the cube (as
+        the simulator's jaws let go of it)."""
+        return width > self.cube.size
+
 
 @dataclass(frozen=True)
 class Collision:

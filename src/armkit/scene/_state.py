@@ -34,15 +34,6 @@ def scene_state_file(scene: Scene, arm_key: str) -> Path:
     return config_dir() / f"scene_{scene.name}-{digest}_{arm_key}.json"
 
 
-def without(scene: Scene, cube: str | None) -> Scene:
-    """``scene`` without the cube named ``cube`` (None: as it is): what an arm holding that
-    cube is checked against (``rest_scene`` and a task's ``Plan.rest`` keep a held cube
-    where it was picked from)."""
-    if cube is None:
-        return scene
-    return replace(scene, cubes=tuple(c for c in scene.cubes if c.name != cube))
-
-
 def rest_scene(physics: ScenePhysics) -> Scene:
     """The objects at rest, a held cube shown where it was picked from (what a task plans
     with: ``place`` takes the held cube from where the scene has it)."""

@@ -16,7 +16,7 @@ from numpy.typing import NDArray
 from .._errors import ArmkitError
 from ..connect import driver_names
 from ..model import ArmModel, load_model, shipped_models
-from ..scene import Scene
+from ..scene import Held, Scene
 from ._ast import Define, Header, Job, Loc, Num, Program, Repeat, Source, Statement
 from ._diagnostics import Diagnostic, ScriptCheckError, sorted_unique, suggest
 from ._jobs import JobUnavailable, job_function
@@ -89,7 +89,7 @@ def check_source(
     scene: SceneInfo | None = None,
     q0: F64 | None = None,
     grip0: float | None = None,
-    held: str | None = None,
+    held: str | Held | None = None,
     live: Callable[[Scene], Scene] | None = None,
     hardware: bool = False,
     require_jobs: bool = False,
@@ -105,7 +105,8 @@ def check_source(
         q0: joint angles at the start [rad], shape (dof,) (None: the model's home).
         grip0: gripper opening at the start [m] (None: not set yet, so the model's own
             grip length, as ``Arm`` before its first ``grip``; timed as if open).
-        held: the cube a ``pick`` job took before (the shell), for ``place``.
+        held: the cube a ``pick`` job took before (the shell), for ``place``: its name, or
+            with its pose in the gripper (``Arm.held``), so moves check it too.
         live: where the script's tasks will find the scene's objects, a function of the
             scene (``live_objects`` of the arm it will run on); None: as the scene has
             them (a script without a scene: the empty table). The tasks are planned so.

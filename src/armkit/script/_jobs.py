@@ -30,7 +30,6 @@ from typing import Literal
 import numpy as np
 
 from .._errors import ScriptError
-from ..scene import Scene
 from ._units import Dim
 
 ParamKind = Literal[
@@ -242,13 +241,6 @@ def called_with(command: str, args: dict[str, object], held: str | None) -> dict
     if held is None:
         raise ScriptError(NOTHING_PICKED)
     return {"cube": held, **called}
-
-
-def lets_go(objects: Scene | None, held: str, width: float) -> bool:
-    """Whether opening the gripper to ``width`` [m] lets the cube ``held`` go: wider than
-    the cube (as the simulator's jaws let it go), or its size not known."""
-    cube = None if objects is None else next((c for c in objects.cubes if c.name == held), None)
-    return cube is None or width > cube.size
 
 
 def _in_mm(value: object) -> object:

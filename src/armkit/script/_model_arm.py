@@ -38,10 +38,10 @@ from ..drivers.timed import (
 from ..kinematics import fk, ik
 from ..model import ArmModel, check_joints
 from ..motion import line, plan_path, time_path, trapezoid
-from ..scene import Scene, move_refusal, without
+from ..scene import Held, Scene, move_refusal
 from ._ast import Loc, Statement
 from ._backend import Frame
-from ._jobs import JOBS, NOTHING_PICKED, called_with, job_function, lets_go
+from ._jobs import JOBS, NOTHING_PICKED, called_with, job_function
 from ._plan import Plan, PlanStep
 from ._resolve import UNKNOWN, JointPose, Point, Target
 
@@ -59,7 +59,8 @@ class ArmState:
     """What the checker knows of the arm; None = not known before it runs (``grip``:
     not set yet, the model's own grip length). ``motor_s``: motor-seconds a timed
     arm has used [s] (its battery's count). ``held``: the cube a ``pick`` job took
-    (until ``place``), None, or ``UNKNOWN``. ``objects``: the scene as the tasks so far
+    (until ``place``), None, or ``UNKNOWN``; ``gripped``: it with its pose in the tool
+    frame, where known (checked with the links). ``objects``: the scene as the tasks so far
     leave it (``tasks.Plan.rest``), what the next task is planned with; None: not known
     (after a job that is not planned ahead, such as ``search``)."""
 
@@ -71,13 +72,14 @@ class ArmState:
     motor_s: float = 0.0
     held: Any = None
     objects: Scene | None = None
+    gripped: Held | None = None
 
 
 class ModelArm:
     """A ``Backend`` that simulates the script on the model and builds the ``Plan``."""
 
     def __init__(
-        self, model: ArmModel, q0: F64 | None, grip0: float | None, held: str | None = None,
+        self, model: ArmModel, q0: F64 | None, grip0: float | None, held: str | Held | None = None,
         objects: Scene | None = None, hardware: bool = False, has_scene: bool = False,
     ) -> None:  # fmt: skip
         self.model, self.hardware = model, hardware
@@ -85,7 +87,9 @@ class ModelArm:
         # against the table alone, as ``Arm`` checks them without a scene
         self._fixed = replace(objects, cubes=()) if has_scene and objects is not None else None
         q = None if q0 is None else np.array(q0, dtype=np.float64)
-        self.state = ArmState(q, grip0, held=held, objects=objects)
+        gripped = held if isinstance(held, Held) else None
+        name = held.cube.name if isinstance(held, Held) else held
+        self.state = ArmState(q, grip0, held=name, objects=objects, gripped=gripped)
         self.plan = Plan(model.joint_names)
         self.time = 0.0  # sum of the known durations so far [s]
         # an OWI-535's timing as its driver gives a unit not yet calibrated; None: not one
@@ -128,10 +132,11 @@ class ModelArm:
     def grip(self, width: float | None) -> None:
         took = None if width is None else self._grip_time(width)
         s = self.state
-        if isinstance(s.held, str) and (width is None or lets_go(s.objects, s.held, width)):
+        let_go = width is None or s.gripped is None or s.gripped.released_by(width)
+        if isinstance(s.held, str) and let_go:
             # the cube drops where it is: no longer held, and where it lands not known
             held = None if width is not None else UNKNOWN
-            self.state = replace(s, grip=width, held=held, objects=None)
+            self.state = replace(s, grip=width, held=held, objects=None, gripped=None)
         else:
             self.state = replace(s, grip=width)
         self._step(self.state.q, took)
@@ -175,7 +180,9 @@ class ModelArm:
         plan = self._plan_job(command, args)
         if plan is not None:  # planned whole, as it will be when it runs
             took = self._task_time(plan)
-            self.state = replace(self.state, grip=None, held=held, objects=plan.rest)
+            self.state = replace(
+                self.state, grip=None, held=held, objects=plan.rest, gripped=plan.held
+            )
             self._step(plan.q_end, took, note=f"{command}: {count(len(plan.steps), 'step')}")
             return
         seed = self.model.home if self.state.q is None else self.state.q
@@ -185,7 +192,7 @@ class ModelArm:
                     ik(self._kin(), value, None, seed)
                 except UnreachableError as exc:
                     raise UnreachableError(f"{command} {name}: {exc}", reason=exc.reason) from None
-        self.state = replace(self.state, q=None, grip=None, held=held, objects=None)
+        self.state = replace(self.state, q=None, grip=None, held=held, objects=None, gripped=None)
         self._step(None, None)
 
     def _plan_job(self, command: str, args: dict[str, object]) -> TaskPlan | None:
@@ -256,7 +263,7 @@ class ModelArm:
 
     def lose_track(self) -> None:
         """After a failed statement: where the arm is, and what it holds, is no longer known."""
-        self.state = replace(self.state, q=None, held=UNKNOWN)
+        self.state = replace(self.state, q=None, held=UNKNOWN, gripped=None)
 
     @contextmanager
     def blind(self) -> Iterator[None]:
@@ -312,7 +319,8 @@ class ModelArm:
         the way there from where the arm is, when that is known."""
         check_joints(self.model, q)
         poses = q[None, :] if path is None else path
-        refused = move_refusal(self._kin(), self.state.q, poses, self._obstacles())
+        s = self.state
+        refused = move_refusal(self._kin(), s.q, poses, self._obstacles(), s.gripped)
         if refused is not None:
             raise refused
 
@@ -325,7 +333,7 @@ class ModelArm:
             return None
         if s.objects is None or s.held is UNKNOWN:
             return self._fixed
-        return without(s.objects, s.held)
+        return s.objects if s.held is None else s.objects.without_cube(s.held)
 
     # -- timing ----------------------------------------------------------
     def _joint_move(self, q0: F64 | None, q1: F64) -> None:

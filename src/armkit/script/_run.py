@@ -16,12 +16,12 @@ from .._errors import DeviceError, ScriptError
 from ..arm import Arm
 from ..kinematics import fk
 from ..motion import TimedStreaming, line
-from ..scene import Scene, without
+from ..scene import Scene
 from ..tasks import Plan, held_now, objects_now, obstacles_now
 from ._ast import Loc, Source, Statement
 from ._backend import Frame
 from ._check import CheckResult, check_source, looped
-from ._jobs import called_with, job_function, lets_go
+from ._jobs import called_with, job_function
 from ._model_arm import LINE_SPACING
 from ._resolve import JointPose, Point, Resolver, SceneInfo, Target, job_scene
 from ._walk import Walker
@@ -39,7 +39,8 @@ class ArmBackend:
         self.fraction: float | None = None  # joint moves: fraction of max speed (None: 1)
         self.tool_speed = TimedStreaming().speed  # straight lines [m/s]
         self.grip_width: float | None = None
-        self.held = held_now(arm)  # the cube a ``pick`` job took, until ``place``
+        if arm.held is None:  # a simulated arm's, from its physics
+            arm.held = held_now(arm)
         self.objects: Scene | None = None  # the scene as the last task left it
         self._refresh_scene()
 
@@ -71,11 +72,11 @@ class ArmBackend:
             self.arm.turn_to(joint, deg, speed=self.fraction)
 
     def grip(self, width: float | None) -> None:
-        w = _known(width, "the width")
+        w, held = _known(width, "the width"), self.arm.held
         self.arm.grip(w * 1000.0)
         self.grip_width = w
-        if self.held is not None and lets_go(self.scene_now(), self.held, w):
-            self.held = self.objects = None  # dropped where it was: not known where
+        if held is not None and self.arm.held is None:  # ``Arm.grip`` let it go
+            self.objects = None  # dropped where it was: not known where
             self._refresh_scene()
 
     def home(self) -> None:
@@ -102,20 +103,24 @@ class ArmBackend:
         done = job_function(command)(
             self.arm, self._scene(), **called_with(command, args, self.held)
         )
-        if command == "pick":
-            self.held = str(args["cube"])
-        elif command == "place":
-            self.held = None
         if isinstance(done, Plan):  # on hardware the next task plans with the cubes moved
             self.objects = done.rest
         self._refresh_scene()
+
+    @property
+    def held(self) -> str | None:
+        """The cube in the gripper (a ``pick`` job's, until ``place``; ``Arm.held``)."""
+        return None if self.arm.held is None else self.arm.held.cube.name
 
     def _refresh_scene(self) -> None:
         """Check the arm's moves against the objects where they are now (a simulated
         arm's) or where the tasks left them (a held cube left out)."""
         scene = self.scene_now()
         if self.scene is not None and scene is not None:  # else: as the arm was opened
-            self.arm.scene = obstacles_now(self.arm, without(scene, self.held))
+            held = self.held
+            self.arm.scene = obstacles_now(
+                self.arm, scene if held is None else scene.without_cube(held)
+            )
 
     def _scene(self) -> Scene:
         scene = self.scene_now()
@@ -196,7 +201,7 @@ def run_source(
         model=arm.model,
         scene=scene,
         q0=arm.driver.read(),
-        held=held_now(arm),
+        held=arm.held,
         live=live_objects(arm),
         hardware=arm.world is None,
         require_jobs=True,

@@ -162,7 +162,7 @@ class Session:
         env = Env(self.resolver.poses, self.walker.procs)
         result = check_source(
             source, model=self.arm.model, scene=self.scene, q0=self.arm.driver.read(),
-            grip0=self.backend.grip_width, held=self.backend.held, live=live_objects(self.arm, self.backend.objects),
+            grip0=self.backend.grip_width, held=self.arm.held, live=live_objects(self.arm, self.backend.objects),
             hardware=self.arm.world is None,
             require_jobs=True,
             base_dir=self.base_dir, env=env,

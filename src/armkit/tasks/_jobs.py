@@ -79,7 +79,8 @@ def plan_task(
         if st.held is None
         else replace(st.scene, cubes=(*st.scene.cubes, _carried(ctx, st)))
     )
-    return Plan(task, arm.model.name, st.steps, q0, scene, after, time.perf_counter() - start)
+    took = time.perf_counter() - start
+    return Plan(task, arm.model.name, st.steps, q0, scene, after, took, st.held)
 
 
 def _carried(ctx: Context, st: State) -> Cube:

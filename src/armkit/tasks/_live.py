@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING
 
 from .._errors import ArmkitError, InputError
 from .._inputs import shown
-from ..scene import Scene, ScenePhysics, rest_scene
+from ..scene import Held, Scene, ScenePhysics, rest_scene
 from ._plan import Plan, Step, TaskError, cube_text, pose_error
 from ._precision import Precision, precision_of
 from ._run import run_plan
@@ -113,12 +113,12 @@ def _check_inputs(arm: object, scene: object, task: str) -> None:
         )
 
 
-def held_now(arm: Arm) -> str | None:
-    """The cube a simulated arm's gripper holds (its scene's physics), else None (also on
-    hardware, where armkit cannot know)."""
+def held_now(arm: Arm) -> Held | None:
+    """The cube a simulated arm's gripper holds (its scene's physics) and its pose in the
+    tool frame, else None (also on hardware, where armkit cannot know)."""
     physics = attached(arm)
     holding = None if physics is None else physics.holding
-    return None if holding is None else holding.cube.name
+    return None if holding is None else Held(holding.cube, holding.T_tool_object)
 
 
 def obstacles_now(arm: Arm, scene: Scene) -> Scene:

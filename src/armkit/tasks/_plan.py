@@ -10,7 +10,7 @@ from numpy.typing import NDArray
 
 from .._errors import UnreachableError
 from .._terminal import count
-from ..scene import Cube, Scene
+from ..scene import Cube, Held, Scene
 
 F64 = NDArray[np.float64]
 
@@ -53,8 +53,9 @@ class Step:
 @dataclass(frozen=True)
 class Plan:
     """A whole task, planned: its steps, the arm's joints at the start [rad], the
-    scene before and the scene expected after (every cube at rest), and how long
-    planning took [s]."""
+    scene before and the scene expected after (every cube at rest), how long
+    planning took [s], and the cube in the gripper at the end (``pick``) with its
+    pose in the tool frame, or None."""
 
     task: str
     arm: str
@@ -63,6 +64,7 @@ class Plan:
     before: Scene
     after: Scene
     planning_time: float
+    held: Held | None = None
 
     @property
     def q_end(self) -> F64:

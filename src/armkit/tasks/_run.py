@@ -46,6 +46,7 @@ def run_plan(arm: Arm, plan: Plan, say: Callable[[int, Step], None] | None = Non
             "plan it again"
         )
     scene, arm.scene = arm.scene, None  # checked when planned, with the grasps allowed
+    arm.held = None
     try:
         for k, step in enumerate(plan.steps, 1):
             if say is not None:
@@ -58,6 +59,7 @@ def run_plan(arm: Arm, plan: Plan, say: Callable[[int, Step], None] | None = Non
                 arm.move_joints(np.degrees(step.q).tolist())  # the table is checked again
     finally:
         arm.scene = scene
+        arm.held = plan.held  # what the gripper holds now, as planned
 
 
 def settle(arm: Arm) -> None:
