@@ -38,7 +38,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         type=number("mm", 0.0, 500.0),
         default=40.0,
         metavar="MM",
-        help="travel height above A and B [mm], 0..500",
+        help="travel height above A and B [mm], 0..500 (default 40)",
     )
     p.set_defaults(func=_pick_place)
     p = sub.add_parser(

@@ -41,6 +41,10 @@ the shell's own words (besides the language):
   save NAME        keep the pose now (while limp: the servos' true angles)
   write FILE       the session as a script that armkit run replays
 
+a block (repeat ... end, define ... end) runs when its 'end' is typed; 'quit' inside
+one drops it. With lines piped in (not a terminal) the exit status is 1 if any line
+failed, else 0; at a terminal it is 0.
+
 example (typed at the shell's prompt, the arm moved by hand after limp):
   $ armkit shell
   ... p 0> limp
@@ -78,6 +82,11 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     p = sub.add_parser(
         "check", help="check a .arm script without moving: every error with line and column",
         epilog=UNITS_NOTE,
+        description="Check the whole script from the arm's home pose, with the scene's cubes "
+        "where its file puts them: every target, move and straight line (reach, joint limits, "
+        "the table, the base column, the scene's objects), every job's arguments, every task "
+        "planned whole, and the time it takes. 'armkit run --dry-run FILE' checks it from where "
+        "the arm is now, with the cubes where a simulated arm keeps them.",
     )  # fmt: skip
     p.add_argument("file", metavar="FILE", help="the script (.arm)")
     p.add_argument(

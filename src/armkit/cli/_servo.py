@@ -46,7 +46,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         "--time-ms",
         type=integer("ms", 0, 65535),
         default=None,
-        help="time for the move [ms], 0..65535",
+        help="time for the move [ms], 0..65535 (default: none, the servo moves at once)",
     )
     p.set_defaults(func=run_servo)
     t = sub.add_parser(

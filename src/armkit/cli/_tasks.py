@@ -78,7 +78,7 @@ def _search_command(sub: argparse._SubParsersAction[Any]) -> None:
     for flag, default, what in (("--from", 30.0, "first"), ("--to", 120.0, "last"), ("--step", 5.0, "coarse step of the")):  # fmt: skip
         p.add_argument(flag, dest=flag[2:], type=float, default=default, metavar="DEG", help=f"{what} scan angle [deg] (default {default:g})")  # fmt: skip
     p.add_argument("--into", metavar="NAME", help="the container to drop it in (default: the scene's only one)")  # fmt: skip
-    p.add_argument("--adc-port", metavar="PORT", help="the serial ADC board the sensor is wired to (arms without an SSC-32, real hardware)")  # fmt: skip
+    p.add_argument("--adc-port", metavar="PORT", help="the serial ADC board the sensor is wired to (arms without an SSC-32, real hardware; default: none, the SSC-32's own inputs or the simulator's)")  # fmt: skip
     p.add_argument("--channel", type=int, default=0, choices=range(4), help="the sensor's analog input, 0..3 (SSC-32 VA..VD; default 0)")  # fmt: skip
     add_watch_options(p)
     p.set_defaults(func=_search)
@@ -89,7 +89,7 @@ def _search_command(sub: argparse._SubParsersAction[Any]) -> None:
     p.add_argument("--height", type=float, default=110.0, metavar="MM", help="height of the scan, the hand's [mm] (default 110)")  # fmt: skip
     p.add_argument("--near", type=float, default=60.0, metavar="MM", help="stop when the sensor reads this [mm], 40..300 (default 60)")  # fmt: skip
     p.add_argument("--shakes", type=int, default=3, metavar="N", help="up-and-down shakes, 0..20 (default 3)")  # fmt: skip
-    p.add_argument("--adc-port", metavar="PORT", help="the serial ADC board the sensor is wired to (arms without an SSC-32, real hardware)")  # fmt: skip
+    p.add_argument("--adc-port", metavar="PORT", help="the serial ADC board the sensor is wired to (arms without an SSC-32, real hardware; default: none, the SSC-32's own inputs or the simulator's)")  # fmt: skip
     p.add_argument("--channel", type=int, default=0, choices=range(4), help="the sensor's analog input, 0..3 (default 0)")  # fmt: skip
     add_watch_options(p)
     p.set_defaults(func=_reach)
@@ -184,7 +184,7 @@ def _target(p: argparse.ArgumentParser) -> None:
     p.add_argument(
         "to", nargs="?", metavar="TO", help="a place, board[ROW,COL], a cube or a container"
     )
-    p.add_argument("--xyz", nargs=3, type=float, metavar=("X", "Y", "Z"), help="or a point for the cube's bottom [mm]")  # fmt: skip
+    p.add_argument("--xyz", nargs=3, type=float, metavar=("X", "Y", "Z"), help="or a point for the cube's bottom [mm] (default: none, TO names where)")  # fmt: skip
 
 
 def _run(args: argparse.Namespace) -> int:

@@ -163,7 +163,8 @@ class Walker:
                 raise Fail(
                     s.loc,
                     f"wait needs a time in 0..{MAX_WAIT_S:g} s (1 hour, the longest pause "
-                    f"a script may ask for), got {seconds:g} s; repeat a shorter wait for more",
+                    f"a script may ask for), got {_written(s.value, seconds, 's')}; repeat a "
+                    "shorter wait for more",
                 )
             b.wait(seconds)
         elif s.value is not None:
@@ -220,7 +221,7 @@ class Walker:
             raise Fail(
                 s.count.loc,
                 f"{what} must be 0..{MAX_REPEAT} (more is a slip of a digit, not a job to "
-                f"leave an arm with), got {n:.0f}",
+                f"leave an arm with), got {_written(s.count, n, '')}",
             )
         if n is None or n == 0:
             if self.checking:
@@ -311,3 +312,12 @@ class Walker:
             if binding is not None:
                 self.resolver.bindings.pop()
             self.resolver.poses = poses
+
+
+def _written(value: object, si: float, unit: str) -> str:
+    """A number for a message as the script wrote it and in ``unit`` (``61 min (3660 s)``,
+    ``3601 s``), to 6 significant digits."""
+    in_unit = f"{si:.6g} {unit}".strip()
+    if isinstance(value, Num) and value.unit not in (None, unit):
+        return f"{value.value:.6g} {value.unit} ({in_unit})"
+    return in_unit
