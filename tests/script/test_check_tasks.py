@@ -31,13 +31,15 @@ def test_a_place_that_cannot_be_planned_fails_the_check_at_its_line() -> None:
     assert not result.ok
     (d,) = result.diagnostics
     assert d.loc.line == 4
-    assert "place red: cannot put red in board[0, 1]" in d.message
+    assert "place red: board[0, 1] is taken by green" in d.message
+    (d,) = _check(TIPS.replace("board[0,1]", "board[1,1]")).diagnostics
+    assert d.loc.line == 4 and "place red: cannot put red in board[1, 1]" in d.message
 
 
 def test_run_refuses_it_before_the_first_line_moves() -> None:
     arm, driver = counting_arm()
     before = arm.driver.read()
-    with pytest.raises(ScriptCheckError, match=r"job.arm:4:1: place red: cannot put red"):
+    with pytest.raises(ScriptCheckError, match=r"job.arm:4:1: place red: board\[0, 1\] is taken"):
         run_source(arm, Source("job.arm", TIPS))
     assert driver.sent == 0
     np.testing.assert_array_equal(arm.driver.read(), before)

@@ -21,12 +21,12 @@ from ..scene import Cube, Scene
 from ._calibration import Calibration, calibration_for
 from ._choose import pick_any, place_any, rotate
 from ._live import live_scene, run_checked
-from ._plan import Plan
+from ._plan import Plan, TaskError
 from ._points import move_point
 from ._precision import precision_of
 from ._start import Start
 from ._state import Context, Options, State
-from ._targets import resolve
+from ._targets import Target, resolve, taken_by
 
 if TYPE_CHECKING:
     from ..arm import Arm
@@ -91,6 +91,21 @@ def _carried(ctx: Context, st: State) -> Cube:
     return st.held.cube.moved(T)
 
 
+def _free(scene: Scene, target: Target, moving: str | None, task: str) -> Target:
+    """``target`` if no other cube stands there; TaskError naming the one that does."""
+    if moving is not None and target.label == f"on {moving}":
+        raise TaskError(f"{task}: {moving} cannot go on itself; choose another place", step=task)
+    other = taken_by(scene, target, moving)
+    if other is None:
+        return target
+    what = moving or "it"
+    raise TaskError(
+        f"{task}: {target.label.removeprefix('in ').removeprefix('at ')} is taken by {other}; "
+        f"choose a free one, or put {what} on {other}",
+        step=task,
+    )
+
+
 def _deg(pitch: float | None) -> float | None:
     if pitch is None:
         return None
@@ -149,7 +164,7 @@ def place(
     down at ``to``: a place, ``board[row, col]``, a cube to stack on, a container,
     or (x, y, z) [mm]; then go back up."""
     scene = live_scene(arm, scene, dry_run, f"place {cube}", held=cube)
-    target = resolve(scene, to)
+    target = _free(scene, resolve(scene, to), cube, f"place {cube}")
     p = _deg(pitch) if pitch is not None else target.pitch
     plan = plan_task(
         arm, scene, f"place {cube}", lambda c, s: place_any(c, s, target.bottom, target.label, p),
@@ -180,7 +195,8 @@ def move_item(
     if not (is_number(lift) and 0.0 <= lift <= 500.0):
         raise InputError(f"lift must be 0..500 mm, got {shown(lift)}")
     scene = live_scene(arm, scene, dry_run, "move")
-    target = resolve(scene, to)
+    moving = item if isinstance(item, str) else None
+    target = _free(scene, resolve(scene, to), moving, f"move {moving or 'the item'}")
     p = _deg(pitch)
     height = max(lift, clearance)
     if isinstance(item, str):

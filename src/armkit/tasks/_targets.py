@@ -53,7 +53,26 @@ def resolve(scene: Scene, to: str | Sequence[float]) -> Target:
     for box in scene.containers:
         if box.name == to:
             return Target(np.array([*box.position[:2], box.floor_z]), f"in {to}")
+    for board in scene.boards:
+        if board.name == to:
+            raise InputError(
+                f"{to} is a board: say which socket, {to}[ROW, COL] (rows 0..{board.rows - 1}, "
+                f"columns 0..{board.cols - 1})"
+            )
     raise InputError(
         f"scene {scene.name!r} has no place, cube or container {to!r} "
         f"(and it is not board[row, col]); it has: {', '.join(scene.names()) or 'nothing'}"
     )
+
+
+def taken_by(scene: Scene, target: Target, moving: str | None) -> str | None:
+    """The cube (other than ``moving``) that stands where ``target`` puts a cube's bottom
+    (its own bottom within 1 mm of that height, overlapping it), or None if it is free."""
+    size = next((c.size for c in scene.cubes if c.name == moving), 0.0)
+    for cube in scene.cubes:
+        if cube.name == moving:
+            continue
+        dx, dy, dz = cube.position - target.bottom
+        if abs(dz) < 1e-3 and np.hypot(dx, dy) < (cube.size + size) / 2:
+            return cube.name
+    return None
