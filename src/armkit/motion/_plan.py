@@ -33,6 +33,7 @@ F64 = NDArray[np.float64]
 DEFAULT_TOLERANCE = 0.2e-3  # [m]
 PITCH_STEP = math.radians(5.0)  # between the pitches tried for a whole path
 PITCHES_TRIED = 8  # reachable ones, nearest first, before the path is refused
+FLIP_TURN = math.radians(45.0)  # a joint turning more between two points: a flip, not spacing
 
 
 @dataclass(frozen=True)
@@ -141,6 +142,10 @@ def _check_between(model: ArmModel, p: F64, q: F64, tolerance: float, free: bool
         turn = np.abs(q[i + 1] - q[i])
         j = int(np.argmax(turn))
         why, fix = "an elbow flip or a singularity", "use a smaller spacing or another path"
+        apart = float(np.linalg.norm(p[i + 1] - p[i]))
+        if turn[j] < FLIP_TURN:  # a plain turn: the points are far apart for joint moves
+            why = f"the points are {apart * 1000:.1f} mm apart and the arm moves in joint space between them"
+            fix = "add points in between (armkit.motion.line, e.g. every 5 mm)"
         if free and _chooses_pitch(model):  # point by point, after no whole-path pitch fit
             a, b = np.degrees(pitch_of(fk(model, q[i : i + 2])))
             why += f", at the pitches it chose there, {a:.1f} and {b:.1f} deg"
