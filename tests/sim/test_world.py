@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from armkit import Arm, ArmkitError
+from armkit import Arm, ArmkitError, InputError
 from armkit.connect import open_driver
 from armkit.model import load_model
 from armkit.sim import SimArm, World, world_of
@@ -31,7 +31,10 @@ def test_virtual_time_is_exact_and_the_arms_step_on_a_1khz_grid() -> None:
         t = world.recording().t
         assert t[0] == 0.0 and np.allclose(np.diff(t), 0.001, atol=1e-9)
         assert t[-1] <= world.now() < t[-1] + 0.001
-        world.advance(-1.0)  # nothing
+        world.clock.sleep(-1.0)  # a deadline already passed: nothing (the Clock contract)
+        assert world.now() == pytest.approx(0.5123)
+        with pytest.raises(InputError, match="seconds >= 0"):
+            world.advance(-1.0)  # time does not run backwards: refused, nothing changes
         assert world.now() == pytest.approx(0.5123)
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import math
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -11,6 +12,8 @@ from typing import Protocol
 import numpy as np
 from numpy.typing import NDArray
 
+from .._errors import InputError
+from .._inputs import is_number, shown
 from ..model import ArmModel
 from ._recording import Recorder, Recording
 
@@ -99,9 +102,19 @@ class SimArm:
 
     def grip_stop(self, width: float | None) -> None:
         """The scene calls this when the jaws close on an object of ``width`` [m]: the
-        simulated gripper stops there (None: no obstacle)."""
+        simulated gripper stops there (None: no obstacle).
+
+        Raises:
+            InputError: ``width`` is not None nor a finite number >= 0 [m]; nothing changes.
+        """
+        if width is not None and not (is_number(width) and 0.0 <= width < math.inf):
+            raise InputError(
+                f"{self.name}: grip_stop takes the width of the object between the jaws, a "
+                f"finite number >= 0 [m] (0.03 for a 30 mm cube), or None for none; "
+                f"got {shown(width)}"
+            )
         with self._lock:
-            self.body.grip_stop(width)
+            self.body.grip_stop(None if width is None else float(width))
 
     def push(self, q: F64) -> None:
         """Move the arm by hand to joint angles ``q`` [rad], shape (dof,), as a person does

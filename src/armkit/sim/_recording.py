@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+import io
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 from numpy.typing import NDArray
+
+from .._files import check_output_path, write_atomic
 
 F64 = NDArray[np.float64]
 _FIRST_ROWS = 4096  # the buffer starts this small and doubles up to its capacity
@@ -32,10 +35,20 @@ class Recording:
         return Recording(self.joint_names, self.t[keep], self.q[keep])
 
     def write_csv(self, path: str | Path) -> int:
-        """Write ``t_s,<joint>_deg,...`` and one row per sample; returns the row count."""
+        """Write ``t_s,<joint>_deg,...`` and one row per sample; returns the row count.
+        The path is checked first (``armkit._files.check_output_path``) and the file is
+        written atomically: a reader sees the old file or the whole new one.
+
+        Raises:
+            InputError: the file cannot be written there (no such folder, a directory,
+                read-only, ...); the message says why and what to do, nothing is written.
+        """
+        out = check_output_path(path)
         header = ",".join(["t_s", *(f"{n}_deg" for n in self.joint_names)])
         table = np.column_stack([self.t, np.degrees(self.q)])
-        np.savetxt(Path(path), table, fmt="%.6f", delimiter=",", header=header, comments="")
+        text = io.StringIO()
+        np.savetxt(text, table, fmt="%.6f", delimiter=",", header=header, comments="")
+        write_atomic(out, text.getvalue(), durable=False)
         return int(table.shape[0])
 
 

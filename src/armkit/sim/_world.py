@@ -39,7 +39,8 @@ from typing import TYPE_CHECKING, Protocol
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import ArmkitError
+from .._errors import ArmkitError, InputError
+from .._inputs import is_number, shown
 
 if TYPE_CHECKING:
     from ._arm import SimArm
@@ -56,6 +57,7 @@ class Observer(Protocol):
         ...
 
 
+MAX_RATE_HZ = 100_000.0  # simulation steps per simulated second, at most
 STILL_CHECK = 100  # steps stepped between looks at whether the world is still
 
 
@@ -78,7 +80,11 @@ class WorldClock:
         return self.world.now()
 
     def sleep(self, seconds: float) -> None:
-        """Let ``seconds`` [s] of simulated time pass (rounded up to whole steps)."""
+        """Let ``seconds`` [s] of simulated time pass (rounded up to whole steps); as every
+        ``Clock``, nothing for seconds <= 0 (a deadline already passed). Infinity or not a
+        number: InputError (``World.advance``)."""
+        if is_number(seconds) and seconds <= 0:  # NaN goes on to advance, which refuses it
+            return
         self.world.advance(seconds)
 
 
@@ -100,10 +106,17 @@ class World:
         pace: float = 1.0,
         record_s: float = 120.0,
     ) -> None:
-        if not (math.isfinite(rate_hz) and 1.0 <= rate_hz <= 100_000.0):
-            raise ValueError(f"rate_hz must be 1..100000 steps per second, got {rate_hz!r}")
-        if not (math.isfinite(pace) and pace > 0) or not (math.isfinite(record_s) and record_s > 0):
-            raise ValueError(f"pace and record_s must be > 0, got {pace!r}, {record_s!r}")
+        if not (is_number(rate_hz) and 1.0 <= rate_hz <= MAX_RATE_HZ):  # NaN fails too
+            raise InputError(
+                f"rate_hz must be 1..{MAX_RATE_HZ:g} simulation steps per simulated second "
+                f"(1000 = 1 ms steps, the default), got {shown(rate_hz)}"
+            )
+        for name, value, what in (
+            ("pace", pace, "simulated seconds per wall second (1 = real time, 2 = twice as fast)"),
+            ("record_s", record_s, "seconds of simulated time each arm's recording keeps"),
+        ):
+            if not (is_number(value) and math.isfinite(value) and value > 0):
+                raise InputError(f"{name} must be a number > 0 of {what}, got {shown(value)}")
         self.realtime, self.rate_hz, self.pace = realtime, float(rate_hz), float(pace)
         self.dt = 1.0 / self.rate_hz
         self.record_rows = max(2, round(record_s * self.rate_hz))
@@ -128,9 +141,21 @@ class World:
             return self._t
 
     def advance(self, seconds: float) -> None:
-        """Run the simulation for ``seconds`` [s] of simulated time (nothing for
-        seconds <= 0). In real-time mode this waits as long."""
-        if not seconds > 0:
+        """Run the simulation for ``seconds`` [s] of simulated time, a finite number >= 0
+        (0: nothing). In real-time mode this waits as long.
+
+        Raises:
+            InputError: ``seconds`` is not a number, negative, NaN or infinite (time does
+                not run backwards; ``clock.sleep`` is the one that ignores a past deadline).
+        """
+        if not (type(seconds) is float and 0.0 <= seconds < math.inf):  # the usual case, fast
+            if not (is_number(seconds) and 0.0 <= seconds < math.inf):  # NaN fails too
+                raise InputError(
+                    "advance takes a finite number of seconds >= 0 of simulated time, "
+                    f"got {shown(seconds)}"
+                )
+            seconds = float(seconds)
+        if seconds == 0.0:
             return
         if self.realtime:
             self._wait_until(self.now() + seconds)
@@ -181,7 +206,22 @@ class World:
             return found
 
     def attach(self, observer: Observer) -> Callable[[], None]:
-        """Call ``observer.on_step(world, t)`` after every step; returns ``detach()``."""
+        """Call ``observer.on_step(world, t)`` after every step; returns ``detach()``.
+
+        Raises:
+            InputError: ``observer`` has no ``on_step(world, t)`` method (None, a function,
+                a class instead of an instance); nothing is attached.
+        """
+        if isinstance(observer, type) or not callable(getattr(observer, "on_step", None)):
+            got = (
+                f"the class {observer.__name__} (attach an instance of it)"
+                if isinstance(observer, type)
+                else shown(observer)
+            )
+            raise InputError(
+                "an observer must be an object with a method on_step(world, t), called after "
+                f"every simulation step (armkit.sim.Observer), got {got}"
+            )
         with self.lock:
             self._observers.append(observer)
             self._start_pacing()
