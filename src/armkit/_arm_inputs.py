@@ -1,5 +1,6 @@
 """What ``Arm`` is given, checked before anything moves: numbers in the user's units
-and the timing options of a move (InputError naming the argument otherwise)."""
+(numbers, not text: ``"200"`` is refused as ``"open"`` is) and the timing options of a
+move (InputError naming the argument otherwise)."""
 
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ from ._inputs import has_bool, shown
 from .model import MAX_MOVE_S, check_duration, check_speed
 
 F64 = NDArray[np.float64]
+PITCH_LIMIT_DEG = 180.0  # a pitch [deg] is -180..180; beyond it is a slip, not another angle
 
 
 @dataclass(frozen=True)
@@ -29,9 +31,12 @@ class Timing:
 
 def numbers(values: object, what: str, *, finite: bool = True, one: bool = False) -> F64:
     """``values`` as a float array; InputError naming ``what`` if they are not numbers
-    (True and False are not: ``numbers([True, 0, 100], ...)`` is refused), or, with
-    ``finite``, not finite (None and NaN included). ``one``: one value ("must be a number")."""
+    (True and False are not: ``numbers([True, 0, 100], ...)`` is refused, nor is text
+    such as ``"200"``, which numpy would read as 200), or, with ``finite``, not finite
+    (None and NaN included). ``one``: one value ("must be a number")."""
     kind = "a number" if one else "numbers"
+    if has_text(values):
+        raise InputError(f"{what} must be {kind}, not text, got {shown(values)}")
     try:
         a = np.asarray(values, dtype=np.float64)
     except (TypeError, ValueError):
@@ -41,6 +46,20 @@ def numbers(values: object, what: str, *, finite: bool = True, one: bool = False
     if finite and not np.all(np.isfinite(a)):
         raise InputError(f"{what} must be finite numbers, got {shown(values)}")
     return a
+
+
+def has_text(value: object) -> bool:
+    """Whether ``value`` is or holds text (a str or bytes, a text array, or a tuple or
+    list with one inside): numpy would read ``"200"`` as 200, armkit refuses it."""
+    if isinstance(value, str | bytes):
+        return True
+    if isinstance(value, np.ndarray):
+        if value.dtype.kind == "O":
+            return any(has_text(v) for v in value.flat)
+        return value.dtype.kind in "SU"
+    if isinstance(value, tuple | list):
+        return any(has_text(v) for v in value)
+    return False
 
 
 def timing_of(
@@ -73,5 +92,16 @@ def number(value: object, what: str, *, finite: bool = True) -> float:
 
 
 def pitch_radians(pitch: object) -> float | None:
-    """A pitch given in degrees, checked, in radians (None stays None: no pitch)."""
-    return None if pitch is None else math.radians(number(pitch, "pitch [deg]"))
+    """A pitch given in degrees, checked, in radians (None stays None: no pitch). The pitch
+    is the approach angle above the horizontal, -90 pointing straight down, so one beyond
+    -180..180 (``PITCH_LIMIT_DEG``) is a slip (radians? an extra digit?), not another way
+    to say an angle: InputError."""
+    if pitch is None:
+        return None
+    deg = number(pitch, "pitch [deg]")
+    if abs(deg) > PITCH_LIMIT_DEG:
+        raise InputError(
+            f"pitch [deg] must be -{PITCH_LIMIT_DEG:g}..{PITCH_LIMIT_DEG:g} (the approach angle "
+            f"above the horizontal: 0 level, -90 pointing straight down), got {shown(deg)}"
+        )
+    return math.radians(deg)
