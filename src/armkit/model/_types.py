@@ -11,6 +11,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
+from .._inputs import brief, is_number, shown
+from ._check import MAX_LENGTH_MM, MIN_LENGTH_MM
 
 Convention = Literal["standard", "modified", "frames"]
 
@@ -197,7 +199,14 @@ class ArmModel:
         return inside
 
     def with_tool_length(self, length: float) -> ArmModel:
-        """The same arm with the tool's length along its approach axis set to ``length`` [m]."""
+        """The same arm with the tool's length along its approach axis set to ``length`` [m]:
+        0 (no tool: the flange point) or 0.01 mm..10 m, as a model file's ``tool.length_mm``.
+
+        Raises:
+            InputError: ``length`` is not such a number (negative, NaN, a bool, text, or
+                over 10 m: 130 is likely 130 mm given as metres, 0.13).
+        """
+        length = _tool_length(length)
         T = self.T_flange_tool.copy()
         T[:3, 3] += T[:3, 0] * (length - self.tool_length)
         return replace(self, T_flange_tool=T, tool_length=length)
@@ -213,3 +222,19 @@ class ArmModel:
             )
         length = g.length_at(width)
         return self if length is None else self.with_tool_length(length)
+
+
+def _tool_length(length: object) -> float:
+    """``length`` [m] checked as ``ArmModel.with_tool_length`` takes it (the model file's
+    rule for a tool length, ``_check.Checker.length``), as a float."""
+    v = float(length) if is_number(length) else math.nan  # type: ignore[arg-type]
+    if v == 0.0 or MIN_LENGTH_MM <= v * 1000.0 <= MAX_LENGTH_MM:  # NaN fails
+        return v
+    allowed = (
+        f"tool length must be 0 (no tool: the flange point) or {MIN_LENGTH_MM:g} mm.."
+        f"{MAX_LENGTH_MM / 1000.0:g} m, given in metres (130 mm is 0.13)"
+    )
+    if not math.isfinite(v):
+        raise InputError(f"{allowed}, got {shown(length)}")
+    slip = f"; is {shown(v)} in mm? give {shown(v / 1000.0)}" if v * 1000.0 > MAX_LENGTH_MM else ""
+    raise InputError(f"{allowed}, got {shown(v)} m ({brief(v * 1000.0)} mm){slip}")
