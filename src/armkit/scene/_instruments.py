@@ -10,11 +10,14 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
-from .._inputs import shown
+from .._inputs import array, brief, is_number, shown
+from ._fields import MAX_MM
 
 F64 = NDArray[np.float64]
 NOTE_NAMES = ("C", "C#", "D", "D#", "E", "F", "F#", "G", "G#", "A", "A#", "B")
 _PITCH = re.compile(r"([A-Ga-g])([#b]?)(-?\d)")
+MIDI_HIGHEST = 127  # MIDI notes are 0..127
+MAX_SIZE = MAX_MM / 1000.0  # [m] a bar's or drum's size, as any size in a scene (10 m)
 
 
 def midi_note(note: object, name: str = "note") -> int:
@@ -26,6 +29,27 @@ def midi_note(note: object, name: str = "note") -> int:
     raise InputError(
         f"{name} must be a MIDI note number, an integer (60 = C4), got {shown(note)}{hint}"
     )
+
+
+def _note_0_127(note: object, name: str, example: str = "60 = C4") -> int:
+    """``note`` checked to be a MIDI note number in 0..127 (InputError naming ``name``)."""
+    n = midi_note(note, name)
+    if not 0 <= n <= MIDI_HIGHEST:
+        raise InputError(f"{name} must be a MIDI note 0..{MIDI_HIGHEST} ({example}), got {n}")
+    return n
+
+
+def _size(value: object, name: str) -> float:
+    """A size [m] > 0 and at most ``MAX_SIZE`` (InputError naming ``name`` in m and mm,
+    with the likely slip of millimetres given as metres)."""
+    v = float(value) if is_number(value) else math.nan  # type: ignore[arg-type]
+    if 0.0 < v <= MAX_SIZE:  # NaN fails
+        return v
+    allowed = f"{name} must be more than 0 and at most {MAX_SIZE:g} m, given in metres"
+    if not math.isfinite(v):
+        raise InputError(f"{allowed}, got {shown(value)}")
+    slip = f"; is {shown(v)} in mm? give {shown(v / 1000.0)}" if v > MAX_SIZE else ""
+    raise InputError(f"{allowed}, got {shown(v)} m ({brief(v * 1000.0)} mm){slip}")
 
 
 def note_name(note: int) -> str:
@@ -73,12 +97,22 @@ class Xylophone:
     rows: F64
 
     def __post_init__(self) -> None:
+        """Refuse what no xylophone is (InputError naming the field): notes not ascending
+        MIDI notes 0..127 each once, shapes that do not fit, a value not finite, a bar
+        size not more than 0 and at most 10 m."""
         n = len(self.notes)
+        for k, note in enumerate(self.notes):
+            _note_0_127(note, f"{self.name}: notes[{k}]")
         if n == 0 or list(self.notes) != sorted(set(self.notes)):
             raise InputError(f"{self.name}: notes must be ascending, each once, got {self.notes}")
-        shapes = (self.tops.shape, self.sizes.shape, self.rows.shape)
+        shapes = (np.shape(self.tops), np.shape(self.sizes), np.shape(self.rows))
         if shapes != ((n, 3), (n, 2), (n,)):
             raise InputError(f"{self.name}: tops, sizes, rows need shapes (N, 3), (N, 2), (N,)")
+        array(self.tops, f"{self.name}: tops", ((n, 3),), "m")
+        array(self.rows, f"{self.name}: rows", ((n,),), "rad")
+        for k, size in enumerate(array(self.sizes, f"{self.name}: sizes", ((n, 2),), "m")):
+            _size(float(size[0]), f"{self.name}: the length of bar {k}")
+            _size(float(size[1]), f"{self.name}: the width of bar {k}")
 
     @classmethod
     def interpolated(
@@ -92,15 +126,37 @@ class Xylophone:
     ) -> Xylophone:
         """``bar_count`` bars one semitone apart from ``lowest_note``, their top centres
         evenly from ``first_bar`` to ``last_bar`` [m], shape (3,) each; every bar
-        ``bar_size`` = (length across the row, width along the row) [m]."""
+        ``bar_size`` = (length across the row, width along the row) [m], each more than
+        0 and at most 10 m.
+
+        Raises:
+            InputError: a note outside MIDI 0..127 (the highest bar's included), a
+                ``bar_count`` not a whole number >= 1, or a point or size that is not one.
+        """
+        lowest = _note_0_127(lowest_note, f"{name}: lowest_note")
+        if not (isinstance(bar_count, int | np.integer) and not isinstance(bar_count, bool)):
+            raise InputError(
+                f"{name}: bar_count must be a whole number >= 1, got {shown(bar_count)}"
+            )
+        if not 1 <= bar_count <= MIDI_HIGHEST + 1 - lowest:
+            raise InputError(
+                f"{name}: bar_count must be 1..{MIDI_HIGHEST + 1 - lowest} from lowest_note "
+                f"{lowest} ({note_name(lowest)}): the highest bar must be a MIDI note 0.."
+                f"{MIDI_HIGHEST}, got {int(bar_count)}"
+            )
+        first = array(first_bar, f"{name}: first_bar", ((3,),), "m")
+        last = array(last_bar, f"{name}: last_bar", ((3,),), "m")
+        size = array(bar_size, f"{name}: bar_size", ((2,),), "m")
+        _size(float(size[0]), f"{name}: bar_size[0] (the length across the row)")
+        _size(float(size[1]), f"{name}: bar_size[1] (the width along the row)")
+        bar_count = int(bar_count)
         share = np.linspace(0.0, 1.0, bar_count)[:, None]
-        first, last = np.asarray(first_bar, dtype=float), np.asarray(last_bar, dtype=float)
         row = math.atan2(float(last[1] - first[1]), float(last[0] - first[0]))
         return cls(
             name,
-            tuple(range(lowest_note, lowest_note + bar_count)),
+            tuple(range(lowest, lowest + bar_count)),
             first + share * (last - first),
-            np.tile(np.asarray(bar_size, dtype=float), (bar_count, 1)),
+            np.tile(size, (bar_count, 1)),
             np.full(bar_count, row),
         )
 
@@ -154,6 +210,19 @@ class Drum:
     radius: float
     top_z: float
     note: int
+
+    def __post_init__(self) -> None:
+        """Refuse what no drum is (InputError naming the field; values are kept as given):
+        a position not three finite numbers [m], a radius not more than 0 and at most
+        10 m, a top_z not a finite number within 10 m, a note not a MIDI note 0..127."""
+        array(self.position, f"{self.name}: position", ((3,),), "m")
+        _size(self.radius, f"{self.name}: radius")
+        if not (is_number(self.top_z) and abs(self.top_z) <= MAX_SIZE):  # NaN fails too
+            raise InputError(
+                f"{self.name}: top_z must be a height within {MAX_SIZE:g} m of the table, given "
+                f"in metres, got {shown(self.top_z)}"
+            )
+        _note_0_127(self.note, f"{self.name}: note", "General MIDI percussion: 38 = snare")
 
     @property
     def head(self) -> F64:
