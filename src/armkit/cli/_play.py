@@ -32,7 +32,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     p = sub.add_parser("play", help=text, description=text + ".", epilog=EPILOG)
     p.add_argument("file", metavar="FILE", nargs="?", help="the score (.mid, .midi, .rtttl, .txt); optional with --calibrate")  # fmt: skip
     p.add_argument("--on", metavar="NAME", help="play on this instrument only (its scene name)")
-    p.add_argument("--tempo", type=float, metavar="FACTOR", help="speed factor of the piece, 0.1..4 (0.8 = 80 %% of the written tempo; default 1)")  # fmt: skip
+    p.add_argument("--tempo", type=float, metavar="FACTOR", help="speed factor of the piece (0.8 = 80%% of the written tempo; default 1; out of range: refused, naming the range)")  # fmt: skip
     p.add_argument("--transpose", type=int, metavar="SEMITONES", help="move every pitched note by this many semitones, -48..48 (12 = an octave up)")  # fmt: skip
     p.add_argument("--wav", metavar="OUT", help="write the contacts the simulated mallet made as sound (.wav, 16-bit mono 44.1 kHz)")  # fmt: skip
     p.add_argument("--plot", metavar="OUT", help="plot planned against played onsets [s] and their errors [ms] (.png, .svg, .pdf)")  # fmt: skip

@@ -28,6 +28,7 @@ from ._job import DrawOptions as DrawOptions
 from ._job import find_pen as find_pen
 from ._job import find_sheet as find_sheet
 from ._job import plan_draw as plan_draw
+from ._job import plan_on_sheet as plan_on_sheet
 from ._merge import merge_strokes as merge_strokes
 from ._metrics import DrawingMetrics as DrawingMetrics
 from ._metrics import PenTrace as PenTrace

@@ -129,12 +129,9 @@ def plan_draw(
 ) -> DrawJob:
     """Plan the job from the arm's joints now; nothing moves (errors as ``draw``)."""
     opts = (options or DrawOptions()).check()
+    plan = plan_on_sheet(scene, file, sheet, pen, options=opts, fit=fit)
     the_sheet, the_pen = find_sheet(scene, sheet), find_pen(scene, pen)
     stand = stand_of(scene, the_pen)
-    if stand is None and not opts.held:
-        raise DrawingError(f"no stand in scene {scene.name} holds {the_pen.name}; use held")
-    fit = replace(fit or Fit(), margin=opts.margin)
-    plan = plan_drawing(file, the_sheet, fit, opts.tolerance)
     rig = make_rig(arm.model, scene, the_sheet, the_pen, opts)
     q0 = arm.driver.read()
     segments: list[Segment] = []
@@ -147,6 +144,26 @@ def plan_draw(
         segments += put_pen(rig, stand, the_pen, end_q(segments, q0), opts.clearance)
     plan = replace(plan, strokes=tuple(r.uv for r in runs), notes=plan.notes + note)
     return DrawJob(plan, the_sheet, the_pen, tuple(segments), q0, rig.tip, scene.T_world_base, opts)
+
+
+def plan_on_sheet(
+    scene: Scene,
+    file: str | Path,
+    sheet: str | None = None,
+    pen: str | None = None,
+    *,
+    options: DrawOptions | None = None,
+    fit: Fit | None = None,
+) -> DrawingPlan:
+    """The part of ``plan_draw`` no arm is needed for, refused the same way: the sheet
+    and the pen of the scene, the pen's stand (unless ``held``), and the file planned on
+    the sheet (DrawingError: nothing to draw, everything off the sheet, ...). The
+    script's ``draw`` is checked with it."""
+    opts = (options or DrawOptions()).check()
+    the_sheet, the_pen = find_sheet(scene, sheet), find_pen(scene, pen)
+    if stand_of(scene, the_pen) is None and not opts.held:
+        raise DrawingError(f"no stand in scene {scene.name} holds {the_pen.name}; use held")
+    return plan_drawing(file, the_sheet, replace(fit or Fit(), margin=opts.margin), opts.tolerance)
 
 
 def _reachable(rig: Rig, plan: DrawingPlan, q: F64, arm: str) -> tuple[list[Run], tuple[str, ...]]:

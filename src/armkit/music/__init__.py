@@ -8,7 +8,10 @@ notes it cannot reach in time. Contacts (time, note, speed) become a WAV file
 and onset-error statistics. ``play(arm, scene, file, on, tempo, transpose)`` is
 the job (``armkit play``, the script's ``play``): planned and checked whole, then
 sent at the planned times; in the simulator a ``Listener`` on the arm's World
-hears every contact the mallet makes.
+hears every contact the mallet makes. ``plan_play(model, scene, file, ...)`` plans and
+checks the same job on a model alone (``armkit check``). A tempo factor is
+``MIN_TEMPO..MAX_TEMPO`` everywhere; a piece too fast is refused with the fastest tempo
+the planner plays it at.
 """
 
 from ._latency import LatencyError as LatencyError
@@ -46,8 +49,10 @@ from ._play import Played as Played
 from ._play import check_tempo as check_tempo
 from ._play import check_transpose as check_transpose
 from ._play import instruments as instruments
+from ._play import plan_play as plan_play
 from ._play import play as play
 from ._play import prepare as prepare
+from ._play import score_on as score_on
 from ._plot import PLOT_SUFFIXES as PLOT_SUFFIXES
 from ._plot import plot_onsets as plot_onsets
 from ._predict import JointProfile as JointProfile
@@ -59,11 +64,14 @@ from ._predict import time_based_predictor as time_based_predictor
 from ._predict import timed_predictor as timed_predictor
 from ._predict import trapezoid_predictor as trapezoid_predictor
 from ._rtttl import parse_rtttl as parse_rtttl
+from ._score import MAX_TEMPO as MAX_TEMPO
+from ._score import MIN_TEMPO as MIN_TEMPO
 from ._score import Note as Note
 from ._score import Score as Score
 from ._score import ScoreError as ScoreError
 from ._score import note_name as note_name
 from ._score import parse_pitch as parse_pitch
+from ._score import tempo_range as tempo_range
 from ._strike import StrikeParams as StrikeParams
 from ._strike import StrikePoses as StrikePoses
 from ._synth import frequency as frequency

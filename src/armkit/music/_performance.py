@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 from numpy.typing import NDArray
@@ -14,7 +16,7 @@ from ..model import ArmModel
 from ._layout import Target
 from ._onsets import Contact
 from ._predict import JointProfile
-from ._score import Note
+from ._score import MIN_TEMPO, Note
 from ._strike import StrikePoses
 
 F64 = NDArray[np.float64]
@@ -82,12 +84,20 @@ class Problem:
         return f"{head}: {self.reason}" + (f" ({self.detail})" if self.detail else "")
 
 
-class PerformanceError(ArmkitError):
-    """A piece the arm cannot play; ``problems`` lists every note."""
+# Problems a slower tempo can solve: a note too soon after the last, a travel that
+# had to stay low; an unreachable note stays unreachable at any tempo.
+TEMPO_REASONS = ("too soon", "low travel")
 
-    def __init__(self, message: str, problems: tuple[Problem, ...]) -> None:
+
+class PerformanceError(ArmkitError):
+    """A piece the arm cannot play; ``problems`` lists every note, ``tempo`` is the
+    fastest tempo factor the planner found it plays at (None: none)."""
+
+    def __init__(
+        self, message: str, problems: tuple[Problem, ...], tempo: float | None = None
+    ) -> None:
         super().__init__(message)
-        self.problems = problems
+        self.problems, self.tempo = problems, tempo
 
 
 @dataclass(frozen=True)
@@ -102,6 +112,8 @@ class Performance:
         model: the arm with the stick as its tool.
         source: the score's file.
         tempo: the tempo factor it was planned at (1 = as written).
+        replan: the same plan at another tempo factor (``plan_performance`` sets it;
+            None: cannot be planned again), what ``suggested_tempo`` tries tempi with.
     """
 
     strikes: tuple[Strike, ...]
@@ -111,16 +123,32 @@ class Performance:
     model: ArmModel
     source: str = ""
     tempo: float = 1.0
+    replan: Callable[[float], Performance] | None = field(default=None, compare=False, repr=False)
 
-    @property
+    @cached_property
     def suggested_tempo(self) -> float | None:
-        """A tempo factor (two decimals, rounded down) at which every late note would
-        have the time it needs at its present hover; None if no note is late. A
-        slower piece may choose higher hovers, so check the new plan too."""
-        ratios = [p.available / p.needed for p in self.problems if p.available and p.needed]
-        if not ratios:
+        """The fastest tempo factor below this one (in hundredths) at which the planner
+        plays every note in time (``fastest_tempo`` with ``replan``); None if no note is
+        late, a note is unreachable at any tempo, not even ``MIN_TEMPO`` plays, or the
+        plan cannot be made again (``replan`` None)."""
+        return self.fitting_tempo()
+
+    def fitting_tempo(self, plays: Callable[[Performance], bool] | None = None) -> float | None:
+        """``suggested_tempo``, a plan at a tempo passing ``plays`` too (the job's own
+        checks, such as the scene's clearance)."""
+        again = self.replan
+        if again is None or not self.problems:
             return None
-        return max(math.floor(self.tempo * min(ratios) * 100) / 100, 0.1)
+        if any(p.reason not in TEMPO_REASONS for p in self.problems):
+            return None
+
+        def fits(tempo: float) -> bool:
+            perf = again(tempo)
+            return perf.feasible and (plays is None or plays(perf))
+
+        ratios = [p.available / p.needed for p in self.problems if p.available and p.needed]
+        guess = self.tempo * min(ratios) if ratios else None
+        return fastest_tempo(fits, self.tempo, guess)
 
     @property
     def feasible(self) -> bool:
@@ -132,20 +160,61 @@ class Performance:
         return tuple(s.contact() for s in self.strikes)
 
 
-def check_performance(performance: Performance) -> None:
-    """PerformanceError listing every note that cannot be played, or nothing."""
+def fastest_tempo(
+    plays: Callable[[float], bool], below: float, guess: float | None = None
+) -> float | None:
+    """The fastest tempo factor under ``below``, in hundredths, at which ``plays`` (the
+    planner's own test), by bisection on the hundredths ``MIN_TEMPO``.. ``below``, the
+    first try at ``guess`` (rounded down; an estimate saves tries); None if not even
+    ``MIN_TEMPO`` plays. Only a tempo tried and played is returned."""
+    lo, hi = round(MIN_TEMPO * 100), math.ceil(round(below * 100, 6)) - 1
+    best = None
+    probe = None if guess is None else math.floor(round(guess * 100, 6))
+    while lo <= hi:
+        mid = probe if probe is not None and lo <= probe <= hi else (lo + hi + 1) // 2
+        probe = None
+        if plays(mid / 100):
+            best, lo = mid, mid + 1
+        else:
+            hi = mid - 1
+    return None if best is None else best / 100
+
+
+def written_tempo(tempo: float, script: bool = False) -> str:
+    """A tempo factor as the user writes it: ``--tempo 0.46``, in a script ``tempo 46%``."""
+    return f"tempo {tempo * 100:.6g}%" if script else f"--tempo {tempo:.6g}"
+
+
+def check_performance(
+    performance: Performance,
+    plays: Callable[[Performance], bool] | None = None,
+    *,
+    script: bool = False,
+) -> None:
+    """PerformanceError listing every note that cannot be played, or nothing. When a
+    slower tempo helps, it names the fastest one the planner plays the piece at (and
+    that passes ``plays``, the job's other checks), written as on the command line
+    (``--tempo 0.46``) or, with ``script``, as in a script (``tempo 46%``)."""
     problems = performance.problems
     if not problems:
         return
     listed = "; ".join(str(p) for p in problems)
-    tempo = performance.suggested_tempo
-    slower = f"--tempo {tempo}" if tempo is not None else "--tempo below 1"
+    tempo = performance.fitting_tempo(plays) if plays is not None else performance.suggested_tempo
+    remedy = "lower the hover or move the instrument closer"
+    if tempo is not None:
+        advice = f"slow the piece down ({written_tempo(tempo, script)} plays it), {remedy}"
+    elif any(p.reason not in TEMPO_REASONS for p in problems):
+        advice = f"no tempo brings a note into reach: {remedy}"
+    elif performance.replan is not None:
+        advice = f"not even {written_tempo(MIN_TEMPO, script)} is slow enough: {remedy}"
+    else:
+        advice = f"slow the piece down (below {written_tempo(performance.tempo, script)}), {remedy}"
     raise PerformanceError(
         f"{len({id(p.note) for p in problems})} of "
         f"{count(len(performance.strikes) + _unstruck(problems), 'note')} of "
-        f"{performance.source or 'the piece'} cannot be played: {listed}; slow the piece "
-        f"down ({slower}), lower the hover or move the instrument closer",
+        f"{performance.source or 'the piece'} cannot be played: {listed}; {advice}",
         problems,
+        tempo,
     )
 
 

@@ -17,14 +17,15 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._errors import UnreachableError
+from .._errors import InputError, UnreachableError
+from .._inputs import array, joints, shown, tolerance
 from ..model import ArmModel
-from ._layout import Instrument, Target, map_notes
+from ._layout import Bars, DrumLike, Instrument, Target, map_notes
 from ._listen import Surface, height_over, surfaces
 from ._onsets import LatencyTable
 from ._performance import Move, Performance, Problem, Strike
 from ._predict import JointProfile, Predictor, Rebound, rebound_of
-from ._score import Score
+from ._score import Score, tempo_factor
 from ._strike import StrikeParams, StrikePoses, contact, strike_poses, tip_path
 
 F64 = NDArray[np.float64]
@@ -107,20 +108,80 @@ def plan_performance(
             with its duration, no slower ramp than the time allows), default ``predictor``'s.
 
     Returns:
-        The Performance; ``check_performance`` refuses it if any note is infeasible.
+        The Performance; ``check_performance`` refuses it if any note is infeasible
+        (its ``replan(tempo)`` is this plan at another tempo).
+
+    Raises:
+        InputError: an argument of the wrong kind (named), before anything is planned.
+        RangeError: a note no instrument of ``layout`` plays.
     """
-    arm = model.with_tool_length(tool_length) if tool_length is not None else model
+    _check_arguments(score, layout, model, predictor, rebound, params, latency)
+    factor = tempo_factor(tempo)
+    arm = (
+        model
+        if tool_length is None
+        else model.with_tool_length(tolerance(tool_length, "tool_length"))
+    )
     p = params or StrikeParams()
     delays = latency or LatencyTable()
-    T = np.eye(4) if T_world_base is None else np.asarray(T_world_base, dtype=np.float64)
+    T = np.eye(4) if T_world_base is None else array(T_world_base, "T_world_base", ((4, 4),), "m")
     T_base_world = np.linalg.inv(T)
-    begin = arm.home if start is None else np.asarray(start, dtype=np.float64).reshape(arm.dof)
+    begin = arm.home if start is None else joints(start, arm.dof, "start", batch=False)
     cursor = _Cursor(begin, -np.inf, _Stage(surfaces(layout), T))
     servos = _Servos(predictor, rebound or rebound_of(predictor))
-    for target in map_notes(score.at_tempo(tempo) if tempo != 1.0 else score, layout):
+    for target in map_notes(score.at_tempo(factor) if factor != 1.0 else score, layout):
         point = (T_base_world @ np.append(target.point, 1.0))[:3]
         _plan_note(arm, servos, p, target, point, delays.of(target.key), cursor)
-    return _shifted(cursor, arm, score.source, tempo)
+
+    def replan(at: float) -> Performance:
+        return plan_performance(
+            score, layout, model, predictor, tool_length=tool_length, params=params,
+            latency=latency, start=start, T_world_base=T_world_base, tempo=at, rebound=rebound,
+        )  # fmt: skip
+
+    return replace(_shifted(cursor, arm, score.source, factor), replan=replan)
+
+
+def _check_arguments(
+    score: object,
+    layout: object,
+    model: object,
+    predictor: object,
+    rebound: object,
+    params: object,
+    latency: object,
+) -> None:
+    """InputError naming the first argument of ``plan_performance`` of the wrong kind."""
+    if not isinstance(score, Score):
+        raise InputError(
+            f"score must be a Score (load_score, parse_notelist, ...), got {shown(score)}"
+        )
+    if not isinstance(layout, (tuple, list)) or not all(
+        isinstance(i, (Bars, DrumLike)) for i in layout
+    ):
+        one = (
+            " (one instrument: write (instrument,))" if isinstance(layout, (Bars, DrumLike)) else ""
+        )
+        raise InputError(
+            "layout must be a tuple or list of xylophones and drums (armkit.scene's Xylophone "
+            f"and Drum, a scene's instruments){one}, got {shown(layout)}"
+        )
+    if not isinstance(model, ArmModel):
+        raise InputError(f"model must be an ArmModel (armkit.load_model), got {shown(model)}")
+    if not callable(predictor):
+        raise InputError(
+            "predictor must be the servos' motion model, a function (q0, q1, speed) -> "
+            f"JointProfile (time_based_predictor(model), ...), got {shown(predictor)}"
+        )
+    if rebound is not None and not callable(rebound):
+        raise InputError(
+            "rebound must be None or a function (q0, q1, speed, around) -> JointProfile "
+            f"(timed_predictor(model)), got {shown(rebound)}"
+        )
+    if params is not None and not isinstance(params, StrikeParams):
+        raise InputError(f"params must be None or a StrikeParams, got {shown(params)}")
+    if latency is not None and not isinstance(latency, LatencyTable):
+        raise InputError(f"latency must be None or a LatencyTable, got {shown(latency)}")
 
 
 @dataclass(frozen=True)

@@ -12,22 +12,24 @@ contact, so what was played can be compared with the plan.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from numpy.typing import ArrayLike
+
 from .._errors import InputError, UnreachableError
+from .._inputs import shown
 from ..model import ArmModel
-from ._layout import Instrument, RangeError
+from ._layout import Instrument, RangeError, map_notes
 from ._listen import Listener
 from ._load import load_score
 from ._onsets import Contact, LatencyTable, OnsetStats, onset_stats
 from ._performance import Performance, check_performance
 from ._plan import plan_performance
-from ._score import Score
-from ._servos import is_hobby, predictor_for
+from ._score import Score, tempo_factor
+from ._servos import SERVO_LAG, is_hobby, model_servos, predictors, servo_kind
 from ._strike import StrikeParams
 
 if TYPE_CHECKING:
@@ -78,7 +80,7 @@ def play(
             much longer it makes the tool [m]).
         scene: the instruments (``armkit.scene``), in the scene frame.
         file: the score (a file, or a Score).  on: play on this instrument only.
-        tempo: speed factor (0.8 = 80 %, slower), default 1.
+        tempo: speed factor, ``MIN_TEMPO..MAX_TEMPO`` (0.8 = 80 %, slower), default 1.
         transpose: semitones to move pitched notes by, default 0.
         dry_run: plan and check only; nothing moves.
         latency: per-bar delays [s] from a calibration run (default: the servos' lag,
@@ -89,7 +91,7 @@ def play(
         ScoreError, RangeError, PerformanceError, UnreachableError, InputError: the
             piece cannot be played as asked; nothing has moved.
     """
-    table = latency or LatencyTable(default=predictor_for(arm, arm.model)[2])
+    table = latency or LatencyTable(default=SERVO_LAG[servo_kind(arm)])
     performance = prepare(arm, scene, file, on, tempo, transpose, table, params)
     if dry_run:
         return Played(performance, latency=table)
@@ -106,55 +108,107 @@ def prepare(
     latency: LatencyTable | None = None,
     params: StrikeParams | None = None,
 ) -> Performance:
-    """Plan and check the whole piece (see ``play``); the Performance to send."""
-    factor = check_tempo(tempo)
-    shift = check_transpose(transpose)
-    layout = instruments(scene, on)
-    score = file.transposed(shift) if isinstance(file, Score) else load_score(file, shift)
-    model = mallet_model(arm.model, scene)
-    predictor, rebound, lag, lead = predictor_for(arm, model)
-    start = arm.driver.read()
-    try:
-        perf = plan_performance(
-            score,
-            layout,
-            model,
-            predictor,
-            params=params or StrikeParams(rebound_delay=lag - lead),
-            latency=latency or LatencyTable(default=lag),
-            start=start,
-            T_world_base=scene.T_world_base,
-            tempo=factor,
-            rebound=rebound,
-        )
-    except RangeError as err:
-        raise _in_all(err, shift) from None
-    check_performance(perf)
-    check_moves(perf, scene)
+    """Plan and check the whole piece (see ``play``) from where the arm is: ``plan_play``
+    with its model, its servos and its joints now; the Performance to send."""
+    check_tempo(tempo)
+    check_transpose(transpose)
+    instruments(scene, on)
+    kind = servo_kind(arm)
+    return plan_play(
+        arm.model, scene, file, on, tempo, transpose,
+        servos=kind, start=arm.driver.read(), latency=latency, params=params,
+    )  # fmt: skip
+
+
+def plan_play(
+    model: ArmModel,
+    scene: Scene,
+    file: str | Path | Score,
+    on: str | None = None,
+    tempo: float | None = None,
+    transpose: int | None = None,
+    *,
+    servos: str | None = None,
+    start: ArrayLike | None = None,
+    latency: LatencyTable | None = None,
+    params: StrikeParams | None = None,
+    script: bool = False,
+) -> Performance:
+    """The ``play`` job planned and checked whole on an arm known by its model alone:
+    what ``play`` refuses before it moves, refused the same way (``armkit check`` plans a
+    script's ``play`` so). Nothing moves; no arm is needed.
+
+    Args:
+        model: the arm's model (the scene's mallet lengthens its tool).
+        servos: ``"dynamixel"`` or ``"hobby"`` (default: by the model's drivers).
+        start: the arm's joints when the piece starts [rad] (default: home).
+        script: errors say a tempo and a transposition as a script writes them
+            (``tempo 46%``, ``transpose 12``) rather than ``--tempo 0.46``.
+        The rest as ``play``.
+
+    Raises:
+        ScoreError, RangeError, PerformanceError (every late note, and the fastest tempo
+            the planner plays the piece at), UnreachableError, InputError.
+    """
+    factor = check_tempo(tempo, script=script)
+    score, layout = score_on(scene, file, on, transpose, script=script)
+    mallet = mallet_model(model, scene)
+    predictor, rebound, lag, lead = predictors(servos or model_servos(model), mallet)
+    perf = plan_performance(
+        score, layout, mallet, predictor,
+        params=params or StrikeParams(rebound_delay=lag - lead),
+        latency=latency or LatencyTable(default=lag), start=start,
+        T_world_base=scene.T_world_base, tempo=factor, rebound=rebound,
+    )  # fmt: skip
+    check_performance(perf, lambda p: collision(p, scene) is None, script=script)
+    hit = collision(perf, scene)
+    if hit is not None:
+        raise hit
     return perf
 
 
-def _in_all(err: RangeError, shift: int) -> RangeError:
-    """``err`` of a score already moved by ``shift`` semitones, its hint the total."""
-    if not shift or err.transpose is None:
+def score_on(
+    scene: Scene,
+    file: str | Path | Score,
+    on: str | None = None,
+    transpose: int | None = None,
+    *,
+    script: bool = False,
+) -> tuple[Score, Sequence[Instrument]]:
+    """The score, transposed, and the instruments it is played on; RangeError if a note
+    is on none of them (with a transposition in all that fits, as ``--transpose N``, or
+    with ``script`` as ``transpose N``)."""
+    shift = check_transpose(transpose)
+    layout = instruments(scene, on)
+    score = file.transposed(shift) if isinstance(file, Score) else load_score(file, shift)
+    try:
+        map_notes(score, layout)
+    except RangeError as err:
+        raise _in_all(err, shift, script) from None
+    return score, layout
+
+
+def _in_all(err: RangeError, shift: int, script: bool) -> RangeError:
+    """``err`` of a score already moved by ``shift`` semitones, its hint the total (none
+    at all: as written), written as ``--transpose N`` or, in a script, ``transpose N``."""
+    if err.transpose is None or not (shift or script):
         return err
     told, total = err.transpose, shift + err.transpose
-    message = str(err).replace(
-        f"transpose by {told} semitones (--transpose {told})",
-        f"transpose by {total} semitones in all (--transpose {total})",
-    )
+    option = "transpose" if script else "--transpose"
+    if total == 0:
+        hint = "as written every note fits: leave the transposition out"
+    elif shift:
+        hint = f"transpose by {total} semitones in all ({option} {total})"
+    else:
+        hint = f"transpose by {total} semitones ({option} {total})"
+    message = str(err).replace(f"transpose by {told} semitones (--transpose {told})", hint)
     return RangeError(message, err.notes, total)
 
 
-def check_tempo(tempo: float | None) -> float:
-    """The tempo factor (None: 1.0), 0.1..4; else InputError."""
-    if tempo is None:
-        return 1.0
-    if not (isinstance(tempo, (int, float)) and math.isfinite(tempo) and 0.1 <= tempo <= 4.0):
-        raise InputError(
-            f"tempo must be a factor 0.1..4 (10 %..400 % of the written speed), got {tempo!r}"
-        )
-    return float(tempo)
+def check_tempo(tempo: float | None, *, script: bool = False) -> float:
+    """The tempo factor (None: 1.0), ``MIN_TEMPO..MAX_TEMPO``; else InputError showing
+    the tempo as given (with ``script``, in %: a script's ``tempo 45%``)."""
+    return 1.0 if tempo is None else tempo_factor(tempo, percent=script)
 
 
 def check_transpose(transpose: int | None) -> int:
@@ -163,7 +217,7 @@ def check_transpose(transpose: int | None) -> int:
         return 0
     if isinstance(transpose, bool) or not isinstance(transpose, int) or abs(transpose) > 48:
         raise InputError(
-            f"transpose must be a whole number of semitones -48..48, got {transpose!r}"
+            f"transpose must be a whole number of semitones -48..48, got {shown(transpose)}"
         )
     return transpose
 
@@ -195,17 +249,25 @@ def mallet_model(model: ArmModel, scene: Scene) -> ArmModel:
 def check_moves(perf: Performance, scene: Scene) -> None:
     """UnreachableError naming the note if a pose of the piece puts a link into the
     table or a scene object (the mallet's own stroke through the bar excepted)."""
+    hit = collision(perf, scene)
+    if hit is not None:
+        raise hit
+
+
+def collision(perf: Performance, scene: Scene) -> UnreachableError | None:
+    """``check_moves``'s refusal, or None."""
     from ..scene import check_clear
 
     for move in perf.moves:
         hit = check_clear(perf.model, move.q, scene)
         if hit is not None:
             note = perf.strikes[move.strike].target.note
-            raise UnreachableError(
+            return UnreachableError(
                 f"{note.name} at {note.onset:.3f} s: the {move.kind} pose puts "
                 f"{hit.describe()}; move the instrument or raise it",
                 reason="collision",
             )
+    return None
 
 
 def perform(arm: Arm, scene: Scene, perf: Performance) -> Played:

@@ -8,12 +8,20 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from numbers import Integral
 
 from .._errors import ArmkitError, InputError
+from .._inputs import is_number, shown
 from ..scene import note_name as note_name
 from ..scene import note_number
 
 MAX_SECONDS = 3600.0  # the longest piece armkit plays [s]
+# The tempo factors armkit plays a piece at (1 = as written), everywhere: ``--tempo``,
+# a script's ``tempo P%``, ``play``, ``plan_performance`` and ``Score.at_tempo``. A
+# tenth of the written speed is as slow as a piece stays a piece; 4 times is beyond
+# what a servo arm strikes in time for any tune written to be played (the shipped ones
+# are refused from about 1.2).
+MIN_TEMPO, MAX_TEMPO = 0.1, 4.0
 
 
 class ScoreError(ArmkitError, ValueError):
@@ -38,6 +46,19 @@ class ScoreError(ArmkitError, ValueError):
         """An error about the whole file (line and column 0, no token): ``file: problem``."""
         err = cls(file, 0, 0, "", problem)
         err.args = (f"{file}: {problem}",)
+        return err
+
+    @classmethod
+    def of_note(cls, file: str, note: Note, problem: str) -> ScoreError:
+        """An error about ``note``, at the place it was written (``note.where``:
+        ``file:line:column``, or a MIDI file's ``file: message N``; the file if not known)."""
+        head, line, column = note.where or file, 0, 0
+        place = note.where.rsplit(":", 2)
+        if len(place) == 3 and place[1].isdigit() and place[2].isdigit():
+            head, line, column = place[0], int(place[1]), int(place[2])
+            return cls(head, line, column, note.name, problem)
+        err = cls(file, 0, 0, note.name, problem)
+        err.args = (f"{head}: {problem} (at {note.name!r})",)
         return err
 
 
@@ -85,29 +106,59 @@ class Score:
         return max((n.onset + n.duration for n in self.notes), default=0.0)
 
     def transposed(self, semitones: int) -> Score:
-        """Every pitched note moved by ``semitones`` (drums stay); ScoreError if a note
-        leaves the MIDI range 0..127."""
-        moved = []
-        for n in self.notes:
-            pitch = n.pitch if n.drum else n.pitch + semitones
-            if not 0 <= pitch <= 127:
-                raise ScoreError(
-                    self.source, 0, 0, n.name, f"transposing by {semitones} leaves the MIDI range"
+        """Every pitched note moved by ``semitones`` (drums stay). InputError unless it
+        is a whole number; ScoreError at the first note it moves out of the MIDI range
+        0..127, naming where the note is written and the shifts that keep every note in."""
+        if isinstance(semitones, bool) or not isinstance(semitones, Integral):
+            raise InputError(
+                f"semitones must be a whole number (12 = an octave up), got {shown(semitones)}"
+            )
+        shift = int(semitones)
+        pitched = [n for n in self.notes if not n.drum]
+        for n in pitched:
+            if not 0 <= n.pitch + shift <= 127:
+                low = -min(m.pitch for m in pitched)
+                high = 127 - max(m.pitch for m in pitched)
+                raise ScoreError.of_note(
+                    self.source,
+                    n,
+                    f"transposing by {shift} moves {n.name} (MIDI {n.pitch}) to MIDI "
+                    f"{n.pitch + shift}, outside the MIDI range 0..127; {low}..{high} keeps every note in",
                 )
-            moved.append(replace(n, pitch=pitch))
-        return Score(tuple(moved), self.source)
+        moved = tuple(n if n.drum else replace(n, pitch=n.pitch + shift) for n in self.notes)
+        return Score(moved, self.source)
 
     def at_tempo(self, factor: float) -> Score:
         """The piece played ``factor`` times as fast (2.0 = twice the tempo): every
-        onset and length divided by ``factor``. ValueError unless 0.1 <= factor <= 10."""
-        if not (math.isfinite(factor) and 0.1 <= factor <= 10.0):
-            raise InputError(f"tempo factor must be 0.1..10 (1 = as written), got {factor}")
+        onset and length divided by ``factor``. InputError unless it is a number in
+        ``MIN_TEMPO..MAX_TEMPO`` (``tempo_factor``)."""
+        factor = tempo_factor(factor)
         return Score(
             tuple(
                 replace(n, onset=n.onset / factor, duration=n.duration / factor) for n in self.notes
             ),
             self.source,
         )
+
+
+def tempo_factor(value: object, *, percent: bool = False) -> float:
+    """``value`` as a tempo factor, ``MIN_TEMPO..MAX_TEMPO`` (1 = as written); else
+    InputError, the one message for every way a tempo is given, the value shown as it
+    was written: a factor, or with ``percent`` in % (a script's ``tempo 45%``)."""
+    if is_number(value) and math.isfinite(float(value)):  # type: ignore[arg-type]
+        factor = float(value)  # type: ignore[arg-type]
+        if MIN_TEMPO <= factor <= MAX_TEMPO:
+            return factor
+        got = f"{factor * 100:.6g}%" if percent else f"{factor:.6g}"
+    else:
+        got = shown(value)
+    raise InputError(f"tempo must be {tempo_range()} of the written speed, got {got}")
+
+
+def tempo_range() -> str:
+    """The tempo range as every message and help text says it: ``a factor 0.1..4
+    (10%..400%)``."""
+    return f"a factor {MIN_TEMPO:g}..{MAX_TEMPO:g} ({MIN_TEMPO * 100:g}%..{MAX_TEMPO * 100:g}%)"
 
 
 def make_score(notes: list[Note], source: str) -> Score:

@@ -39,6 +39,7 @@ SERVO_LAG = {"dynamixel": 0.010, "hobby": 0.025}
 # from the base) turned 0.01 mm above or below the top and were missed or heard at a
 # tenth of their speed; sent on time the head goes 0.5-0.8 mm through (33-35 ms below).
 REBOUND_LEAD = {"dynamixel": 0.002, "hobby": 0.0}
+HOBBY_DRIVERS = ("ssc32", "maestro")  # a model's drivers that move hobby servos
 
 
 @runtime_checkable
@@ -62,21 +63,48 @@ def predictor_for(arm: Arm, model: ArmModel) -> tuple[Predictor, Rebound, float,
     import the drivers), of their rebound (on Dynamixels a profile sent with its
     duration: Profile Velocity and Acceleration set per strike), their lag [s] and
     the ``REBOUND_LEAD`` [s]; InputError for a driver that cannot time its moves."""
+    return predictors(servo_kind(arm), model)
+
+
+def servo_kind(arm: Arm) -> str:
+    """``"dynamixel"`` or ``"hobby"``: the arm's servos, by its driver's methods;
+    InputError for a driver that cannot time its moves."""
     if isinstance(arm.driver, _ProfileServos):
-        kind = "dynamixel"
+        return "dynamixel"
+    if isinstance(arm.driver, _GroupMoveServos):
+        return "hobby"
+    raise InputError(
+        f"playing needs servos that time their moves (Dynamixel, SSC-32 or Maestro); the "
+        f"{arm.model.name}'s {type(arm.driver).__name__} cannot land a strike on the beat"
+    )
+
+
+def model_servos(model: ArmModel) -> str:
+    """``"dynamixel"`` or ``"hobby"``: the servos of an arm known only by its model (its
+    drivers, as the model file lists them: what ``armkit check`` plans a piece with);
+    InputError for an arm with neither."""
+    if "dynamixel" in model.drivers:
+        return "dynamixel"
+    if any(name in model.drivers for name in HOBBY_DRIVERS):
+        return "hobby"
+    raise InputError(
+        f"playing needs servos that time their moves (Dynamixel, SSC-32 or Maestro); the "
+        f"{model.name}'s drivers ({', '.join(model.drivers) or 'none'}) cannot land a strike "
+        "on the beat"
+    )
+
+
+def predictors(kind: str, model: ArmModel) -> tuple[Predictor, Rebound, float, float]:
+    """``predictor_for`` of servos of ``kind`` (``servo_kind``, ``model_servos``)."""
+    if kind == "dynamixel":
         return (
             time_based_predictor(model),
             timed_predictor(model),
             SERVO_LAG[kind],
             REBOUND_LEAD[kind],
         )
-    if isinstance(arm.driver, _GroupMoveServos):
-        group = group_move_predictor(model)
-        return group, rebound_of(group), SERVO_LAG["hobby"], REBOUND_LEAD["hobby"]
-    raise InputError(
-        f"playing needs servos that time their moves (Dynamixel, SSC-32 or Maestro); the "
-        f"{arm.model.name}'s {type(arm.driver).__name__} cannot land a strike on the beat"
-    )
+    group = group_move_predictor(model)
+    return group, rebound_of(group), SERVO_LAG["hobby"], REBOUND_LEAD["hobby"]
 
 
 def is_hobby(arm: Arm) -> bool:

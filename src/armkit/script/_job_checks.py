@@ -15,9 +15,13 @@ import inspect
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from .._errors import ArmkitError, InputError
 from ..scene import Scene
+
+if TYPE_CHECKING:
+    from ..tasks import Start
 
 
 class JobArgProblem(InputError):
@@ -103,8 +107,10 @@ def search(
 
 
 def draw(scene: Scene, file: Path, sheet: str | None = None, pen: str | None = None) -> None:
-    """``drawing.draw``: the sheet and the pen of the scene, and the file as it reads it."""
-    from ..drawing import find_pen, find_sheet, read_drawing
+    """``drawing.draw``: the sheet and the pen of the scene, then the file planned on the
+    sheet as the job plans it before it moves (``drawing.plan_on_sheet``: a file with
+    nothing to draw is refused here, not after the moves before it)."""
+    from ..drawing import find_pen, find_sheet, plan_on_sheet, read_drawing
 
     with _about("sheet"):
         find_sheet(scene, sheet)
@@ -112,6 +118,8 @@ def draw(scene: Scene, file: Path, sheet: str | None = None, pen: str | None = N
         find_pen(scene, pen)
     with _about("file"):
         read_drawing(file)
+    with _about():
+        plan_on_sheet(scene, file, sheet, pen)
 
 
 def play(
@@ -120,15 +128,27 @@ def play(
     on: str | None = None,
     tempo: float | None = None,
     transpose: int | None = None,
+    *,
+    arm: Start | None = None,
 ) -> None:
-    """``music.play``: tempo, transpose, the instrument, and the score as it reads it."""
-    from ..music import check_tempo, check_transpose, instruments, load_score
+    """``music.play``: tempo, transpose, the instrument, the score as it reads it and
+    every note on a bar or drum (``music.score_on``); given the arm as the checker knows
+    it (``arm``: its model and joints, as the tasks plan with), the whole piece planned and checked as ``play``
+    plans it before it moves (``music.plan_play``: every note in reach and in time, or
+    the notes that are not, why, and the fastest tempo that plays them). Tempi and
+    transpositions are said as the script writes them (``tempo 46%``)."""
+    from ..music import check_tempo, check_transpose, instruments, load_score, plan_play, score_on
 
     with _about("tempo"):
-        check_tempo(tempo)
+        check_tempo(tempo, script=True)
     with _about("transpose"):
         shift = check_transpose(transpose)
     with _about("on"):
         instruments(scene, on)
     with _about("file"):
         load_score(file, shift)
+    with _about():
+        score_on(scene, file, on, transpose, script=True)
+    if arm is not None:
+        with _about():
+            plan_play(arm.model, scene, file, on, tempo, transpose, start=arm.q, script=True)
