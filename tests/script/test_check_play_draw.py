@@ -35,11 +35,6 @@ TEXT_SVG = (
 LATE = (
     "6 of 9 notes of t.txt cannot be played: E5 at 0.500 s: 0.500 s after the previous note, needs"
 )
-# the planning of a play from the pose the checker knows needs the walker to pass it:
-# src/armkit/script/_walk.py's _check_job gives a check taking ``arm`` a tasks.Start
-NEEDS_WALKER = pytest.mark.xfail(
-    strict=True, reason="the walker does not pass the arm (arm=) to a job's check yet"
-)
 
 
 def _errors(tmp_path: Path, text: str) -> list[tuple[int, int, str]]:
@@ -72,7 +67,6 @@ def test_the_play_check_plans_the_piece_from_the_arm_as_the_checker_knows_it(
     check_play(scene, tmp_path / "t.txt", tempo=1.0)  # no arm known: arguments only
 
 
-@NEEDS_WALKER
 @pytest.mark.parametrize("job", ["play t.txt tempo 100%", "play t.txt tempo 70%"])
 def test_a_piece_too_fast_for_the_arm_is_an_error_at_its_line(tmp_path: Path, job: str) -> None:
     errors = _errors(tmp_path, _script(job))
@@ -81,7 +75,6 @@ def test_a_piece_too_fast_for_the_arm_is_an_error_at_its_line(tmp_path: Path, jo
     assert "plays it)" in errors[0][2]
 
 
-@NEEDS_WALKER
 def test_run_refuses_a_piece_too_fast_before_the_first_move(tmp_path: Path) -> None:
     (tmp_path / "t.txt").write_text(TUNE)
     world = World()

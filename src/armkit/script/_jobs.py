@@ -80,7 +80,8 @@ class JobSpec:
     ``function(scene, **arguments)``; None: none), words it refuses with why
     (``refused``: word -> message), and whether the function plans the job whole
     before it moves and can plan it from a model and joints alone (``plans``: given an
-    ``armkit.tasks.Start``), so that ``armkit check`` plans it too."""
+    ``armkit.tasks.Start``), so that ``armkit check`` plans it too; ``check_plans``: its
+    check plans it, given the arm as the check knows it (``arm=tasks.Start``)."""
 
     params: tuple[JobParam, ...]
     call: str
@@ -88,6 +89,7 @@ class JobSpec:
     check: str | None = None
     refused: tuple[tuple[str, str], ...] = ()
     plans: bool = False
+    check_plans: bool = False
 
     def usage(self, command: str) -> str:
         """``move-item ITEM to WHERE``."""
@@ -183,6 +185,7 @@ JOBS: dict[str, JobSpec] = {
         "armkit.music:play",
         "play a MIDI, RTTTL or note-list tune on the scene's instrument",
         check=f"{CHECKS}:play",
+        check_plans=True,
     ),
 }
 

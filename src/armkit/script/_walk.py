@@ -144,8 +144,14 @@ class Walker:
         values = [*args.values(), *(v for a in args.values() if isinstance(a, tuple) for v in a)]
         if check is None or scene is None or any(v is None for v in values):
             return
+        arm = {}
+        if JOBS[s.command].check_plans:  # planned from the arm as the check knows it
+            from ..tasks import Start
+
+            model, here = self.resolver.model, self.backend.here()
+            arm["arm"] = Start(model, model.home if here is None else here.q)
         try:
-            check(scene, **as_called(args))
+            check(scene, **as_called(args), **arm)
         except JobArgProblem as exc:
             at = [a.loc for name in exc.names for a in s.args if a.name == name]
             raise Fail(at[0] if at else s.loc, str(exc)) from None
