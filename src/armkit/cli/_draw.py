@@ -73,7 +73,11 @@ def in_plane(
 def _options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--sheet", metavar="NAME", help="the scene's sheet (default: its only one)")
     p.add_argument("--pen", metavar="NAME", help="the scene's pen (default: its only one)")
-    p.add_argument("--held", action="store_true", help="the pen is in the gripper already")
+    p.add_argument(
+        "--held",
+        action="store_true",
+        help="the pen is in the gripper already (on the simulator: taken to be, the stand's pen not used)",
+    )
     p.add_argument("--preview", metavar="PNG", help="draw the plan to this picture, then move")
     p.add_argument("--result", metavar="PNG", help="simulated arms: picture what was drawn")
     p.add_argument("--dry-run", action="store_true", help="plan (and --preview) only; no motion")
