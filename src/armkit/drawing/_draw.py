@@ -17,9 +17,8 @@ from ..motion import TimedStreaming, follow
 from ..scene import Scene
 from ._errors import DrawingError
 from ._fit import Fit
-from ._job import DrawJob, DrawOptions, find_pen, plan_draw
+from ._job import DrawJob, DrawOptions, plan_draw
 from ._metrics import measure
-from ._pen import stand_of
 from ._picture import check_picture_path
 from ._picture import preview as draw_preview
 from ._picture import result as draw_result
@@ -78,8 +77,6 @@ def draw(
             "in the simulator); leave it out on real hardware",
             file=str(result),
         )
-    if not dry_run and options is not None and options.held and arm.world is not None:
-        _check_pen_not_in_stand(scene, pen)
     job = plan_draw(arm, scene, file, sheet, pen, options=options, fit=fit)
     if progress is not None:
         progress(job, 0)
@@ -91,18 +88,6 @@ def draw(
     if result is not None and job.trace is not None:
         draw_result(job.plan, job.trace, job.sheet, result)
     return job
-
-
-def _check_pen_not_in_stand(scene: Scene, pen: str | None) -> None:
-    """``held`` on a simulated arm whose scene has the pen in a stand: the simulated
-    gripper holds nothing, so nothing would be drawn (it 'drew' and measured ink)."""
-    the_pen = find_pen(scene, pen)
-    stand = stand_of(scene, the_pen)
-    if stand is not None:
-        raise DrawingError(
-            f"held: on the simulator {the_pen.name} stands in {stand.name}, as the scene "
-            "has it, not in the gripper; leave held out and the arm picks it up"
-        )
 
 
 def run_job(arm: Arm, job: DrawJob, progress: DrawProgress | None = None) -> DrawJob:
