@@ -19,13 +19,13 @@ from __future__ import annotations
 
 from collections.abc import Hashable, Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass, replace
-from typing import TYPE_CHECKING, Any
+from dataclasses import replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import ScriptError, UnreachableError
+from .._errors import UnreachableError
 from .._terminal import count
 from ..drivers.timed import (
     Forecast,
@@ -41,7 +41,8 @@ from ..motion import line, plan_path, time_path, trapezoid
 from ..scene import Held, Scene, move_refusal
 from ._ast import Loc, Statement
 from ._backend import Frame
-from ._jobs import JOBS, NOTHING_PICKED, called_with, job_function
+from ._jobs import JOBS, called_with, job_function
+from ._model_state import ArmState, cubes_key, gripped_to, held_after, obstacles
 from ._plan import Plan, PlanStep
 from ._resolve import UNKNOWN, JointPose, Point, Target
 
@@ -52,27 +53,6 @@ F64 = NDArray[np.float64]
 GRIP_SPEED = 0.05  # gripper opening speed assumed for timing [m/s]
 TOOL_ACCEL = 0.5  # tool acceleration of straight lines [m/s^2] (TimedStreaming's default)
 LINE_SPACING = 0.002  # straight lines are checked every 2 mm [m]
-
-
-@dataclass(frozen=True)
-class ArmState:
-    """What the checker knows of the arm; None = not known before it runs (``grip``:
-    not set yet, the model's own grip length). ``motor_s``: motor-seconds a timed
-    arm has used [s] (its battery's count). ``held``: the cube a ``pick`` job took
-    (until ``place``), None, or ``UNKNOWN``; ``gripped``: it with its pose in the tool
-    frame, where known (checked with the links). ``objects``: the scene as the tasks so far
-    leave it (``tasks.Plan.rest``), what the next task is planned with; None: not known
-    (after a job that is not planned ahead, such as ``search``)."""
-
-    q: F64 | None
-    grip: float | None
-    speed: float = 1.0
-    tool_speed: float = 0.05
-    light: bool | None = None
-    motor_s: float = 0.0
-    held: Any = None
-    objects: Scene | None = None
-    gripped: Held | None = None
 
 
 class ModelArm:
@@ -131,14 +111,7 @@ class ModelArm:
 
     def grip(self, width: float | None) -> None:
         took = None if width is None else self._grip_time(width)
-        s = self.state
-        let_go = width is None or s.gripped is None or s.gripped.released_by(width)
-        if isinstance(s.held, str) and let_go:
-            # the cube drops where it is: no longer held, and where it lands not known
-            held = None if width is not None else UNKNOWN
-            self.state = replace(s, grip=width, held=held, objects=None, gripped=None)
-        else:
-            self.state = replace(s, grip=width)
+        self.state = gripped_to(self.state, width)
         self._step(self.state.q, took)
 
     def home(self) -> None:
@@ -176,7 +149,7 @@ class ModelArm:
         self._step(q1, seconds)
 
     def job(self, command: str, args: dict[str, object]) -> None:
-        held = self._held(command, args)
+        held = held_after(self.state.held, command, args)
         plan = self._plan_job(command, args)
         if plan is not None:  # planned whole, as it will be when it runs
             took = self._task_time(plan)
@@ -227,27 +200,10 @@ class ModelArm:
                 self.state = replace(self.state, grip=step.grip)
         return took
 
-    def _held(self, command: str, args: dict[str, object]) -> Any:
-        """The cube held after the job ``command``; ScriptError if the job cannot be
-        done with what is held now (``place`` with nothing, any other with a cube)."""
-        held = self.state.held
-        if held is not UNKNOWN:
-            if command == "place" and held is None:
-                raise ScriptError(NOTHING_PICKED)
-            if command != "place" and held is not None:
-                raise ScriptError(
-                    f"{command}: the gripper holds {held} (picked by 'pick'); "
-                    "put it down first with 'place WHERE'"
-                )
-        if command == "pick":
-            cube = args.get("cube")
-            return UNKNOWN if cube is None else cube
-        return None if command == "place" else held
-
     def snapshot(self) -> Hashable | None:
         s = self.state
         q = None if s.q is None else tuple(np.round(s.q, 9).tolist())
-        objects = None if s.objects is None else _cubes(s.objects)
+        objects = None if s.objects is None else cubes_key(s.objects)
         return q, s.grip, s.speed, s.tool_speed, s.light, repr(s.held), objects
 
     def elapsed(self) -> float:
@@ -328,12 +284,7 @@ class ModelArm:
         """What moves are checked against, as ``Arm`` will check them: the script's scene
         with its cubes where the tasks leave them (a held one left out); its cubes left
         out where that is not known (after a ``search``); None if it names no scene."""
-        s = self.state
-        if self._fixed is None:
-            return None
-        if s.objects is None or s.held is UNKNOWN:
-            return self._fixed
-        return s.objects if s.held is None else s.objects.without_cube(s.held)
+        return obstacles(self.state, self._fixed)
 
     # -- timing ----------------------------------------------------------
     def _joint_move(self, q0: F64 | None, q1: F64) -> None:
@@ -380,8 +331,3 @@ class ModelArm:
         else:
             self.plan.total += duration
             self.time += duration
-
-
-def _cubes(scene: Scene) -> Hashable:
-    """Where the scene's cubes are, to compare states (to 1 nm)."""
-    return tuple((c.name, tuple(np.round(c.T, 9).ravel().tolist())) for c in scene.cubes)
