@@ -124,20 +124,23 @@ def held_now(arm: Arm) -> Held | None:
 def obstacles_now(arm: Arm, scene: Scene) -> Scene:
     """What ``arm``'s moves are checked against: on a simulated arm with ``scene``'s
     physics attached, the objects at rest there (a held cube left out); else ``scene``."""
-    physics = attached(arm)
-    if physics is None or physics.scene.name != scene.name:
-        return scene
-    return physics.scene
+    physics = _physics_for(arm, scene)
+    return scene if physics is None else physics.scene
 
 
 def objects_now(arm: Arm, scene: Scene) -> Scene:
     """``scene`` with its objects where they are now: on a simulated arm with the
     scene's physics attached, as they rest there (a held cube in the gripper); else
     as given (what a task on ``arm`` would plan with; ``armkit check`` plans with it)."""
+    physics = _physics_for(arm, scene)
+    return scene if physics is None else rest_scene(physics)
+
+
+def _physics_for(arm: Arm, scene: Scene) -> ScenePhysics | None:
+    """The physics of ``scene`` attached to ``arm``'s world, or None (hardware, none
+    attached, or another scene's)."""
     physics = attached(arm)
-    if physics is None or physics.scene.name != scene.name:
-        return scene
-    return rest_scene(physics)
+    return physics if physics is not None and physics.scene.name == scene.name else None
 
 
 def run_checked(
