@@ -10,6 +10,7 @@ arm, what the pen drew is measured from the World (``DrawJob.metrics``).
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, TypeVar
@@ -20,7 +21,8 @@ from numpy.typing import NDArray
 from .._errors import InputError
 from ..model import ArmModel
 from ..scene import Pen, Scene, Sheet
-from ._errors import DrawingError
+from ..tasks import Start
+from ._errors import DrawingError, DrawingWarning
 from ._fit import Fit
 from ._metrics import DrawingMetrics, PenTrace
 from ._pen import pick_pen, put_pen, stand_of
@@ -118,7 +120,7 @@ class DrawJob:
 
 
 def plan_draw(
-    arm: Arm,
+    arm: Arm | Start,
     scene: Scene,
     file: str | Path,
     sheet: str | None = None,
@@ -127,13 +129,18 @@ def plan_draw(
     options: DrawOptions | None = None,
     fit: Fit | None = None,
 ) -> DrawJob:
-    """Plan the job from the arm's joints now; nothing moves (errors as ``draw``)."""
+    """Plan the job from the arm's joints now; nothing moves (errors as ``draw``).
+
+    ``arm`` may be an ``armkit.tasks.Start`` (a model and joint angles, as the tasks
+    take it): the job is planned from there, as ``armkit check`` plans a script's
+    ``draw``. What is cut for reach is said in ``plan.notes`` and as a
+    ``DrawingWarning``, as what is cut at the sheet's edge is."""
     opts = (options or DrawOptions()).check()
     plan = plan_on_sheet(scene, file, sheet, pen, options=opts, fit=fit)
     the_sheet, the_pen = find_sheet(scene, sheet), find_pen(scene, pen)
     stand = stand_of(scene, the_pen)
     rig = make_rig(arm.model, scene, the_sheet, the_pen, opts)
-    q0 = arm.driver.read()
+    q0 = arm.q.copy() if isinstance(arm, Start) else arm.driver.read()
     segments: list[Segment] = []
     if stand is not None and not opts.held:
         segments += pick_pen(rig, stand, the_pen, q0, opts.clearance)
@@ -175,7 +182,10 @@ def _reachable(rig: Rig, plan: DrawingPlan, q: F64, arm: str) -> tuple[list[Run]
     )  # fmt: skip
     if not runs:
         raise nothing_reachable(plan.source, arm)
-    return runs, reach_note(plan.source, cut, total, arm)
+    note = reach_note(plan.source, cut, total, arm)
+    for line in note:
+        warnings.warn(line, DrawingWarning, stacklevel=2)  # once for check and run
+    return runs, note
 
 
 def make_rig(model: ArmModel, scene: Scene, sheet: Sheet, pen: Pen, opts: DrawOptions) -> Rig:

@@ -106,11 +106,23 @@ def search(
         scene.container(into or only_container(scene))
 
 
-def draw(scene: Scene, file: Path, sheet: str | None = None, pen: str | None = None) -> None:
+def draw(
+    scene: Scene,
+    file: Path,
+    sheet: str | None = None,
+    pen: str | None = None,
+    *,
+    arm: Start | None = None,
+) -> None:
     """``drawing.draw``: the sheet and the pen of the scene, then the file planned on the
     sheet as the job plans it before it moves (``drawing.plan_on_sheet``: a file with
-    nothing to draw is refused here, not after the moves before it)."""
-    from ..drawing import find_pen, find_sheet, plan_on_sheet, read_drawing
+    nothing to draw is refused here, not after the moves before it); given the arm as the
+    checker knows it (``arm``: its model and joints), the whole job planned as ``draw``
+    plans it (``drawing.plan_draw``: the pen picked up from its stand and put back, every
+    stroke cut to the arm's reach, every move checked), refused where it would refuse
+    (none of the drawing in reach, the stand out of reach, a collision); what it cuts for
+    reach is said as it says it (a ``DrawingWarning``)."""
+    from ..drawing import find_pen, find_sheet, plan_draw, plan_on_sheet, read_drawing
 
     with _about("sheet"):
         find_sheet(scene, sheet)
@@ -119,7 +131,10 @@ def draw(scene: Scene, file: Path, sheet: str | None = None, pen: str | None = N
     with _about("file"):
         read_drawing(file)
     with _about():
-        plan_on_sheet(scene, file, sheet, pen)
+        if arm is None:
+            plan_on_sheet(scene, file, sheet, pen)
+        else:
+            plan_draw(arm, scene, file, sheet, pen)
 
 
 def play(

@@ -174,6 +174,7 @@ JOBS: dict[str, JobSpec] = {
         "armkit.drawing:draw",
         "draw an SVG or G-code file on a sheet (picking the pen up and putting it back)",
         check=f"{CHECKS}:draw",
+        check_plans=True,
     ),
     "play": JobSpec(
         (
