@@ -97,6 +97,7 @@ class Arm:
         self.clock = clock_of(self.driver)
         self._kin = self.model
         self.held: Held | None = None  # a cube in the gripper: checked with the links
+        self._opening: float | None = None  # the jaws' opening [m], once set
 
     @property
     def world(self) -> World | None:
@@ -173,7 +174,7 @@ class Arm:
             )
         kin = self.model.with_grip_width(width)
         self.driver.grip(width)
-        self._kin = kin
+        self._kin, self._opening = kin, width
         if self.held is not None and self.held.released_by(width):
             self.held = None
 
@@ -292,9 +293,20 @@ class Arm:
     def _check_clear(self, path: F64) -> None:
         """Refuse a move from here through ``path`` (K, dof) [rad] that puts a link below the
         table, into the base column or into the scene's objects (``scene.move_refusal``)."""
-        refused = move_refusal(self._kin, self.driver.read(), path, self.scene, self.held)
+        refused = move_refusal(
+            self._kin, self.driver.read(), path, self.scene, self.held, self._jaws()
+        )
         if refused is not None:
             raise refused
+
+    def _jaws(self) -> float | None:
+        """The jaws' opening [m]: as last set, else a simulated gripper's true one (kept
+        between commands), else None (not known)."""
+        world = self.world
+        if self._opening is not None or world is None:
+            return self._opening
+        sim = next((a for a in world.arms() if a.model.name == self.model.name), None)
+        return None if sim is None else sim.grip()
 
     def _wait_until(self, q: F64, timeout: float) -> None:
         deadline = self.clock.now() + timeout

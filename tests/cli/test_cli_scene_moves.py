@@ -19,6 +19,8 @@ def test_a_move_into_a_cube_is_refused_and_nothing_moves(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     kept = ["--scene", "board_001", "--port", str(tmp_path / "arm.json")]
+    assert main([*kept, "grip", "20"]) == 0  # closed: open jaws would pass over the cube
+    capsys.readouterr()
     assert main([*kept, "where"]) == 0
     before = capsys.readouterr().out
     assert main([*kept, "move", "220", "0", "20", "--pitch", "-90"]) == 2
@@ -37,6 +39,7 @@ def test_moves_are_checked_against_the_cubes_where_they_are_now(
     kept = ["--scene", "board_001", "--port", str(tmp_path / "arm.json")]
     assert main([*kept, "pick", "red"]) == 0
     assert main([*kept, "place", "red", "--xyz", "180", "-100", "0"]) == 0
+    assert main([*kept, "grip", "20"]) == 0
     capsys.readouterr()
     assert main([*kept, "move", "180", "-100", "20", "--pitch", "-90"]) == 2  # red is there
     assert "5.0 mm into the red" in capsys.readouterr().err
@@ -85,6 +88,7 @@ def test_scripts_and_commands_share_the_kept_cubes(
     assert _where(kept, capsys) == before  # refused by the check: nothing moved
     script.write_text("scene board_001\nplace xyz 180 -100 0\nhome\n")
     assert main(["--port", port, "run", "-q", str(script)]) == 0
+    assert main([*kept, "grip", "20"]) == 0
     assert main([*kept, "move", "180", "-100", "20", "--pitch", "-90"]) == 2  # red is there
     assert "into the red" in capsys.readouterr().err
 
@@ -104,3 +108,24 @@ def test_scene_show_shows_the_cubes_as_kept(
     capsys.readouterr()
     assert main([*kept, "scene", "show", "--no-picture"]) == 0
     assert "red: 25.0 mm at (179.8, -100.0, 0.0) mm" in capsys.readouterr().out
+
+
+def test_open_jaws_pass_over_a_cube_to_take_it_by_hand_and_lift_off_it(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # after moves were checked against the cubes, lowering open jaws over green (as pick
+    # does) was refused, and so was every move after letting a cube go by hand
+    kept = ["--scene", "board_001", "--port", str(tmp_path / "arm.json")]
+    assert main([*kept, "grip", "70"]) == 0
+    assert main([*kept, "move", "220", "0", "60", "--pitch", "-90"]) == 0
+    assert main([*kept, "move", "220", "0", "16", "--pitch", "-90"]) == 0  # jaws around green
+    assert main([*kept, "grip", "20"]) == 0
+    capsys.readouterr()
+    assert main([*kept, "scene", "show", "--no-picture"]) == 0
+    assert "green: in the gripper" in capsys.readouterr().out
+    assert main([*kept, "grip", "45"]) == 0  # let go: back in its socket
+    assert main([*kept, "move", "220", "0", "60", "--pitch", "-90"]) == 0  # lifted off it
+    assert main([*kept, "grip", "20"]) == 0  # closed jaws: green is in the way again
+    capsys.readouterr()
+    assert main([*kept, "move", "220", "0", "16", "--pitch", "-90"]) == 2
+    assert "into the green" in capsys.readouterr().err

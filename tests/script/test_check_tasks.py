@@ -217,3 +217,25 @@ def test_a_held_cube_is_checked_with_the_links() -> None:
         arm.move_to(150, -150, 5, -90)
     arm.grip(75)  # lets it go
     assert arm.held is None
+
+
+def test_a_cube_let_go_lands_where_the_check_says() -> None:
+    # the check forgot where a released cube went (run knew): a move into it passed
+    # check and was refused by run after moving; a place planned from it likewise
+    arm, driver = counting_arm()
+    dropped = "scene board_001\npick green\nmove 150 -120 40 pitch -90\ngrip 45\ngrip 20\n"
+    with pytest.raises(ScriptCheckError, match=r"6:1: move refused: there, .*into the green"):
+        run_source(arm, Source("job.arm", dropped + "move 150 -120 20 pitch -90\n"))
+    assert driver.sent == 0
+    run_source(
+        arm, Source("job.arm", dropped.replace("grip 20\n", "") + "move 150 -120 20 pitch -90\n")
+    )
+
+
+def test_a_timed_motor_run_is_checked_against_the_table() -> None:
+    # 'run shoulder forward 1s' took the OWI 23 mm below the table: check and run passed
+    result = check_source(
+        Source("o.arm", "arm owi535\nmove 200 -60 50 pitch -45\nrun shoulder forward 1s\n")
+    )
+    (d,) = result.diagnostics
+    assert d.loc.line == 3 and "into the table" in d.message

@@ -54,3 +54,17 @@ def test_move_item_too() -> None:
         match=r"board is a board: say which socket, board\[ROW, COL\] \(rows 0..2, columns 0..2\)",
     ):
         tasks.move_item(START, SCENE, "red", "board")
+
+
+def test_a_stack_is_named_by_its_top_cube() -> None:
+    # with red on green, 'taken by green; ... put blue on green' named the covered cube
+    picked = _picked()
+    stacked = tasks.place(tasks.Start(MODEL, picked.q_end), picked.rest, "red", "green")
+    blue = tasks.pick(tasks.Start(MODEL, stacked.q_end), stacked.rest, "blue")
+    start = tasks.Start(MODEL, blue.q_end)
+    with pytest.raises(
+        tasks.TaskError, match=r"board\[0, 1\] is taken by green; .* put blue on red$"
+    ):
+        tasks.place(start, blue.rest, "blue", "board[0,1]")
+    with pytest.raises(tasks.TaskError, match=r"place blue: green has red on it; put blue on red$"):
+        tasks.place(start, blue.rest, "blue", "green")

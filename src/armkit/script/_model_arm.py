@@ -111,7 +111,7 @@ class ModelArm:
 
     def grip(self, width: float | None) -> None:
         took = None if width is None else self._grip_time(width)
-        self.state = gripped_to(self.state, width)
+        self.state = gripped_to(self.state, width, self.model)
         self._step(self.state.q, took)
 
     def home(self) -> None:
@@ -138,14 +138,17 @@ class ModelArm:
             self._step(None, seconds)
             return
         j = self.model.joint_index(joint)
-        if self.timing is not None:
-            self._forecast(forecast_run(self.timing, q0, j, direction, seconds, self.state.motor_s))
+        if self.timing is not None:  # a timed arm's run, as its driver will estimate it
+            ahead = forecast_run(self.timing, q0, j, direction, seconds, self.state.motor_s)
+            self._check_move(ahead.q)  # a run is not a move the arm checks: the check does
+            self._forecast(ahead)
             return
         q1 = q0.copy()
         limit = self.model.joints[j]
         q1[j] = float(
             np.clip(q0[j] + direction * limit.max_velocity * seconds, limit.lower, limit.upper)
         )
+        self._check_move(q1)
         self._step(q1, seconds)
 
     def job(self, command: str, args: dict[str, object]) -> None:
@@ -276,7 +279,7 @@ class ModelArm:
         check_joints(self.model, q)
         poses = q[None, :] if path is None else path
         s = self.state
-        refused = move_refusal(self._kin(), s.q, poses, self._obstacles(), s.gripped)
+        refused = move_refusal(self._kin(), s.q, poses, self._obstacles(), s.gripped, s.grip)
         if refused is not None:
             raise refused
 

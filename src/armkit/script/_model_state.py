@@ -12,7 +12,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import ScriptError
-from ..scene import Held, Scene
+from ..kinematics import fk
+from ..model import ArmModel
+from ..scene import Held, Scene, settle
 from ._jobs import NOTHING_PICKED
 from ._resolve import UNKNOWN
 
@@ -58,14 +60,27 @@ def held_after(held: Any, command: str, args: dict[str, object]) -> Any:
     return None if command == "place" else held
 
 
-def gripped_to(s: ArmState, width: float | None) -> ArmState:
+def gripped_to(s: ArmState, width: float | None, model: ArmModel) -> ArmState:
     """``s`` after opening the gripper to ``width`` [m] (None: not known): a held cube the
-    jaws let go (``Held.released_by``) drops where it is, so where it lands is not known."""
+    jaws let go (``Held.released_by``) falls onto what is below it (``scene.settle``, as
+    the simulator's does), where that is known; else where it lands is not known."""
     let_go = width is None or s.gripped is None or s.gripped.released_by(width)
     if not (isinstance(s.held, str) and let_go):
         return replace(s, grip=width)
-    held = None if width is not None else UNKNOWN
-    return replace(s, grip=width, held=held, objects=None, gripped=None)
+    if width is None or s.gripped is None or s.q is None or s.objects is None:
+        held = None if width is not None else UNKNOWN
+        return replace(s, grip=width, held=held, objects=None, gripped=None)
+    return replace(s, grip=width, held=None, objects=_dropped(s, model), gripped=None)
+
+
+def _dropped(s: ArmState, model: ArmModel) -> Scene:
+    """The scene with the held cube where it comes to rest when let go at ``s.q``."""
+    assert s.gripped is not None and s.q is not None and s.objects is not None
+    kin = model if s.grip is None else model.with_grip_width(s.grip)
+    T = s.objects.T_world_base @ fk(kin, s.q) @ s.gripped.T_tool_object
+    others = s.objects.without_cube(s.gripped.cube.name)
+    rest = settle(others, s.gripped.cube, T).cube
+    return replace(others, cubes=(*others.cubes, rest))
 
 
 def obstacles(s: ArmState, fixed: Scene | None) -> Scene | None:

@@ -98,12 +98,16 @@ def _free(scene: Scene, target: Target, moving: str | None, task: str) -> Target
     other = taken_by(scene, target, moving)
     if other is None:
         return target
+    top = other
+    while (above := taken_by(scene, resolve(scene, top), moving)) is not None:
+        top = above  # the cube the stack ends with: the one to put it on
     what = moving or "it"
-    raise TaskError(
-        f"{task}: {target.label.removeprefix('in ').removeprefix('at ')} is taken by {other}; "
-        f"choose a free one, or put {what} on {other}",
-        step=task,
-    )
+    if target.label.startswith("on "):  # a stack
+        why = f"{target.label.removeprefix('on ')} has {other} on it; put {what} on {top}"
+    else:
+        where = target.label.removeprefix("in ").removeprefix("at ")
+        why = f"{where} is taken by {other}; choose a free one, or put {what} on {top}"
+    raise TaskError(f"{task}: {why}", step=task)
 
 
 def _deg(pitch: float | None) -> float | None:
