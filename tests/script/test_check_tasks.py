@@ -239,3 +239,10 @@ def test_a_timed_motor_run_is_checked_against_the_table() -> None:
     )
     (d,) = result.diagnostics
     assert d.loc.line == 3 and "into the table" in d.message
+
+
+def test_a_job_with_a_word_too_many_says_so() -> None:
+    # 'place object bin' said "expected an argument keyword (), got 'bin'"
+    (d,) = _check("scene board_001\npick red\nplace red board[1,1]\n").diagnostics
+    assert (d.loc.line, d.loc.col) == (3, 11)
+    assert d.message == "place takes nothing more, got 'board[1,1]'; usage: place TO"

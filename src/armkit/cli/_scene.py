@@ -115,7 +115,7 @@ def _show(args: argparse.Namespace) -> int:
     scene, held = _kept(args, model, scene)
     print("\n".join(describe(scene)))
     if held is not None:
-        print(f"  {held}: in the gripper")
+        print(f"in the gripper:\n  {held}")
     if out is not None:
         top_view(scene, out, model)
         print(f"top view written to {out}")

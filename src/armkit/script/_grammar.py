@@ -179,6 +179,10 @@ def read_job(c: Cursor, t: Token) -> Statement:
         nxt = c.peek()
         if nxt is not None and nxt.text in refused and nxt.text not in keyed:
             raise Problem(nxt.col, refused[nxt.text])
+        if nxt is not None and not keyed:  # every argument is written: one too many
+            raise Problem(
+                nxt.col, f"{t.text} takes nothing more, got {nxt.text!r}; usage: {c.usage}"
+            )
         word = c.word(tuple(keyed), "an argument keyword")
         p = keyed.pop(word.text)
         args.append(_job_arg(c, p))
