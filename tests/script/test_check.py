@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from armkit.model import load_model
-from armkit.script import ScriptCheckError, Source, check_source
+from armkit.script import ArmNow, ScriptCheckError, Source, check_source
 
 MISTAKES = """\
 pose above = xyz 180 0 80 pitch -90
@@ -178,8 +178,8 @@ def test_start_pose_matters_for_relative_moves() -> None:
     model = load_model("openmanipulator_x")
     q0 = model.home.copy()
     q0[0] = math.radians(175)
-    assert _errors("turn waist by 10\n", q0=q0)[0][2].startswith("waist 185.00 deg")
-    assert _errors("turn waist by 10\n", q0=np.zeros(4)) == []
+    assert _errors("turn waist by 10\n", now=ArmNow(q=q0))[0][2].startswith("waist 185.00 deg")
+    assert _errors("turn waist by 10\n", now=ArmNow(q=np.zeros(4))) == []
 
 
 def test_run_and_light_need_timed_motors() -> None:

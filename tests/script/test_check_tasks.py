@@ -7,6 +7,8 @@ arm: where they are now), and refuses the script at the task's line; nothing mov
 
 from __future__ import annotations
 
+import re
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -15,8 +17,9 @@ from script_arms import counting_arm
 
 import armkit.tasks
 from armkit import Arm
+from armkit.cli import main
 from armkit.motion import trapezoid
-from armkit.script import ScriptCheckError, Source, check_source, run_source
+from armkit.script import ArmNow, ScriptCheckError, Source, check_source, run_source
 from armkit.tasks import GRIP_S, Start
 
 TIPS = "scene board_001\nmove 200 0 150\npick red\nplace board[0,1]\nhome\n"
@@ -74,7 +77,9 @@ def test_the_check_times_the_tasks_as_the_simulator_runs_them(jobs: str) -> None
     took = arm.clock.now() - t0
     assert result.plan.unknown == 0
     assert result.plan.total == pytest.approx(took, rel=0.03)
-    hardware = check_source(Source("job.arm", f"scene board_001\n{jobs}\n"), hardware=True)
+    hardware = check_source(
+        Source("job.arm", f"scene board_001\n{jobs}\n"), now=ArmNow(hardware=True)
+    )
     grips = sum(1 for s in _task_steps(jobs) if s.grip is not None)
     assert hardware.plan.total == pytest.approx(_moves_time(jobs) + grips * 2 * GRIP_S)
 
@@ -246,3 +251,20 @@ def test_a_job_with_a_word_too_many_says_so() -> None:
     (d,) = _check("scene board_001\npick red\nplace red board[1,1]\n").diagnostics
     assert (d.loc.line, d.loc.col) == (3, 11)
     assert d.message == "place takes nothing more, got 'board[1,1]'; usage: place TO"
+
+
+def test_a_calibrated_owi_is_checked_with_its_own_timing(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # the check inside run used the timing a new unit starts with: 22.47 s checked,
+    # 31.74 s run on a calibrated simulated unit (ArmNow.of takes the unit's timing)
+    assert main(["--arm", "owi535", "calibrate"]) == 0
+    script = tmp_path / "o.arm"
+    script.write_text("arm owi535\nmove 200 0 100\nhome\n")
+    capsys.readouterr()
+    assert main(["run", "--dry-run", str(script)]) == 0
+    planned = re.search(r"total ([\d.]+) s", capsys.readouterr().out)
+    assert main(["run", "-q", str(script)]) == 0
+    took = re.search(r" in ([\d.]+) s", capsys.readouterr().out)
+    assert planned and took
+    assert float(planned.group(1)) == pytest.approx(float(took.group(1)), rel=0.02)

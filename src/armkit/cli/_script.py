@@ -105,14 +105,14 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 def _check(args: argparse.Namespace) -> int:
     from ..model import load_model
-    from ..script import check_source
+    from ..script import ArmNow, check_source
 
     source, setup = _read(args.file)
     arm = _choose(args, "arm", setup.arm, source)
     scene = _scene(args)
     model = load_model(arm) if arm != (setup.arm.value if setup.arm else None) else None
     hardware = _choose(args, "driver", setup.driver, source) != "sim"
-    result = check_source(source, model=model, scene=scene, hardware=hardware)
+    result = check_source(source, model=model, scene=scene, now=ArmNow(hardware=hardware))
     _report(result)
     result.raise_if_failed()
     if args.plan:
@@ -126,16 +126,14 @@ def _check(args: argparse.Namespace) -> int:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from ..script import MAX_REPEAT, check_source, live_objects, run_checked
-    from ..tasks import held_now
+    from ..script import MAX_REPEAT, ArmNow, check_source, run_checked
 
     if not 1 <= args.repeat <= MAX_REPEAT:
         raise InputError(f"--repeat must be 1..{MAX_REPEAT}, got {args.repeat}")
     source, setup = _read(args.file)
     with _open(args, setup, source) as arm:
         result = check_source(
-            source, model=arm.model, scene=_scene(args), q0=arm.driver.read(),
-            held=held_now(arm), live=live_objects(arm), hardware=arm.world is None,
+            source, model=arm.model, scene=_scene(args), now=ArmNow.of(arm),
             require_jobs=not args.dry_run, repeat=args.repeat,
         )  # fmt: skip
         _report(result)

@@ -49,6 +49,7 @@ a caret; nothing moves if there is one. ``run_source`` then runs it through the
 public ``Arm`` API; a failure at run time names the line and repeat iteration.
 """
 
+from ._arm_now import ArmNow as ArmNow
 from ._ast import Header as Header
 from ._ast import Loc as Loc
 from ._ast import Program as Program
@@ -71,7 +72,6 @@ from ._parse import parse as parse
 from ._plan import Plan as Plan
 from ._plan import PlanStep as PlanStep
 from ._resolve import SceneInfo as SceneInfo
-from ._run import live_objects as live_objects
 from ._run import run_checked as run_checked
 from ._run import run_source as run_source
 from ._session import Reply as Reply

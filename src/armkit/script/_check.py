@@ -5,7 +5,7 @@ problem and the plan with its time."""
 from __future__ import annotations
 
 import importlib
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -16,7 +16,7 @@ from numpy.typing import NDArray
 from .._errors import ArmkitError
 from ..connect import driver_names
 from ..model import ArmModel, load_model, shipped_models
-from ..scene import Held, Scene
+from ._arm_now import ArmNow
 from ._ast import Define, Header, Job, Loc, Num, Program, Repeat, Source, Statement
 from ._diagnostics import Diagnostic, ScriptCheckError, sorted_unique, suggest
 from ._jobs import JobUnavailable, job_function
@@ -87,11 +87,7 @@ def check_source(
     *,
     model: ArmModel | None = None,
     scene: SceneInfo | None = None,
-    q0: F64 | None = None,
-    grip0: float | None = None,
-    held: str | Held | None = None,
-    live: Callable[[Scene], Scene] | None = None,
-    hardware: bool = False,
+    now: ArmNow | None = None,
     require_jobs: bool = False,
     repeat: int = 1,
     base_dir: Path | None = None,
@@ -102,15 +98,8 @@ def check_source(
     Args:
         model: the arm (None: the script's ``arm`` line, else openmanipulator_x).
         scene: the scene (None: the script's ``scene`` line, if any).
-        q0: joint angles at the start [rad], shape (dof,) (None: the model's home).
-        grip0: gripper opening at the start [m] (None: not set yet, so the model's own
-            grip length, as ``Arm`` before its first ``grip``; timed as if open).
-        held: the cube a ``pick`` job took before (the shell), for ``place``: its name, or
-            with its pose in the gripper (``Arm.held``), so moves check it too.
-        live: where the script's tasks will find the scene's objects, a function of the
-            scene (``live_objects`` of the arm it will run on); None: as the scene has
-            them (a script without a scene: the empty table). The tasks are planned so.
-        hardware: it runs on real hardware, not the simulator (a task's waits differ).
+        now: the arm it will run on as it is at the start (``ArmNow.of(arm)``); None:
+            the model at home, nothing held, the scene's file, on the simulator.
         require_jobs: a job whose function is missing is an error (``run``), not a warning.
         repeat: run the whole script this many times (``--repeat``).
         base_dir: where relative file names start (default: the script's folder).
@@ -129,11 +118,11 @@ def check_source(
     _check_driver(setup.driver, diagnostics)
     if scene is None and setup.scene is not None:
         scene = load_scene_info(setup.scene.value, here, setup.scene.value_loc, diagnostics)
+    now = ArmNow() if now is None else now
     objects = job_scene(scene)
-    if live is not None and objects is not None:
-        objects = live(objects)
-    start = model.home if q0 is None else q0
-    arm = ModelArm(model, start, grip0, held, objects, hardware, has_scene=scene is not None)
+    if now.live is not None and objects is not None:
+        objects = now.live(objects)
+    arm = ModelArm(model, now, objects, has_scene=scene is not None)
     walker = Walker(Resolver(model, scene, here), arm, source.name, checking=True)
     _seed(walker, program, env)
     walker.walk(looped(program.statements, repeat))

@@ -39,6 +39,7 @@ from ..kinematics import fk, ik
 from ..model import ArmModel, check_joints
 from ..motion import line, plan_path, time_path, trapezoid
 from ..scene import Held, Scene, move_refusal
+from ._arm_now import ArmNow
 from ._ast import Loc, Statement
 from ._backend import Frame
 from ._jobs import JOBS, called_with, job_function
@@ -59,21 +60,24 @@ class ModelArm:
     """A ``Backend`` that simulates the script on the model and builds the ``Plan``."""
 
     def __init__(
-        self, model: ArmModel, q0: F64 | None, grip0: float | None, held: str | Held | None = None,
-        objects: Scene | None = None, hardware: bool = False, has_scene: bool = False,
-    ) -> None:  # fmt: skip
-        self.model, self.hardware = model, hardware
+        self, model: ArmModel, now: ArmNow, objects: Scene | None, has_scene: bool = False
+    ) -> None:
+        self.model, self.hardware = model, now.hardware
         # the scene's boards, containers, ... (its cubes move); None: moves are checked
         # against the table alone, as ``Arm`` checks them without a scene
         self._fixed = replace(objects, cubes=()) if has_scene and objects is not None else None
-        q = None if q0 is None else np.array(q0, dtype=np.float64)
+        q = np.array(model.home if now.q is None else now.q, dtype=np.float64)
+        held = now.held
         gripped = held if isinstance(held, Held) else None
         name = held.cube.name if isinstance(held, Held) else held
-        self.state = ArmState(q, grip0, held=name, objects=objects, gripped=gripped)
+        self.state = ArmState(
+            q, now.grip, held=name, objects=objects, gripped=gripped, motor_s=now.motor_s
+        )
         self.plan = Plan(model.joint_names)
         self.time = 0.0  # sum of the known durations so far [s]
-        # an OWI-535's timing as its driver gives a unit not yet calibrated; None: not one
-        self.timing = default_timing(model) if "owi535" in model.drivers else None
+        # an OWI-535's timing: its unit's, else the one a new unit starts with; None: not one
+        timed = "owi535" in model.drivers
+        self.timing = (now.timing or default_timing(model)) if timed else None
         self._line, self._context, self._recording = 0, "", True
 
     def begin(self, stmt: Statement, frames: tuple[Frame, ...]) -> None:

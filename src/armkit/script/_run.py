@@ -17,7 +17,8 @@ from ..arm import Arm
 from ..kinematics import fk
 from ..motion import TimedStreaming, line
 from ..scene import Scene
-from ..tasks import Plan, held_now, objects_now, obstacles_now
+from ..tasks import Plan, held_now, obstacles_now
+from ._arm_now import ArmNow
 from ._ast import Loc, Source, Statement
 from ._backend import Frame
 from ._check import CheckResult, check_source, looped
@@ -200,10 +201,7 @@ def run_source(
         source,
         model=arm.model,
         scene=scene,
-        q0=arm.driver.read(),
-        held=arm.held,
-        live=live_objects(arm),
-        hardware=arm.world is None,
+        now=ArmNow.of(arm),
         require_jobs=True,
         repeat=repeat,
         base_dir=base_dir,
@@ -211,13 +209,6 @@ def run_source(
     result.raise_if_failed()
     run_checked(arm, result, repeat=repeat, base_dir=base_dir, on_step=on_step)
     return result
-
-
-def live_objects(arm: Arm, carried: Scene | None = None) -> Callable[[Scene], Scene]:
-    """Where ``arm``'s tasks will find a script scene's objects (``check_source``'s
-    ``live``): on a simulated arm where they are now, else as the last task left them
-    (``carried``), else as the scene has them."""
-    return lambda scene: objects_now(arm, scene if carried is None else carried)
 
 
 def run_checked(

@@ -18,6 +18,7 @@ from .._files import write_atomic
 from .._terminal import count
 from ..arm import Arm
 from ..model import ArmModel, load_model, shipped_models
+from ._arm_now import ArmNow
 from ._ast import Header, Source
 from ._backend import ScriptRunError
 from ._check import Env, check_source
@@ -25,7 +26,7 @@ from ._diagnostics import ScriptCheckError, compact_numbers
 from ._grammar import DIRECTIONS, RESERVED, usage_of
 from ._lexer import LexError, Token, tokenize
 from ._resolve import JointPose, Resolver, SceneInfo
-from ._run import ArmBackend, live_objects, run_source
+from ._run import ArmBackend, run_source
 from ._teach import Jog, Teaching, joints_line, pose_now, torque
 from ._walk import Walker
 
@@ -161,9 +162,8 @@ class Session:
         self._typed = max(self._typed, self.next_line - 1)
         env = Env(self.resolver.poses, self.walker.procs)
         result = check_source(
-            source, model=self.arm.model, scene=self.scene, q0=self.arm.driver.read(),
-            grip0=self.backend.grip_width, held=self.arm.held, live=live_objects(self.arm, self.backend.objects),
-            hardware=self.arm.world is None,
+            source, model=self.arm.model, scene=self.scene,
+            now=ArmNow.of(self.arm, self.backend.objects, self.backend.grip_width),
             require_jobs=True,
             base_dir=self.base_dir, env=env,
         )  # fmt: skip
