@@ -262,6 +262,10 @@ def test_a_calibrated_owi_is_checked_with_its_own_timing(
     script = tmp_path / "o.arm"
     script.write_text("arm owi535\nmove 200 0 100\nhome\n")
     capsys.readouterr()
+    assert main(["check", str(script)]) == 0  # from home, a new unit: it says so
+    assert "timed as a new unit runs: 'armkit run --dry-run' times this unit" in (
+        capsys.readouterr().out
+    )
     assert main(["run", "--dry-run", str(script)]) == 0
     planned = re.search(r"total ([\d.]+) s", capsys.readouterr().out)
     assert main(["run", "-q", str(script)]) == 0

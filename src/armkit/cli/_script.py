@@ -119,6 +119,8 @@ def _check(args: argparse.Namespace) -> int:
         print(result.plan.format(source))
     plan = result.plan
     later = f" (+{plan.unknown} timed when run)" if plan.unknown else ""
+    if "owi535" in result.model.drivers:  # timed motors: each unit runs at its own rates
+        later += "; timed as a new unit runs: 'armkit run --dry-run' times this unit"
     print(
         f"{source.name}: ok for {result.model.name}: {count(len(plan.steps), 'step')}, {plan.total:.2f} s from home{later}"
     )
