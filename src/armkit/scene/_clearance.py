@@ -25,6 +25,7 @@ from ._scene import Scene
 F64 = NDArray[np.float64]
 TOUCH = 0.2e-3  # [m]: surfaces this far into each other still only touch
 SWEEP_STEP = 0.0175  # [rad] (1 deg): joint-space sampling of a move for the check
+WIDTH_EPS = 0.2e-3  # [m]: grip changes smaller than this are not a motion
 COLUMN = "base column"  # the object a link folding into the arm's own base hits
 INTO_COLUMN = 2e-3  # [m]: how far a link's capsule may reach into the base column's (both
 # are rough envelopes of the real parts)
@@ -38,9 +39,9 @@ class Held:
     T_tool_object: F64
 
     def released_by(self, width: float) -> bool:
-        """Whether opening the jaws to ``width`` [m] lets it go: wider than the cube (as
-        the simulator's jaws let go of it)."""
-        return width > self.cube.size
+        """Whether opening the jaws to ``width`` [m] lets it go: wider than the cube by
+        more than ``WIDTH_EPS`` (the simulator's physics and ``Arm`` both ask this)."""
+        return width > self.cube.size + WIDTH_EPS
 
 
 @dataclass(frozen=True)

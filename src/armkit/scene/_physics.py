@@ -17,6 +17,7 @@ from numpy.typing import NDArray
 
 from ..kinematics import fk
 from ..model import ArmModel
+from ._clearance import WIDTH_EPS, Held
 from ._grasp import Grasp, grasp
 from ._objects import Cube
 from ._scene import Scene
@@ -24,7 +25,6 @@ from ._support import settle
 
 F64 = NDArray[np.float64]
 EventKind = Literal["grasped", "missed", "placed", "dropped", "tipped"]
-WIDTH_EPS = 0.2e-3  # [m]: grip changes smaller than this are not a motion
 NEAR = 0.06  # [m]: a closing this close to a cube that misses it is reported
 STILL = 1e-5  # [rad]: joints moving less than this per step are standing still
 
@@ -63,13 +63,6 @@ class SceneEvent:
     offset: F64 | None = None
 
 
-@dataclass(frozen=True)
-class _Holding:
-    cube: Cube
-    T_tool_object: F64
-    width: float
-
-
 class ScenePhysics:
     """Attach with ``world.attach(ScenePhysics(scene))``; ``scene`` holds the objects
     at rest (a held cube is left out), ``events`` what happened, ``cube(name)`` any
@@ -78,7 +71,7 @@ class ScenePhysics:
     def __init__(self, scene: Scene, arm: str | None = None) -> None:
         self.scene = scene
         self.events: list[SceneEvent] = []
-        self.holding: _Holding | None = None
+        self.holding: Held | None = None
         self._arm = arm
         self._width: float | None = None
         self._opened = 0.0  # the opening when the arm last moved [m]
@@ -91,7 +84,7 @@ class ScenePhysics:
         """Start with ``cube`` (its pose before it was picked) in the gripper, held at
         ``T_tool_object`` (4, 4) [m] (a state kept between processes); the jaws are
         stopped at its width on the next step."""
-        self.holding = _Holding(cube, np.asarray(T_tool_object, dtype=np.float64), cube.size)
+        self.holding = Held(cube, np.asarray(T_tool_object, dtype=np.float64))
         self.scene = self.scene.without_cube(cube.name)
         self._stop_pending = True
 
@@ -101,7 +94,7 @@ class ScenePhysics:
         self._model = sim.model
         if self._stop_pending and self.holding is not None:
             self._stop_pending = False
-            sim.grip_stop(self.holding.width)
+            sim.grip_stop(self.holding.cube.size)
         width, q = sim.grip(), sim.q()
         if self._width is None or self._q is None or float(np.max(np.abs(q - self._q))) > STILL:
             self._opened = width  # the jaws come round an object at the opening they move with
@@ -114,7 +107,7 @@ class ScenePhysics:
         self._width = width
         if width > last:
             self._reported = False
-            if self.holding is not None and width > self.holding.width + WIDTH_EPS:
+            if self.holding is not None and self.holding.released_by(width):
                 self._release(sim, t)
         elif self.holding is None:
             self._closing(sim, width, t)
@@ -133,7 +126,7 @@ class ScenePhysics:
             and self._model is not None
             and self._q is not None
         ):
-            T = self._tool(self._model, self._q, held.width)
+            T = self._tool(self._model, self._q, held.cube.size)
             return held.cube.moved(T @ held.T_tool_object)
         return self.scene.cube(name)
 
@@ -153,7 +146,7 @@ class ScenePhysics:
             outcomes.append((grasp(sim.model.gripper, T, self._opened, cube), cube, T))
         for result, cube, _ in outcomes:
             if result.ok and result.T_tool_object is not None:
-                self.holding = _Holding(cube, result.T_tool_object, cube.size)
+                self.holding = Held(cube, result.T_tool_object)
                 self.scene = self.scene.without_cube(cube.name)
                 sim.grip_stop(cube.size)
                 turned = (
@@ -180,7 +173,7 @@ class ScenePhysics:
         assert self.holding is not None
         held, self.holding = self.holding, None
         sim.grip_stop(None)
-        T_tool = self._tool(sim.model, sim.q(), held.width)
+        T_tool = self._tool(sim.model, sim.q(), held.cube.size)
         done = settle(self.scene, held.cube, T_tool @ held.T_tool_object)
         self.scene = replace(self.scene, cubes=(*self.scene.cubes, done.cube))
         fall = f", fell {done.fall * 1000:.1f} mm" if done.outcome == "dropped" else ""

@@ -117,8 +117,7 @@ def held_now(arm: Arm) -> Held | None:
     """The cube a simulated arm's gripper holds (its scene's physics) and its pose in the
     tool frame, else None (also on hardware, where armkit cannot know)."""
     physics = attached(arm)
-    holding = None if physics is None else physics.holding
-    return None if holding is None else Held(holding.cube, holding.T_tool_object)
+    return None if physics is None else physics.holding
 
 
 def obstacles_now(arm: Arm, scene: Scene) -> Scene:
