@@ -11,7 +11,7 @@ import math
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from types import TracebackType
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -36,6 +36,9 @@ from .motion import (
     retreat,
 )
 from .scene import Held, Scene, load_scene, move_refusal
+
+if TYPE_CHECKING:
+    from .sim import SimArm
 
 F64 = NDArray[np.float64]
 REACHED = math.radians(0.2)  # a move with a timeout is done when every joint is this close
@@ -104,6 +107,15 @@ class Arm:
         """The simulation world this arm moves in (its true state, recording, observers);
         None on real hardware."""
         return world_of(self.driver)
+
+    @property
+    def sim(self) -> SimArm | None:
+        """The simulated arm behind this one (its truth: joints, gripper, at rest), or None
+        on real hardware."""
+        world = self.world
+        if world is None:
+            return None
+        return next((a for a in world.arms() if a.model.name == self.model.name), None)
 
     def move_to(
         self,
@@ -302,11 +314,8 @@ class Arm:
     def _jaws(self) -> float | None:
         """The jaws' opening [m]: as last set, else a simulated gripper's true one (kept
         between commands), else None (not known)."""
-        world = self.world
-        if self._opening is not None or world is None:
-            return self._opening
-        sim = next((a for a in world.arms() if a.model.name == self.model.name), None)
-        return None if sim is None else sim.grip()
+        sim = self.sim
+        return self._opening if self._opening is not None or sim is None else sim.grip()
 
     def _wait_until(self, q: F64, timeout: float) -> None:
         deadline = self.clock.now() + timeout

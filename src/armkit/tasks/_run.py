@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -65,12 +65,7 @@ def run_plan(arm: Arm, plan: Plan, say: Callable[[int, Step], None] | None = Non
 def settle(arm: Arm) -> None:
     """Wait until the arm and its gripper stand still: on a simulated arm until its
     truth is at rest (at most SETTLE_MAX_S of simulated time), else GRIP_S."""
-    world = arm.world
-    sim = (
-        None
-        if world is None
-        else next((a for a in world.arms() if a.model.name == arm.model.name), None)
-    )
+    sim = arm.sim
     if sim is None:
         arm.clock.sleep(GRIP_S)
         return
@@ -78,12 +73,3 @@ def settle(arm: Arm) -> None:
     while not sim.at_rest() and waited < SETTLE_MAX_S:
         arm.clock.sleep(0.01)
         waited += 0.01
-
-
-def sim_arm_of(arm: Arm) -> Any:
-    """The simulated arm (its truth, an ``armkit.sim.SimArm``) behind ``arm``, or None
-    on hardware (typed loosely: tasks reach the simulator through Arm only)."""
-    world = arm.world
-    if world is None:
-        return None
-    return next((a for a in world.arms() if a.model.name == arm.model.name), None)

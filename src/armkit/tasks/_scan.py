@@ -20,7 +20,7 @@ from ..scene import Scene
 from ..sensing import RANGE, DistanceSensor, SensorMount, install_sensor, open_sensor, volts
 from ._live import attached
 from ._plan import TaskError
-from ._run import settle, sim_arm_of
+from ._run import settle
 from ._state import Context, Options, State, moves, solve
 
 if TYPE_CHECKING:
@@ -165,7 +165,7 @@ def scan_sensor(
     """The distance sensor for ``scan``: on a simulated arm with the scene attached, a
     simulated GP2D120 installed at the scan's mount first (noise seeded ``seed``); read
     through the SSC-32 or an ADC board (``port``; see ``sensing.open_sensor``)."""
-    sim, physics = sim_arm_of(arm), attached(arm)
+    sim, physics = arm.sim, attached(arm)
     if sim is not None and physics is not None:
         install_sensor(sim, physics, scan.mount, channel=channel, seed=seed)
     lock = None if arm.world is None else arm.world.lock
