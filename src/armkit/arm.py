@@ -11,7 +11,7 @@ import math
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from types import TracebackType
-from typing import TYPE_CHECKING, NamedTuple
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -19,7 +19,7 @@ from numpy.typing import ArrayLike, NDArray
 from ._arm_inputs import Timing, number, numbers, pitch_radians, timing_of
 from ._closing import close_after
 from ._errors import DeviceError, InputError
-from .connect import World, open_driver, world_of
+from .connect import SimArm, World, open_driver, world_of
 from .drivers import Driver
 from .kinematics import fk, ik, pitch_follows, pitch_of
 from .model import MAX_MOVE_S as MAX_MOVE_S
@@ -36,9 +36,6 @@ from .motion import (
     retreat,
 )
 from .scene import Held, Scene, load_scene, move_refusal
-
-if TYPE_CHECKING:
-    from .sim import SimArm
 
 F64 = NDArray[np.float64]
 REACHED = math.radians(0.2)  # a move with a timeout is done when every joint is this close

@@ -34,6 +34,7 @@ from ..drivers import DRIVERS, Driver
 from ..drivers import driver_names as hardware_names
 from ..drivers import open_driver as open_hardware
 from ..model import ArmModel
+from ..sim import SimArm as SimArm
 from ..sim import World as World
 from ..sim import state_file
 from ..sim import world_of as world_of
@@ -181,6 +182,7 @@ def simulated_bus(baudrate: int, retries: int = 3) -> DynamixelBus:
 
 
 __all__ = [
+    "SimArm",
     "World",
     "auto_operator",
     "check_sim_port",
