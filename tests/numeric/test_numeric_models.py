@@ -12,10 +12,15 @@ from armkit.model import load_model
 def test_puma560_matches_the_toolbox_qz_and_qr_poses() -> None:
     model = load_model("puma560")
     assert model.dof == 6 and model.convention == "standard"
-    # Corke's Puma560: fkine(qz) = (0.4521, -0.15005, 1.1038); fkine(qr) = (0.0203, -0.15005, 1.5356)
-    np.testing.assert_allclose(fk(model, np.zeros(6))[:3, 3], [0.4521, -0.15005, 1.1038], atol=1e-4)
+    # Robotics Toolbox 1.5.0's DH Puma560 (base = 26.45 inch = 0.67183 m): fkine(qz) =
+    # (0.4521, -0.15005, 1.10363); fkine(qr) = (0.0203, -0.15005, 1.53543)
+    np.testing.assert_allclose(
+        fk(model, np.zeros(6))[:3, 3], [0.4521, -0.15005, 1.10363], rtol=0, atol=1e-12
+    )
     qr = np.array([0.0, np.pi / 2, -np.pi / 2, 0.0, 0.0, 0.0])
-    np.testing.assert_allclose(fk(model, qr)[:3, 3], [0.0203, -0.15005, 1.5356], atol=1e-4)
+    np.testing.assert_allclose(
+        fk(model, qr)[:3, 3], [0.0203, -0.15005, 1.53543], rtol=0, atol=1e-12
+    )
 
 
 def test_al5d_home_is_the_l_pose_with_a_level_hand() -> None:

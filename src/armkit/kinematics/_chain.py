@@ -24,7 +24,15 @@ from .._inputs import shown
 from ..model import ArmModel, JointFrame
 from ._closed_fast import FixedSolver, Q, fixed_solver
 from ._closed_free import FreeSolver, free_solver
-from ._family import PlanarFamily, Range, detect, joint_ranges, wrist_range
+from ._family import (
+    PlanarFamily,
+    Range,
+    base_pitch,
+    base_shift,
+    detect,
+    joint_ranges,
+    wrist_range,
+)
 from ._pose import pitch_scalar
 from ._state import Lanes, State, compile_state
 from ._steps import Fixed, Step, dense_frames, frames_of, steps_of
@@ -60,6 +68,9 @@ class Chain:
             (``_closed_fast``); None off the family.
         free: on a family arm with 3 planar joints, the closed form without a pitch (it
             chooses one; with 2 the pitch follows from the position), else None.
+        shift: on a family arm whose base axis is off the world origin (a URDF's root a
+            little beside it), that axis's (x, y) [m]: the family, ``home_pitch`` and the
+            closed-form solvers work in the frame moved there (``based``), else None.
     """
 
     name: str
@@ -87,6 +98,14 @@ class Chain:
     on_axis: int
     fixed: FixedSolver | None
     free: FreeSolver | None
+    shift: tuple[float, float] | None
+
+    def based(self, x: float, y: float, pitch: float | None) -> tuple[float, float, float | None]:
+        """A target's x, y [m] and pitch [rad] as the closed form takes them (see ``shift``)."""
+        if self.shift is None:
+            return x, y, pitch
+        bx, by = self.shift
+        return x - bx, y - by, None if pitch is None else base_pitch(pitch, x, y, bx, by)
 
 
 _CHAINS: dict[int, Chain] = {}
@@ -138,18 +157,22 @@ def compile_chain(model: ArmModel) -> Chain:
         )
     state, lanes = compile_state(steps, tool)
     at_zero = state([0.0] * model.dof)
+    shift = base_shift(at_zero.jw[0], at_zero.origins[0])
     T0 = np.eye(4)
     T0[:3, :3] = np.array(at_zero.R).T
-    T0[:3, 3] = at_zero.p
-    family = detect(at_zero.jw, at_zero.origins, T0)
+    T0[:3, 3] = at_zero.p[0] - shift[0], at_zero.p[1] - shift[1], at_zero.p[2]
+    origins = [(x - shift[0], y - shift[1], z) for x, y, z in at_zero.origins]
+    family = detect(at_zero.jw, origins, T0)
+    if isinstance(family, PlanarFamily) and family.lateral and shift != (0.0, 0.0):
+        family = "has its base axis off the world origin and its plane beside the base axis"
     fam = family if isinstance(family, PlanarFamily) else None
     lower = tuple(float(j.lower) for j in model.joints)
     upper = tuple(float(j.upper) for j in model.joints)
     home = tuple(float(j.home) for j in model.joints)
     at_home = state(list(home))
-    home_pitch = pitch_scalar(at_home.R[0], at_home.p)
+    home_pitch = pitch_scalar(at_home.R[0], (at_home.p[0] - shift[0], at_home.p[1] - shift[1]))
     wrist = wrist_range(fam, lower[fam.planar[1]], upper[fam.planar[1]]) if fam else (0.0, 0.0)
-    fixed, free = _solvers(fam, lower, upper, wrist, (home, home_pitch, state))
+    fixed, free = _solvers(fam, lower, upper, wrist, (home, home_pitch, state, shift))
     return Chain(
         name=model.name,
         dof=model.dof,
@@ -176,6 +199,7 @@ def compile_chain(model: ArmModel) -> Chain:
         on_axis=_on_axis(steps, tool, np.array(lower), np.array(upper), np.array(home)),
         fixed=fixed,
         free=free,
+        shift=shift if fam is not None and shift != (0.0, 0.0) else None,
     )
 
 
@@ -190,10 +214,10 @@ def _on_axis(steps: tuple[Step, ...], tool: Fixed, lower: F64, upper: F64, home:
 
 def _solvers(
     fam: PlanarFamily | None, lower: Q, upper: Q, wrist: tuple[float, float],
-    at_home: tuple[Q, float, State],
+    at_home: tuple[Q, float, State, tuple[float, float]],
 ) -> tuple[FixedSolver | None, FreeSolver | None]:  # fmt: skip
     """The closed-form solvers of a family arm (``_closed_fast``), None off the family;
-    ``at_home``: home [rad], the pitch there [rad] and the chain's scalar state."""
+    ``at_home``: home [rad], the pitch there [rad], the chain's scalar state and its shift."""
     if fam is None:
         return None, None
     solve = fixed_solver(fam, lower, upper)

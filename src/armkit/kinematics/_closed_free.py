@@ -17,12 +17,13 @@ from ._pose import pitch_scalar
 from ._state import State
 
 FreeSolver = Callable[[float, float, float, Q], "Found | None"]
+AtHome = tuple[Q, float, State, tuple[float, float]]  # home [rad], its pitch [rad], FK, shift [m]
 _TWO_PI = 2.0 * math.pi
 
 
 def free_solver(
     fam: PlanarFamily, solve: FixedSolver, reach: tuple[float, float],
-    base_range: tuple[float, float], at_home: tuple[Q, float, State],
+    base_range: tuple[float, float], at_home: AtHome,
 ) -> FreeSolver:  # fmt: skip
     """free(x, y, z, seed): position only (base yaw + 3 planar joints), every solution at the
     pitch nearest the seed's at which the wrist point is within the wrist ``reach`` =
@@ -31,7 +32,7 @@ def free_solver(
     line shoulder-target, d^2 = D^2 + L3^2 - 2 D L3 cos u: within reach for cos u in
     [c_lo, c_hi], so the nearest pitch is the seed's or a clamp of cos u
     (``_pitch_range.nearest_reachable`` for one target), then ``solve`` at it."""
-    home, home_pitch, _ = at_home
+    home, home_pitch = at_home[0], at_home[1]
     if fam.base is None or len(fam.planar) != 3 or fam.lateral != 0.0:
         return lambda x, y, z, seed: solve(x, y, z, seed_pitch(seed, at_home), seed, None)
     (c1x, c1z), (v3x, v3z), phi0 = fam.c1, fam.links[2], fam.phi0
@@ -99,10 +100,10 @@ def free_solver(
     return free
 
 
-def seed_pitch(seed: Q, at_home: tuple[Q, float, State]) -> float:
-    """The tool's pitch [rad] at joint angles ``seed`` [rad]."""
-    home, home_pitch, state = at_home
+def seed_pitch(seed: Q, at_home: AtHome) -> float:
+    """The tool's pitch [rad] at joint angles ``seed`` [rad], measured from the base axis."""
+    home, home_pitch, state, (bx, by) = at_home
     if seed is home or seed == home:
         return home_pitch
     st = state(list(seed))
-    return pitch_scalar(st.R[0], st.p)
+    return pitch_scalar(st.R[0], (st.p[0] - bx, st.p[1] - by))

@@ -39,7 +39,7 @@ def limited(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
 
 def preferred(chain: Chain, seed: Q) -> float:
     """The pitch [rad] of the tool at joint angles ``seed``."""
-    return seed_pitch(seed, (chain.home, chain.home_pitch, chain.state))
+    return seed_pitch(seed, (chain.home, chain.home_pitch, chain.state, chain.shift or (0.0, 0.0)))
 
 
 def refusal(
@@ -49,10 +49,11 @@ def refusal(
     the joint and limit when only the limits are in the way, else the reason. A base
     outside its limits is named only when no way round gives another reason."""
     assert chain.fixed is not None
-    if pitch is None and len(fam.planar) == 3:
-        pitch = preferred(chain, seed)
+    x, y, at = chain.based(p[0], p[1], pitch)
+    if at is None and len(fam.planar) == 3:
+        pitch = at = preferred(chain, seed)  # (said as measured from the base axis)
     misses = Misses()
-    chain.fixed(p[0], p[1], p[2], pitch, seed, misses)
+    chain.fixed(x, y, p[2], at, seed, misses)
     limits = [v for v in misses.violations if v[1] != fam.base]
     if limits or (misses.violations and not misses.reasons):
         _, i, value = min(limits or misses.violations)

@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ._lanes import LANES, Ops
+from ._lanes import FLOATS, LANES, Ops
 
 F64 = NDArray[np.float64]
 Bool = NDArray[np.bool_]
@@ -76,6 +76,28 @@ class PlanarFamily:
     l2: float
     ang1: float
     bend: float
+
+
+def base_shift(axis: Vec3, point: Vec3) -> tuple[float, float]:
+    """Where a vertical first joint axis (signed unit ``axis`` through ``point`` [m]) meets
+    the world's horizontal plane, (x, y) [m]; (0, 0) if it is not vertical or is at the
+    origin. The family is recognised in the world frame moved there, so a fixed offset
+    before the first joint (a URDF's root beside the base axis) keeps the closed form."""
+    if abs(axis[2]) <= 1 - _EPS or math.hypot(point[0], point[1]) < 1e-12:
+        return 0.0, 0.0
+    return point[0], point[1]
+
+
+def base_pitch(pitch: Lane, x: Lane, y: Lane, bx: float, by: float, ops: Ops = FLOATS) -> Lane:
+    """A pitch [rad] as ``pitch_of`` measures it (the horizontal direction from the world
+    origin to the target (x, y) [m]) measured instead from the base axis at (bx, by) [m].
+    The approach's horizontal part lies along the target's direction from the base axis,
+    so the two tangents differ by k, the cosine between the two directions."""
+    dx, dy = x - bx, y - by
+    d, rho = ops.hypot(dx, dy), ops.hypot(x, y)
+    far = (d > 1e-12) & (rho > 1e-12)
+    k = ops.where(far, (dx * x + dy * y) / ops.where(far, d * rho, 1.0), 1.0)
+    return ops.atan2(abs(k) * ops.sin(pitch), ops.where(k < 0.0, -1.0, 1.0) * ops.cos(pitch))
 
 
 def detect(axes: list[Vec3], points: list[Vec3], tool: F64) -> PlanarFamily | str:

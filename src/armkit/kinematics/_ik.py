@@ -14,7 +14,9 @@ from ..model import ArmModel
 from ._chain import _CHAINS, Chain, chain_of
 from ._closed import best, reasons, solve
 from ._closed_scalar import limited, refusal, too_far
+from ._family import base_pitch
 from ._forward import chunks
+from ._lanes import LANES
 from ._numeric import solve_many, solve_one
 from ._pitch_range import free_batch, preferred
 from ._result import IKBatchResult, IKResult
@@ -84,10 +86,11 @@ def ik(
         if pitch is None:
             pitch = chain.default_pitch
         free = chain.free
-        if pitch is not None or free is None:
-            found = solve(x, y, z, pitch, seed, None)
-        elif not (found := free(x, y, z, seed)):  # type: ignore[assignment]
-            found = [] if found is None else limited(chain, x, y, z, seed)
+        bx, by, at = (x, y, pitch) if chain.shift is None else chain.based(x, y, pitch)
+        if at is not None or free is None:
+            found = solve(bx, by, z, at, seed, None)
+        elif not (found := free(bx, by, z, seed)):  # type: ignore[assignment]
+            found = [] if found is None else limited(chain, bx, by, z, seed)
         if not found:
             if not x * x + y * y + z * z <= chain.reach2:
                 raise too_far(chain, p, pitch)
@@ -218,6 +221,11 @@ def ik_batch(
 def _closed_batch(chain: Chain, fam: Any, P: F64, pitch: F64 | None, seed: F64) -> IKBatchResult:
     """The vectorised closed form over cache-sized chunks of targets, with reasons."""
     free = pitch is None and len(fam.planar) == 3
+    if chain.shift is not None:  # the family's frame (``Chain.shift``)
+        sx, sy = chain.shift
+        if pitch is not None:
+            pitch = base_pitch(pitch, P[:, 0], P[:, 1], sx, sy, LANES)
+        P = P - [sx, sy, 0.0]
     if free:
         q, ok = free_batch(chain, fam, P, seed)
     else:

@@ -70,10 +70,14 @@ def limited_pitch(
 
 
 def preferred(chain: Chain, seed: F64) -> F64:
-    """The pitch [rad] of the tool at each seed (N, dof), shape (N,)."""
+    """The pitch [rad] of the tool at each seed (N, dof), shape (N,), from the base axis."""
     if (seed == chain.home_a).all():
         return np.full(len(seed), chain.home_pitch)
-    return np.asarray(pitch_of(poses(chain, seed)), dtype=np.float64)
+    T = poses(chain, seed)
+    if chain.shift is not None:  # measured from the base axis
+        T[:, 0, 3] -= chain.shift[0]
+        T[:, 1, 3] -= chain.shift[1]
+    return np.asarray(pitch_of(T), dtype=np.float64)
 
 
 def nearest_reachable(chain: Chain, fam: PlanarFamily, b: Planes, want: F64) -> tuple[F64, Bool]:

@@ -45,8 +45,9 @@ def pitch_lanes(a: tuple[F64, F64, F64], p: tuple[F64, F64]) -> F64:
     return np.asarray(np.arctan2(az, np.where(on_axis, np.hypot(ax, ay), along)))
 
 
-def pitch_scalar(a: Vec3, p: Vec3) -> float:
-    """``pitch_of`` for approach axis a and tool point p [m], in plain floats [rad]."""
+def pitch_scalar(a: Vec3, p: tuple[float, ...]) -> float:
+    """``pitch_of`` for approach axis a and tool point p [m] (x, y: z is not needed), in
+    plain floats [rad]."""
     rho = math.hypot(p[0], p[1])
     h = (a[0] * p[0] + a[1] * p[1]) / rho if rho >= 1e-9 else math.hypot(a[0], a[1])
     return math.atan2(a[2], h)
