@@ -55,10 +55,15 @@ class Backend(Protocol):
 
 
 class ScriptRunError(ScriptError):
-    """A statement failed while the script ran: names the line and the repeat iteration."""
+    """A statement failed while the script ran: names the line and the repeat iteration.
+
+    Attributes:
+        loc: the statement's place.  frames: the repeats and calls it ran in.
+        message: what failed, without the place and the frames.
+    """
 
     def __init__(self, source: str, loc: Loc, message: str, frames: tuple[Frame, ...]) -> None:
         context = "; ".join(collapse([f.describe() for f in reversed(frames)]))
         text = f"{source}:{loc.line}:{loc.col}: {message}"
         super().__init__(text + (f" ({context})" if context else ""))
-        self.loc, self.frames = loc, frames
+        self.loc, self.frames, self.message = loc, frames, message

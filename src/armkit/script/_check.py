@@ -56,6 +56,8 @@ class CheckResult:
         program: the statements.  model: the arm it was checked for.
         plan: every motion with its time.  diagnostics: every problem, in line order.
         setup: the header.  scene: the scene, if one was chosen.
+        first_error: the error the script meets first as it runs (where ``armkit run``
+            would stop), or None.
     """
 
     program: Program
@@ -64,6 +66,7 @@ class CheckResult:
     setup: Setup
     scene: SceneInfo | None
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    first_error: Diagnostic | None = None
 
     @property
     def ok(self) -> bool:
@@ -111,9 +114,9 @@ def check_source(
     if model is None:
         model = _model_from(setup.arm, here, diagnostics)
     if model is None:
-        return CheckResult(
-            program, load_model(DEFAULT_ARM), Plan(()), setup, None, sorted_unique(diagnostics)
-        )
+        found = sorted_unique(diagnostics)
+        first = next((d for d in diagnostics if d.severity == "error"), None)
+        return CheckResult(program, load_model(DEFAULT_ARM), Plan(()), setup, None, found, first)
     _check_arm(setup.arm, model, diagnostics)
     _check_driver(setup.driver, diagnostics)
     if scene is None and setup.scene is not None:
@@ -127,8 +130,10 @@ def check_source(
     _seed(walker, program, env)
     walker.walk(looped(program.statements, repeat))
     walker.finish()
+    # a parse, arm, driver or scene error stops a run before its first statement
+    first = next((d for d in diagnostics if d.severity == "error"), walker.first_error)
     diagnostics += walker.diagnostics + _job_diagnostics(program, require_jobs)
-    return CheckResult(program, model, arm.plan, setup, scene, sorted_unique(diagnostics))
+    return CheckResult(program, model, arm.plan, setup, scene, sorted_unique(diagnostics), first)
 
 
 def _seed(walker: Walker, program: Program, env: Env | None) -> None:

@@ -61,6 +61,8 @@ class Walker:
         self.budget = CHECK_BUDGET
         self.broken: set[str] = set()  # procedures whose definition did not parse
         self.redefine = False  # a procedure may be defined again (the shell)
+        self.first_error: Diagnostic | None = None  # the first met where it would run
+        self._unrun = 0  # inside bodies that do not run as written (repeat 0, ...)
 
     def walk(self, statements: Iterable[Statement]) -> None:
         """Execute ``statements`` in order."""
@@ -103,7 +105,10 @@ class Walker:
         notes = tuple(
             f.describe() for f in reversed(self.frames) if f.kind == "call" or f.iteration > 1
         )
-        self.diagnostics.append(Diagnostic(loc, message, severity, notes))
+        found = Diagnostic(loc, message, severity, notes)
+        self.diagnostics.append(found)
+        if severity == "error" and self.first_error is None and not self._unrun:
+            self.first_error = found
 
     def _dispatch(self, s: Statement) -> None:
         if isinstance(s, Repeat):
@@ -311,10 +316,12 @@ class Walker:
         poses = dict(self.resolver.poses)
         if binding is not None:
             self.resolver.bindings.append(binding)
+        self._unrun += 1
         try:
             with self.backend.blind():
                 self.walk(body)
         finally:
+            self._unrun -= 1
             if binding is not None:
                 self.resolver.bindings.pop()
             self.resolver.poses = poses
