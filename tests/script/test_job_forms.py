@@ -1,4 +1,4 @@
-"""Every job form of the README's script section RUNS on the simulator, not only
+"""Every job form of the scripts page (docs/scripts.md) RUNS on the simulator, not only
 checks: the job table once passed argument names the tasks did not take ('pick red'
 checked, then 'armkit run' died in a TypeError), which tests that only checked, or
 ran the example scripts (no pick, no place), did not see. A job argument its
@@ -21,7 +21,7 @@ from armkit.script._session import Session
 ROOT = Path(__file__).parents[2]
 EXAMPLES = ROOT / "examples" / "scripts"
 
-# each README job row -> scripts that run its forms (beyond examples/scripts/1*.arm)
+# each documented job row -> scripts that run its forms (beyond examples/scripts/1*.arm)
 FORMS: dict[str, list[str]] = {
     "pick CUBE / place WHERE": [
         "scene board_001\npick red\nplace board[0,0]",
@@ -50,16 +50,16 @@ FORMS: dict[str, list[str]] = {
 CASES = [(row, text) for row, texts in FORMS.items() for text in texts]
 
 
-def _readme_job_rows() -> list[str]:
-    """The first column of the README's jobs table, as written (backticks dropped)."""
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
+def _documented_job_rows() -> list[str]:
+    """The first column of the scripts page's jobs table, as written (backticks dropped)."""
+    text = (ROOT / "docs" / "scripts.md").read_text(encoding="utf-8")
     table = text.split("| job | arguments |", 1)[1].split("\n\n", 1)[0]
     rows = [re.split(r"(?<!\\)\|", line)[1].strip() for line in table.splitlines()[2:]]
     return [row.replace("`", "").replace("\\|", "|") for row in rows]
 
 
-def test_every_readme_job_row_has_forms_that_run() -> None:
-    assert sorted(_readme_job_rows()) == sorted(FORMS)
+def test_every_documented_job_row_has_forms_that_run() -> None:
+    assert sorted(_documented_job_rows()) == sorted(FORMS)
     written = {re.split(r"\s", text.splitlines()[-1].strip())[0] for _, text in CASES}
     assert set(JOBS) <= written | {"place", "pick"}
 

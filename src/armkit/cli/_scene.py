@@ -10,10 +10,7 @@ from .._errors import ArmkitError
 from .._terminal import count
 from ..scene import shipped_scenes
 
-SCENE_HELP = (
-    "scenes are TOML files in millimetres and degrees (see the README's 'Scenes and tasks'); "
-    "shipped: "
-)
+SCENE_HELP = "scenes are TOML files in millimetres and degrees (see docs/jobs/tasks.md); shipped: "
 
 
 def add_commands(sub: argparse._SubParsersAction[Any]) -> None:

@@ -26,7 +26,7 @@ if TYPE_CHECKING:
 DEFAULTS = {"arm": "openmanipulator_x", "driver": "sim"}
 UNITS_NOTE = (
     "Scripts are in mm, degrees and seconds unless a unit is written (cm, m, in, rad, ms, "
-    "min, %, mm/s). The grammar: 'armkit shell' then 'help', or the README's section."
+    "min, %, mm/s). The grammar: 'armkit shell' then 'help', or the documentation's Scripts page (docs/scripts.md)."
 )
 SHELL_EPILOG = (
     """\

@@ -1,6 +1,7 @@
-"""Every console command and Python snippet in README.md runs as written.
+"""Every console command and Python snippet of every page runs as written: README.md
+and each page of the documentation site (docs/**/*.md), one test per page.
 
-Console blocks run in order in a scratch directory that holds the repository's
+A page's console blocks run in order in a scratch directory of its own that holds the repository's
 files (``src``, ``benchmarks``, ``examples``, the Makefile, the virtual
 environment) through symlinks, with a fresh ``ARMKIT_CONFIG_DIR``. ``armkit``
 lines run in-process through ``armkit.cli.main``; a ``$`` line's output shown
@@ -11,7 +12,7 @@ in a shell. ``make`` targets are checked with ``make --dry-run`` (running them
 would rebuild this environment), and what they run is run directly.
 
 Nothing is skipped silently: the commands that are not run are listed in
-NOT_RUN with the reason, and each must still be in the README; benchmark runs
+NOT_RUN with the reason, and each must still be on some page; benchmark runs
 (``.venv/bin/python benchmarks/NAME.py``: timing runs of make bench, some
 installing peers from the network) are compiled, not run. Commands that serve
 until Ctrl-C (``armkit view``) are started, awaited and interrupted.
@@ -21,7 +22,6 @@ from __future__ import annotations
 
 import contextlib
 import io
-import math
 import os
 import re
 import shlex
@@ -37,18 +37,32 @@ from armkit._progress import LINE
 from armkit.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
-README = ROOT / "README.md"
-LINKED = ("src", "benchmarks", "examples", "Makefile", "pyproject.toml", ".venv")
+PAGES = sorted(
+    [ROOT / "README.md", *(ROOT / "docs").rglob("*.md")], key=lambda p: str(p.relative_to(ROOT))
+)
+PAGE_IDS = [str(p.relative_to(ROOT)) for p in PAGES]
+LINKED = (
+    "src",
+    "benchmarks",
+    "examples",
+    "docs",
+    "Makefile",
+    "pyproject.toml",
+    "mkdocs.yml",
+    ".venv",
+)
 
-NOT_RUN = {  # command (as in the README) -> why this test does not run it
+NOT_RUN = {  # command (as on its page) -> why this test does not run it
     "make test": "it is this test suite: `make --dry-run test` is checked instead",
     "make demo": "it installs into .venv: `make --dry-run demo` is checked and `armkit demo` run",
+    "make docs": "it installs the docs extra and builds the site: `make --dry-run docs` is checked (CI builds it)",
     "armkit --arm openmanipulator_x compare-ik --n 1000 --seed 0 --repeats 3":
         "a timing run of about a minute; compare-ik itself is run with --n 20 below",
 }  # fmt: skip
 INSTEAD = {
     "make test": ["make --dry-run test"],
     "make demo": ["make --dry-run demo", "armkit demo"],
+    "make docs": ["make --dry-run docs"],
     "armkit --arm openmanipulator_x compare-ik --n 1000 --seed 0 --repeats 3": [
         "armkit --arm openmanipulator_x compare-ik --n 20 --seed 0"
     ],
@@ -69,9 +83,9 @@ class Block:
     code: str = ""
 
 
-def blocks() -> list[Block]:
-    """The README's console and python blocks, in order."""
-    found, current, lines = [], None, README.read_text().splitlines()
+def blocks(page: Path) -> list[Block]:
+    """The page's console and python blocks, in order."""
+    found, current, lines = [], None, page.read_text(encoding="utf-8").splitlines()
     for n, text in enumerate(lines, 1):
         fence = re.match(r"^```(\w*)\s*$", text)
         if fence and current is None:
@@ -150,7 +164,7 @@ def _stdin(replacement: io.StringIO):  # type: ignore[no-untyped-def]
 
 
 def run(line: str, scratch: Path) -> tuple[int, str]:
-    """Run one README line; (exit status, what it printed)."""
+    """Run one line of a page; (exit status, what it printed)."""
     words = shlex.split(line)
     ready = serves(words)
     if ready is not None:
@@ -171,9 +185,10 @@ def run(line: str, scratch: Path) -> tuple[int, str]:
 BENCHMARK = re.compile(r"^(?:\w+=\S+\s+)*\.venv/bin/python (benchmarks/\w+\.py)\b")
 
 
-def test_every_console_command_runs_as_written(scratch: Path) -> None:
-    ran, skipped = 0, set()
-    for block in [b for b in blocks() if b.kind == "console"]:
+def run_page(page: Path, scratch: Path) -> tuple[int, set[str]]:
+    """Run every console command of ``page`` in order; (commands run, NOT_RUN lines met)."""
+    ran, skipped, name = 0, set(), page.relative_to(ROOT)
+    for block in [b for b in blocks(page) if b.kind == "console"]:
         for command in block.commands:
             bench = BENCHMARK.match(command.line)
             if bench:  # timing runs (make bench; some install peers): compiled, not run
@@ -187,7 +202,7 @@ def test_every_console_command_runs_as_written(scratch: Path) -> None:
                 lines = [command.line]
             for line in lines:
                 code, printed = run(line, scratch)
-                where = f"README.md line {block.start}: {line}\n{printed}"
+                where = f"{name} line {block.start}: {line}\n{printed}"
                 expected = command.expected if line == command.line else None
                 if expected and any(t.startswith("armkit: error:") for t in expected):
                     assert code == 2, where
@@ -197,17 +212,32 @@ def test_every_console_command_runs_as_written(scratch: Path) -> None:
                     shown = [t for t in printed.rstrip("\n").splitlines() if not LINE.match(t)]
                     assert shown == expected, where
                 ran += 1
-    assert skipped == set(NOT_RUN), f"NOT_RUN lists commands the README no longer has: {set(NOT_RUN) - skipped}"  # fmt: skip
-    assert ran >= 30
+    return ran, skipped
 
 
-def test_every_python_snippet_runs_as_written(scratch: Path) -> None:
-    snippets = [b for b in blocks() if b.kind == "python"]
-    assert len(snippets) >= 2
-    for block in snippets:
-        namespace: dict[str, object] = {"__name__": "__readme__"}
+@pytest.mark.parametrize("page", PAGES, ids=PAGE_IDS)
+def test_every_console_command_runs_as_written(page: Path, scratch: Path) -> None:
+    ran, _ = run_page(page, scratch)
+    commands = [c for b in blocks(page) if b.kind == "console" for c in b.commands]
+    assert ran or all(BENCHMARK.match(c.line) for c in commands)
+
+
+def test_the_pages_hold_what_is_not_run_and_enough_is_run() -> None:
+    lines = {c.line for p in PAGES for b in blocks(p) if b.kind == "console" for c in b.commands}
+    assert set(NOT_RUN) <= lines, f"NOT_RUN lists commands no page has: {set(NOT_RUN) - lines}"
+    assert len(lines - set(NOT_RUN)) >= 100
+
+
+@pytest.mark.parametrize("page", PAGES, ids=PAGE_IDS)
+def test_every_python_snippet_runs_as_written(page: Path, scratch: Path) -> None:
+    for block in [b for b in blocks(page) if b.kind == "python"]:
+        namespace: dict[str, object] = {"__name__": "__docs__"}
+        name = page.relative_to(ROOT)
         try:
-            exec(compile(block.code, f"README.md:{block.start}", "exec"), namespace)
+            exec(compile(block.code, f"{name}:{block.start}", "exec"), namespace)
         except Exception as exc:
-            pytest.fail(f"README.md line {block.start}: {type(exc).__name__}: {exc}")
-    assert math.pi  # (math is what the first snippet imports; keep the import honest)
+            pytest.fail(f"{name} line {block.start}: {type(exc).__name__}: {exc}")
+
+
+def test_the_pages_have_python_snippets() -> None:
+    assert sum(b.kind == "python" for p in PAGES for b in blocks(p)) >= 8
