@@ -12,7 +12,7 @@ def test_puma_full_pose_batch() -> None:
     m = load_model("puma560")
     q = np.random.default_rng(11).uniform(m.lower, m.upper, (100, 6))
     T = fk(m, q)
-    res = ik_batch(m, T[:, :3, 3], orientations=T[:, :3, :3])
+    res = ik_batch(m, T[:, :3, 3], orientations=T[:, :3, :3], method="lm")
     assert res.method == "lm" and res.ok.all() and m.within_limits(res.q).all()
     got = fk(m, res.q)
     assert np.linalg.norm(got[:, :3, 3] - T[:, :3, 3], axis=1).max() < 1e-5  # tol_mm = 0.01

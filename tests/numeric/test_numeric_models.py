@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from numeric_cases import TOL_ANG, TOL_POS, assert_reaches, target_for
 
-from armkit.kinematics import fk, ik, why_no_closed_form
+from armkit.kinematics import closed_form, fk, ik, why_no_closed_form
 from armkit.model import load_model
 
 
@@ -30,10 +30,11 @@ def test_al5d_home_is_the_l_pose_with_a_level_hand() -> None:
     np.testing.assert_allclose(T[:3, :3], np.eye(3), atol=1e-9)
 
 
-def test_closed_form_declines_the_puma_and_ik_uses_lm() -> None:
+def test_the_puma_gets_the_spherical_wrist_closed_form_and_lm_on_request() -> None:
     model = load_model("puma560")
-    assert why_no_closed_form(model)
+    assert why_no_closed_form(model) and closed_form(model) == "spherical wrist"
     target = target_for(model, np.radians([30.0, 100.0, -150.0, 20.0, 40.0, 10.0]), "pose")
-    result = ik(model, target.position, orientation=target.orientation)
-    assert result.method == "lm"
-    assert_reaches(model, result.q, target, TOL_POS, TOL_ANG)
+    for method in ("auto", "lm"):
+        result = ik(model, target.position, orientation=target.orientation, method=method)
+        assert result.method == ("lm" if method == "lm" else "analytic")
+        assert_reaches(model, result.q, target, TOL_POS, TOL_ANG)

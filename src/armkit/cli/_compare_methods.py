@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError, UnreachableError
-from ..kinematics import IKBatchResult, fk, ik, ik_batch, pitch_of, why_no_closed_form
+from ..kinematics import IKBatchResult, closed_form, fk, ik, ik_batch, pitch_of
 from ..model import ArmModel
 
 F64 = NDArray[np.float64]
@@ -74,8 +74,10 @@ def reachable_targets(model: ArmModel, n: int, seed: int, task: str) -> Targets:
 
 
 def applicable_methods(model: ArmModel, task: str) -> tuple[str, ...]:
-    """The methods that apply: the closed form only for its family, without orientation."""
-    closed = not why_no_closed_form(model) and task != "pose"
+    """The methods that apply: the closed form only for its family (yaw + planar without
+    an orientation, a spherical wrist with one)."""
+    family = closed_form(model)
+    closed = (family == "spherical wrist") == (task == "pose") and family != ""
     return tuple(m for m in METHODS if m != "analytic" or closed)
 
 

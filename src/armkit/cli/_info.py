@@ -6,7 +6,7 @@ import argparse
 import math
 from typing import Any
 
-from ..kinematics import why_no_closed_form
+from ..kinematics import closed_form
 from ..model import ArmModel, load_model, shipped_models
 from ._table import table
 
@@ -29,7 +29,7 @@ def run_arms(args: argparse.Namespace) -> int:
     rows = []
     for name in shipped_models():
         m = load_model(name)
-        closed = "numeric" if why_no_closed_form(m) else "closed form"
+        closed = "closed form" if closed_form(m) else "numeric"
         rows.append([name, m.dof, ", ".join(m.joint_names), closed, m.description])
     print(table(["arm", "dof", "joints", "ik", "description"], rows))
     return 0
@@ -65,7 +65,7 @@ def run_show(args: argparse.Namespace) -> int:
     else:
         print("gripper: none (the model gives no [gripper] width_mm range)")
     pitch = "free" if m.default_pitch is None else f"{math.degrees(m.default_pitch):.1f} deg"
-    family = "numeric" if why_no_closed_form(m) else "closed form (base yaw + planar chain)"
+    family = f"closed form ({closed_form(m)})" if closed_form(m) else "numeric"
     print(f"pitch when none is given: {pitch}; inverse kinematics: {family}")
     return 0
 

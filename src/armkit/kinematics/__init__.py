@@ -6,6 +6,7 @@ from ._forward import fk_frames as fk_frames
 from ._forward import frames_on_base_axis as frames_on_base_axis
 from ._forward import jacobian as jacobian
 from ._ik import MethodName as MethodName
+from ._ik import closed_form as closed_form
 from ._ik import ik as ik
 from ._ik import ik_batch as ik_batch
 from ._ik import pitch_follows as pitch_follows

@@ -36,6 +36,7 @@ from ._family import (
 from ._pose import pitch_scalar
 from ._state import Lanes, State, compile_state
 from ._steps import Fixed, Step, dense_frames, frames_of, steps_of
+from ._wrist import WristFamily, WristSolver, wrist_family, wrist_solver
 
 F64 = NDArray[np.float64]
 
@@ -71,6 +72,8 @@ class Chain:
         shift: on a family arm whose base axis is off the world origin (a URDF's root a
             little beside it), that axis's (x, y) [m]: the family, ``home_pitch`` and the
             closed-form solvers work in the frame moved there (``based``), else None.
+        wrist, wrist_solve: a spherical-wrist arm's geometry and its scalar full-pose
+            closed form (``_wrist``), else None.
     """
 
     name: str
@@ -99,6 +102,8 @@ class Chain:
     fixed: FixedSolver | None
     free: FreeSolver | None
     shift: tuple[float, float] | None
+    wrist: WristFamily | None
+    wrist_solve: WristSolver | None
 
     def based(self, x: float, y: float, pitch: float | None) -> tuple[float, float, float | None]:
         """A target's x, y [m] and pitch [rad] as the closed form takes them (see ``shift``)."""
@@ -166,6 +171,7 @@ def compile_chain(model: ArmModel) -> Chain:
     if isinstance(family, PlanarFamily) and family.lateral and shift != (0.0, 0.0):
         family = "has its base axis off the world origin and its plane beside the base axis"
     fam = family if isinstance(family, PlanarFamily) else None
+    wf = None if fam else wrist_family(at_zero.jw, origins, T0, shift)
     lower = tuple(float(j.lower) for j in model.joints)
     upper = tuple(float(j.upper) for j in model.joints)
     home = tuple(float(j.home) for j in model.joints)
@@ -200,6 +206,8 @@ def compile_chain(model: ArmModel) -> Chain:
         fixed=fixed,
         free=free,
         shift=shift if fam is not None and shift != (0.0, 0.0) else None,
+        wrist=wf if isinstance(wf, WristFamily) else None,
+        wrist_solve=wrist_solver(wf, lower, upper) if isinstance(wf, WristFamily) else None,
     )
 
 

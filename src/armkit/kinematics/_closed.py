@@ -10,11 +10,11 @@ where it can be, and the valid candidate nearest the seed wins.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Protocol
 
 import numpy as np
 from numpy.typing import NDArray
 
-from ._chain import Chain
 from ._family import PITCH_TOLERANCE, PlanarFamily, Planes, planes, turn_of
 from ._pose import pitch_of_phi
 
@@ -28,6 +28,17 @@ STRAIGHT = 1.0 - 1e-12  # cos of the elbow beyond it: straight or folded (1e-13 
 # outside its limits ranks last: that way round is closed, the other way says why.
 BASE, PITCH, TOO_CLOSE, TOO_FAR, JOINT_LIMIT = 1, 2, 3, 4, 5
 WHY = np.array(["too_far", "joint_limit", "pitch", "too_close", "too_far", "joint_limit"])
+
+
+class Limits(Protocol):
+    """What the solvers read of a chain: its joint count and limits [rad]."""
+
+    @property
+    def dof(self) -> int: ...
+    @property
+    def lower(self) -> tuple[float, ...]: ...
+    @property
+    def upper(self) -> tuple[float, ...]: ...
 
 
 @dataclass(frozen=True)
@@ -64,7 +75,7 @@ class Candidates:
 
 
 def solve(
-    chain: Chain, fam: PlanarFamily, P: F64, pitch: F64 | None, seed: F64, b: Planes | None = None
+    chain: Limits, fam: PlanarFamily, P: F64, pitch: F64 | None, seed: F64, b: Planes | None = None
 ) -> Candidates:
     """Every candidate for targets P (N, 3) [m] at ``pitch`` (N,) [rad] (None: 2 planar
     joints, the pitch follows), seeds (N, dof) [rad] (and their ``planes`` if known):
@@ -118,7 +129,7 @@ def wrap(v: F64, lo: float, hi: float) -> tuple[F64, Bool]:
 
 
 def _branches(
-    chain: Chain, fam: PlanarFamily, b: Planes, pitch: F64 | None, out: F64
+    chain: Limits, fam: PlanarFamily, b: Planes, pitch: F64 | None, out: F64
 ) -> tuple[Bool, Checks]:
     """Fill both elbow candidates (dof, 2, B * N) of every base branch; return where each
     fits (2, B * N) and the checks that say why not."""

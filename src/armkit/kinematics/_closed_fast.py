@@ -60,6 +60,7 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
     rem, floor, straight, ptol = math.remainder, math.floor, _STRAIGHT, PITCH_TOLERANCE
     yaw3 = base == 0 and fam.planar == (1, 2, 3)  # the common layout: joints in order
     pair = base is None and fam.planar == (0, 1) and dof == 2
+    yaw2 = base == 0 and fam.planar == (1, 2) and dof == 3  # a spherical wrist's arm
 
     def solve(
         x: float, y: float, z: float, pitch: float | None, seed: Q, misses: Misses | None
@@ -154,6 +155,10 @@ def fixed_solver(fam: PlanarFamily, lower: Q, upper: Q) -> FixedSolver:
                     d1, d2 = v1 - seed[0], v2 - seed[1]
                     found.append((d1 * d1 + d2 * d2, (v1, v2)))
                     continue
+                elif yaw2:
+                    d0, d1, d2 = q0 - seed[0], v1 - seed[1], v2 - seed[2]
+                    found.append((d0 * d0 + d1 * d1 + d2 * d2, (q0, v1, v2)))
+                    continue
                 q = list(seed)
                 q[j1], q[j2] = v1, v2
                 if three:
@@ -173,10 +178,19 @@ def _ways(
 ) -> tuple[tuple[float, float], ...] | Reason:
     """(plane radius r (signed) [m], base angle q0 [rad]) per base branch of the target
     (x, y, z) [m] (``_family.planes``), or why there is none."""
-    rho = math.hypot(x, y)
-    if fam.base is not None and not fam.lateral and rho >= 1e-12:  # as ``solve``'s ``plain``
-        heading = fam.base_sign * (math.atan2(y, x) - fam.azimuth_r)
-        return (rho, heading), (-rho, heading + fam.base_sign * math.pi)
+    rho, lat, bs = math.hypot(x, y), fam.lateral, fam.base_sign
+    if fam.base is not None and rho >= 1e-12:  # ``planes`` off the base axis, in floats
+        heading = math.atan2(y, x) - fam.azimuth_r
+        if not lat:  # as ``solve``'s ``plain``
+            return (rho, bs * heading), (-rho, bs * heading + bs * math.pi)
+        r2 = rho * rho - lat * lat
+        if r2 < -1e-18:
+            return "too_close"
+        r = math.sqrt(max(r2, 0.0))
+        return (r, bs * (heading - math.atan2(-lat, r))), (
+            -r,
+            bs * (heading - math.atan2(-lat, -r)),
+        )
     b = planes(fam, np.array([[x, y, z]]), np.array([seed]))
     if b.bad[0]:
         return "off_plane" if fam.base is None else "too_close"

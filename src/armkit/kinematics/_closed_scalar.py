@@ -69,6 +69,28 @@ def refusal(
     return UnreachableError(f"{chain.name} cannot reach {where(p, pitch)}: {why}", reason=reason)
 
 
+def wrist_refusal(chain: Chain, p: Q, R9: Q, seed: Q) -> UnreachableError:
+    """Why no solution of the spherical-wrist closed form fits ``p`` [m] with rotation R9:
+    a limit of the first three joints by name, else the position's reason, else the wrist."""
+    assert chain.wrist_solve is not None
+    misses = Misses()
+    chain.wrist_solve(p[0], p[1], p[2], R9, seed, misses)
+    if misses.violations:
+        _, i, value = min(misses.violations)
+        lo, hi = math.degrees(chain.lower[i]), math.degrees(chain.upper[i])
+        return UnreachableError(
+            f"{chain.name} cannot reach {mm(p)} with that orientation inside its limits: "
+            f"{chain.joint_names[i]} would be {math.degrees(value):.1f} deg, allowed "
+            f"{lo:.1f}..{hi:.1f} deg; try a point nearer the middle of the reach",
+            reason="joint_limit",
+        )
+    reason: Reason = next((r for r in EXPLAIN if r in misses.reasons), "joint_limit")
+    why = EXPLAIN.get(reason, WRIST)
+    return UnreachableError(
+        f"{chain.name} cannot reach {mm(p)} with that orientation: {why}", reason=reason
+    )
+
+
 def too_far(chain: Chain, p: Q, pitch: float | None) -> UnreachableError:
     """The error for a target beyond every pose's reach."""
     return UnreachableError(
@@ -88,6 +110,7 @@ EXPLAIN: dict[Reason, str] = {
     "pitch": "on the base axis the gripper's pitch is within -90..90 deg; give one in that"
     " range, or move the point off the axis",
 }
+WRIST = "the wrist cannot turn to that orientation inside its limits; try another orientation"
 TWO_PLANAR = (
     "the pitch follows from the position on an arm with two planar joints; leave the pitch out"
 )

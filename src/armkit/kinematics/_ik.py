@@ -13,7 +13,7 @@ from .._inputs import angle, array, choice, joints, point, rotation, tolerance
 from ..model import ArmModel
 from ._chain import _CHAINS, Chain, chain_of
 from ._closed import best, reasons, solve
-from ._closed_scalar import limited, refusal, too_far
+from ._closed_scalar import limited, refusal, too_far, wrist_refusal
 from ._family import base_pitch
 from ._forward import chunks
 from ._lanes import LANES
@@ -21,6 +21,7 @@ from ._numeric import solve_many, solve_one
 from ._pitch_range import free_batch, preferred
 from ._result import IKBatchResult, IKResult
 from ._target import Target
+from ._wrist import solve_wrist_batch
 
 F64 = NDArray[np.float64]
 MethodName = Literal["auto", "analytic", "lm", "ccd", "jacobian", "random"]
@@ -81,6 +82,16 @@ def ik(
     tols = TOLS
     if tol_m is not TOL_M or tol_rad is not TOL_RAD:  # checked as given, closed form or not
         tols = (tolerance(tol_m, "tol_m"), tolerance(tol_rad, "tol_rad"))
+    wrist = chain.wrist_solve
+    if wrist is not None and orientation is not None and (method == "auto" or method == "analytic"):
+        R9 = _rotation9(orientation)
+        if pitch is not None:
+            raise InputError("give pitch or orientation, not both")
+        if not (found := wrist(x, y, z, R9, seed, None)):
+            if not x * x + y * y + z * z <= chain.reach2:
+                raise too_far(chain, p, None)
+            raise wrist_refusal(chain, p, R9, seed)
+        return IKResult.of(found, (p, None, R9), chain)
     solve = chain.fixed
     if solve is not None and orientation is None and (method == "auto" or method == "analytic"):
         if pitch is None:
@@ -98,6 +109,24 @@ def ik(
             raise refusal(chain, chain.family, p, pitch, seed)
         return IKResult.of(found, (p, pitch, None), chain)
     return _numeric_ik(chain, p, pitch, seed, orientation, method, tols)
+
+
+def _rotation9(orientation: ArrayLike) -> tuple[float, ...]:
+    """A rotation matrix checked as ``_inputs.rotation`` checks it, row-major: in plain
+    floats for a (3, 3) float array (a microsecond, where numpy's check costs tens)."""
+    if isinstance(orientation, np.ndarray) and orientation.shape == (3, 3):
+        R = a, b, c, d, e, f, g, h, i = orientation.ravel().tolist()
+        if (
+            abs(a * a + b * b + c * c - 1.0) <= 1e-6
+            and abs(d * d + e * e + f * f - 1.0) <= 1e-6
+            and abs(g * g + h * h + i * i - 1.0) <= 1e-6
+            and abs(a * d + b * e + c * f) <= 1e-6
+            and abs(a * g + b * h + c * i) <= 1e-6
+            and abs(d * g + e * h + f * i) <= 1e-6
+            and a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g) > 0.0
+        ):  # NaN fails every comparison: checked below, with the error
+            return tuple(R)
+    return tuple(rotation(orientation, "orientation").ravel().tolist())
 
 
 def _seed(chain: Chain, q_seed: ArrayLike) -> tuple[float, ...]:
@@ -128,8 +157,18 @@ def _numeric_ik(
 
 
 def why_no_closed_form(model: ArmModel) -> str:
-    """'' if the closed form applies to ``model``, else one line saying why not."""
+    """'' if the yaw + planar closed form (position and pitch) applies to ``model``, else
+    one line saying why not (see ``closed_form`` for the spherical wrist's)."""
     return chain_of(model).why_not
+
+
+def closed_form(model: ArmModel) -> str:
+    """The closed form that ``model`` gets: ``"base yaw + planar chain"`` (position, pitch),
+    ``"spherical wrist"`` (full pose), or ``""`` (numeric only)."""
+    chain = chain_of(model)
+    if chain.family is not None:
+        return "base yaw + planar chain"
+    return "spherical wrist" if chain.wrist is not None else ""
 
 
 def pitch_follows(model: ArmModel) -> bool:
@@ -152,6 +191,8 @@ def _numeric_method(
     name = choice(method, "method", METHOD_NAMES)
     if name == "analytic":
         why = chain.why_not or "the closed form takes a position and a pitch, not an orientation"
+        if chain.wrist is not None:
+            why = "the spherical-wrist closed form takes a full orientation"
         raise InputError(
             f"method 'analytic' does not apply: {why}; use a numeric method such as 'lm'"
         )
@@ -207,6 +248,13 @@ def ik_batch(
     fam = chain.family
     if fam is not None and orientations is None and name in ("auto", "analytic"):
         return _closed_batch(chain, fam, P, pitch, seed)
+    if chain.wrist is not None and orientations is not None and name in ("auto", "analytic"):
+        if pitch is not None:
+            raise InputError("give pitches or orientations, not both")
+        Rw = rotation(orientations, "orientations", n)
+        q, ok = solve_wrist_batch(chain.wrist, chain.lower, chain.upper, P, Rw, seed)
+        reason = np.where(ok, "", "joint_limit").astype("<U14")  # near ones; far: too_far
+        return IKBatchResult(q, ok, reason, "analytic")
     use = _numeric_method(chain, name, orientations)
     if use != "lm":
         raise InputError(f"ik_batch solves with 'analytic' or 'lm', got {method!r}")
