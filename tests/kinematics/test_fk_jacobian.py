@@ -88,3 +88,28 @@ def test_fk_rejects_bad_q(bad: object) -> None:
     m = load_model("openmanipulator_x")
     with pytest.raises(ValueError, match="q"):
         fk(m, bad)  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("name", [*ARMS, "al5d", "puma560"])
+def test_the_single_pose_fast_path_is_pinned_to_the_dense_product(name: str) -> None:
+    """fk of one float array runs the generated pose code (issue 29.4); every other input
+    form and the dense frames agree with it to the last bits."""
+    m = load_model(name)
+    q = np.random.default_rng(8).uniform(m.lower, m.upper, (300, m.dof))
+    dense = fk_frames(m, q)[:, -1]
+    for i in range(len(q)):
+        fast = fk(m, q[i])
+        assert fast.shape == (4, 4) and fast.dtype == np.float64
+        assert np.abs(fast - dense[i]).max() < 1e-15
+        assert np.array_equal(fast, fk(m, q[i].tolist())) and np.array_equal(
+            fast, fk(m, q[i : i + 1])[0]
+        )
+
+
+def test_the_fast_path_keeps_the_checks() -> None:
+    m = load_model("openmanipulator_x")
+    for bad in ([0.0, np.nan, 0.0, 0.0], [np.inf, -np.inf, 0.0, 0.0], [0.0, 0.0, 0.0]):
+        with pytest.raises(ValueError, match="q"):
+            fk(m, np.array(bad))
+    big = np.array([1e308, 1e308, 0.0, 0.0])  # finite, though their sum is not
+    assert np.isfinite(fk(m, big)).all()

@@ -34,7 +34,7 @@ from ._family import (
     wrist_range,
 )
 from ._pose import pitch_scalar
-from ._state import Lanes, State, compile_state
+from ._state import Lanes, Pose, State, compile_state
 from ._steps import Fixed, Step, dense_frames, frames_of, steps_of
 from ._wrist import WristFamily, WristSolver, wrist_family, wrist_solver
 
@@ -49,7 +49,8 @@ class Chain:
         name: the model's name.  dof: number of joints.
         steps, tool: the chain (see ``_steps``).
         state, lanes: the forward kinematics of one q (dof floats) [rad] and of N (dof
-            lanes (N,)) [rad], each -> ``ChainState`` (see ``_state``).
+            lanes (N,)) [rad], each -> ``ChainState`` (see ``_state``); pose: one q -> the
+            tool pose's 16 entries, row-major (``fk``'s fast path).
         lower, upper, home: joint limits and home [rad] as Python floats;
         lower_a, upper_a, home_a: the same as arrays, shape (dof,).
         joint_names: the joints' names.
@@ -82,6 +83,7 @@ class Chain:
     tool: Fixed
     state: State
     lanes: Lanes
+    pose: Pose
     lower: tuple[float, ...]
     upper: tuple[float, ...]
     home: tuple[float, ...]
@@ -160,7 +162,7 @@ def compile_chain(model: ArmModel) -> Chain:
             f"{model.name}: the links add up to {reach:.3g} m; armkit's kinematics takes arms "
             f"up to {MAX_REACH / 1000:g} km (check the model's lengths are in mm)"
         )
-    state, lanes = compile_state(steps, tool)
+    state, lanes, pose = compile_state(steps, tool)
     at_zero = state([0.0] * model.dof)
     shift = base_shift(at_zero.jw[0], at_zero.origins[0])
     T0 = np.eye(4)
@@ -186,6 +188,7 @@ def compile_chain(model: ArmModel) -> Chain:
         tool=tool,
         state=state,
         lanes=lanes,
+        pose=pose,
         lower=lower,
         upper=upper,
         home=home,

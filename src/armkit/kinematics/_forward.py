@@ -14,8 +14,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._inputs import joints
 from ..model import ArmModel
-from ._chain import Chain, chain_of
-from ._state import ChainState
+from ._chain import _CHAINS, Chain, chain_of
 from ._steps import dense_frames
 
 F64 = NDArray[np.float64]
@@ -38,10 +37,15 @@ def fk(model: ArmModel, q: ArrayLike) -> F64:
         Homogeneous transform(s) [m], shape (4, 4) or (N, 4, 4). The tool frame's
         x axis is the approach direction.
     """
-    chain = chain_of(model)
+    chain = _CHAINS.get(id(model)) or chain_of(model)
+    if q.__class__ is np.ndarray and q.shape == (chain.dof,) and q.dtype == np.float64:  # type: ignore[union-attr]
+        v = q.tolist()  # type: ignore[union-attr]
+        s = sum(v)
+        if s - s == 0.0:  # every angle finite (checked in full below where not)
+            return np.array(chain.pose(v)).reshape(4, 4)
     qa = joints(q, chain.dof)
     if qa.ndim == 1:
-        return pose_of(chain.state(qa.tolist()))
+        return np.array(chain.pose(qa.tolist())).reshape(4, 4)
     return poses(chain, qa)
 
 
@@ -84,13 +88,6 @@ def jacobian(model: ArmModel, q: ArrayLike) -> F64:
     qa = joints(q, chain.dof)
     J = jacobians(chain, qa.reshape(-1, chain.dof))[1]
     return J[0] if qa.ndim == 1 else J
-
-
-def pose_of(st: ChainState[float]) -> F64:
-    """The 4x4 tool pose [m] of a scalar chain state."""
-    (ax, ay, az), (bx, by, bz), (cx, cy, cz) = st.R
-    px, py, pz = st.p
-    return np.array([[ax, bx, cx, px], [ay, by, cy, py], [az, bz, cz, pz], [0.0, 0.0, 0.0, 1.0]])
 
 
 def poses(chain: Chain, q: F64) -> F64:

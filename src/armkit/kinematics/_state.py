@@ -63,22 +63,25 @@ class ChainState(Generic[N]):
 
 State = Callable[[list[float]], ChainState[float]]
 Lanes = Callable[[list[NDArray[np.float64]]], ChainState[NDArray[np.float64]]]
+Pose = Callable[[list[float]], tuple[float, ...]]
 
 
-def compile_state(steps: tuple[Step, ...], tool: Fixed) -> tuple[State, Lanes]:
+def compile_state(steps: tuple[Step, ...], tool: Fixed) -> tuple[State, Lanes, Pose]:
     """The chain's functions q (dof floats) [rad] -> ``ChainState``, and q (dof lanes (N,))
-    [rad] -> ``ChainState`` of lanes: one source (``source_of``) compiled twice."""
-    code = compile(source_of(steps, tool), "<armkit chain>", "exec")
+    [rad] -> ``ChainState`` of lanes: one source (``source_of``) compiled twice; and the
+    same source without the axes, q -> the tool pose's 16 entries row-major (``fk``'s)."""
     out: list[Any] = []
-    for xm in (math, np):
+    for xm, pose in ((math, False), (np, False), (math, True)):
+        code = compile(source_of(steps, tool, pose), "<armkit chain>", "exec")
         namespace: dict[str, Any] = {"cos": xm.cos, "sin": xm.sin, "ChainState": ChainState}
         exec(code, namespace)
         out.append(namespace["chain_state"])
-    return out[0], out[1]
+    return out[0], out[1], out[2]
 
 
-def source_of(steps: tuple[Step, ...], tool: Fixed) -> str:
-    """Python source of ``chain_state(q)`` for one chain (see the module docstring)."""
+def source_of(steps: tuple[Step, ...], tool: Fixed, pose: bool = False) -> str:
+    """Python source of ``chain_state(q)`` for one chain (see the module docstring); with
+    ``pose``, of the tool pose alone as 16 floats, row-major."""
     n = len(steps)
     lines = [
         "def chain_state(q):",
@@ -87,8 +90,12 @@ def source_of(steps: tuple[Step, ...], tool: Fixed) -> str:
         "    px = py = pz = 0.0",
     ]
     for i, step in enumerate(steps):
-        lines += ["    " + s for s in _fixed(step.before) + _joint(i, step)]
+        lines += ["    " + s for s in _fixed(step.before) + _joint(i, step)[2 * pose :]]
     lines += ["    " + s for s in _fixed(tool)]
+    if pose:
+        row = "a{0}, b{0}, c{0}, p{0}"
+        rows = ", ".join(row.format(x) for x in "xyz")
+        return "\n".join([*lines, f"    return ({rows}, 0.0, 0.0, 0.0, 1.0)"]) + "\n"
     axes, origins = ", ".join(f"z{i}" for i in range(n)), ", ".join(f"o{i}" for i in range(n))
     lines.append(
         "    return ChainState((px, py, pz), ((ax, ay, az), (bx, by, bz), (cx, cy, cz)), "
