@@ -116,6 +116,6 @@ def test_velocity_based_profile_units(emu: DynamixelEmulator, bus: DynamixelBus)
     assert bus.read(11, "Goal Position") == 3048  # the round trip orders it after the write
     velocity, accel = 100 * 0.229 * 4096 / 60, 50 * 214.577 * 4096 / 3600  # tick/s, tick/s^2
     with emu.lock:
-        profile = emu.servos[11].profile
+        profile = emu.servos[11].motion
     assert profile.ramp == pytest.approx(velocity / accel)
     assert profile.total == pytest.approx(1000 / velocity + velocity / accel)

@@ -7,43 +7,8 @@ Sections cited: e-Manual "XM430-W350" (Control Table) and "DYNAMIXEL Protocol 2.
 
 from __future__ import annotations
 
-from typing import Any
-
 import pytest
-
-from armkit.devices._dxl_protocol import PortHandler
-from armkit.sim import World
-from armkit.sim._wire import Wire, serial_port
-from armkit.sim.dynamixel import SimDynamixelBus
-
-sdk = pytest.importorskip("dynamixel_sdk")
-OK = sdk.COMM_SUCCESS
-TORQUE, GOAL, PRESENT, MOVING_STATUS = 64, 116, 132, 123
-
-
-class Bench:
-    """Five simulated XM430s (IDs 11..15, 1 Mbit/s) and the SDK's packet handler on them."""
-
-    def __init__(self, baudrate: int = 1_000_000) -> None:
-        self.world = World()
-        self.bus = SimDynamixelBus(clock=self.world.now)
-        self.wire = Wire(self.bus, self.world, baudrate=baudrate, timeout=0)
-        self.port = PortHandler(serial_port(self.wire), self.world.clock)
-        self.ph = sdk.PacketHandler(2.0)
-
-    def w(self, sid: int, address: int, size: int, value: int) -> tuple[int, int]:
-        fn = {1: self.ph.write1ByteTxRx, 2: self.ph.write2ByteTxRx, 4: self.ph.write4ByteTxRx}
-        return tuple(fn[size](self.port, sid, address, value & (256**size - 1)))  # type: ignore[return-value]
-
-    def r(self, sid: int, address: int, size: int) -> Any:
-        fn = {1: self.ph.read1ByteTxRx, 2: self.ph.read2ByteTxRx, 4: self.ph.read4ByteTxRx}
-        value, result, _ = fn[size](self.port, sid, address)
-        assert result == OK, self.ph.getTxRxResult(result)
-        return (
-            value
-            if size == 1
-            else int.from_bytes(value.to_bytes(size, "little"), "little", signed=True)
-        )
+from dxl_bench import GOAL, MOVING_STATUS, OK, PRESENT, TORQUE, Bench, sdk
 
 
 @pytest.fixture

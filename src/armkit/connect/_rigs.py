@@ -70,7 +70,9 @@ def dynamixel_rig(
     ``[drivers.dynamixel]`` table (or ``config``)."""
     cfg = config if config is not None else dynamixel_section(model)
     points = calibration_points(model, cfg)
-    device = SimDynamixelBus([sid for sid, *_ in points], clock=world.now, baudrate=cfg.baudrate)
+    device = SimDynamixelBus(
+        [sid for sid, *_ in points], clock=world.device_time, baudrate=cfg.baudrate
+    )
     mounts = [Mount(sid, joint, ticks, values) for sid, joint, ticks, values in points]
     arm = add_servo_arm(world, model, device, mounts, truth=truth)
     arm.device = device
@@ -84,4 +86,4 @@ def lone_rig(kind: str, world: World) -> Rig:
         return Rig(SimSSC32(9600), None, 9600)
     if kind == "maestro":
         return Rig(SimMaestro(), None, 9600)
-    return Rig(SimDynamixelBus(clock=world.now), None, GENERIC_BAUD)
+    return Rig(SimDynamixelBus(clock=world.device_time), None, GENERIC_BAUD)

@@ -44,12 +44,19 @@ class Inst(IntEnum):
     FACTORY_RESET = 0x06
     REBOOT = 0x08
     CLEAR = 0x10
+    BACKUP = 0x20
     STATUS = 0x55
     SYNC_READ = 0x82
     SYNC_WRITE = 0x83
     FAST_SYNC_READ = 0x8A
     BULK_READ = 0x92
     BULK_WRITE = 0x93
+    FAST_BULK_READ = 0x9A
+
+
+# Status error numbers ("DYNAMIXEL Protocol 2.0", Status Packet, Error)
+RESULT_FAIL, INSTRUCTION_ERROR, CRC_ERROR, DATA_RANGE_ERROR = 1, 2, 3, 4
+DATA_LENGTH_ERROR, DATA_LIMIT_ERROR, ACCESS_ERROR = 5, 6, 7
 
 
 STATUS_ERRORS: dict[int, str] = {

@@ -12,8 +12,20 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .._errors import InputError
+from ._xm430_rules import (
+    BetweenLimits,
+    Bits,
+    ByBit,
+    ByValue,
+    LimitSpan,
+    OneOf,
+    Rule,
+    Span,
+    WithinLimit,
+)
 
 MODEL_NUMBER = 1020  # XM430-W350
+FIRMWARE_VERSION = 46  # what a simulated servo reports (e-Manual features by version below)
 TICKS_PER_TURN = 4096
 VELOCITY_UNIT_RPM = 0.229
 ACCELERATION_UNIT_RPM2 = 214.577
@@ -27,7 +39,16 @@ MODE_EXTENDED_POSITION = 4
 MODE_CURRENT_POSITION = 5
 MODE_PWM = 16
 
-DRIVE_MODE_TIME_BASED = 0x04  # Drive Mode bit 2: profiles in ms instead of velocity units
+OPERATING_MODES = (
+    MODE_CURRENT, MODE_VELOCITY, MODE_POSITION, MODE_EXTENDED_POSITION, MODE_CURRENT_POSITION,
+    MODE_PWM,
+)  # fmt: skip
+
+# Drive Mode (10) bits (e-Manual, "Drive Mode (10)"); the others are unused, always 0
+DRIVE_MODE_REVERSE = 0x01  # Normal/Reverse Mode
+DRIVE_MODE_TIME_BASED = 0x04  # Profile Configuration: profiles in ms, not velocity units
+DRIVE_MODE_TORQUE_ON_BY_GOAL = 0x08  # Torque On by Goal Update (firmware 45 and later)
+DRIVE_MODE_BITS = DRIVE_MODE_REVERSE | DRIVE_MODE_TIME_BASED | DRIVE_MODE_TORQUE_ON_BY_GOAL
 
 # Hardware Error Status bits
 HARDWARE_ERRORS: dict[int, str] = {
@@ -47,7 +68,8 @@ class Register:
         name: the e-manual's name (``"Goal Position"``).
         address: first byte. size: 1, 2 or 4 bytes, little-endian.
         signed: two's complement. writable: False for read-only registers.
-        default: factory value.  limit: name of the register bounding |value| ("" = none).
+        default: factory value.  rule: the values a WRITE may put here (the manual's Range
+            column, ``_xm430_rules``); None: any value the size holds.
     """
 
     name: str
@@ -56,7 +78,7 @@ class Register:
     signed: bool = False
     writable: bool = True
     default: int = 0
-    limit: str = ""  # the register whose value bounds |value| on a write (error 6 beyond)
+    rule: Rule | None = None  # the Range column: what a WRITE may put here
 
     @property
     def eeprom(self) -> bool:
@@ -82,47 +104,61 @@ class Register:
         return self.decode(int(value).to_bytes(self.size, "little", signed=False))
 
 
+_GAIN = Span(0, 16_383)
+_PROFILE = ByBit("Drive Mode", DRIVE_MODE_TIME_BASED, Span(0, 32_767), Span(0, 32_737))
+EXTENDED_LIMIT = 1_048_575
+_GOAL_POSITION = ByValue(
+    "Operating Mode",
+    (
+        (MODE_POSITION, BetweenLimits("Min Position Limit", "Max Position Limit")),
+        (MODE_EXTENDED_POSITION, LimitSpan(-EXTENDED_LIMIT, EXTENDED_LIMIT)),
+        (MODE_CURRENT_POSITION, LimitSpan(-EXTENDED_LIMIT, EXTENDED_LIMIT)),
+    ),
+)
+
+# (name, address, size, ...): the e-Manual's table; ``rule`` is its Range column
 _REGISTERS: tuple[Register, ...] = (
     Register("Model Number", 0, 2, writable=False, default=MODEL_NUMBER),
     Register("Model Information", 2, 4, writable=False),
-    Register("Firmware Version", 6, 1, writable=False, default=46),
-    Register("ID", 7, 1, default=1),
-    Register("Baud Rate", 8, 1, default=1),
-    Register("Return Delay Time", 9, 1, default=250),
-    Register("Drive Mode", 10, 1),
-    Register("Operating Mode", 11, 1, default=MODE_POSITION),
-    Register("Secondary ID", 12, 1, default=255),
-    Register("Protocol Type", 13, 1, default=2),
-    Register("Homing Offset", 20, 4, signed=True),
-    Register("Moving Threshold", 24, 4, default=10),
-    Register("Temperature Limit", 31, 1, default=80),
-    Register("Max Voltage Limit", 32, 2, default=160),
-    Register("Min Voltage Limit", 34, 2, default=95),
-    Register("PWM Limit", 36, 2, default=885),
-    Register("Current Limit", 38, 2, default=1193),
-    Register("Velocity Limit", 44, 4, default=200),
-    Register("Max Position Limit", 48, 4, default=4095),
-    Register("Min Position Limit", 52, 4, default=0),
+    Register("Firmware Version", 6, 1, writable=False, default=FIRMWARE_VERSION),
+    Register("ID", 7, 1, default=1, rule=Span(0, 252)),
+    Register("Baud Rate", 8, 1, default=1, rule=Span(0, 7)),
+    Register("Return Delay Time", 9, 1, default=250, rule=Span(0, 254)),
+    Register("Drive Mode", 10, 1, rule=Bits(DRIVE_MODE_BITS)),
+    Register("Operating Mode", 11, 1, default=MODE_POSITION, rule=OneOf(OPERATING_MODES)),
+    Register("Secondary ID", 12, 1, default=255, rule=Span(0, 255)),
+    Register("Protocol Type", 13, 1, default=2, rule=Span(1, 2)),
+    Register("Homing Offset", 20, 4, signed=True, rule=Span(-1_044_479, 1_044_479)),
+    Register("Moving Threshold", 24, 4, default=10, rule=Span(0, 1_023)),
+    Register("Temperature Limit", 31, 1, default=80, rule=Span(0, 100)),
+    Register("Max Voltage Limit", 32, 2, default=160, rule=Span(95, 160)),
+    Register("Min Voltage Limit", 34, 2, default=95, rule=Span(95, 160)),
+    Register("PWM Limit", 36, 2, default=885, rule=Span(0, 885)),
+    Register("Current Limit", 38, 2, default=1193, rule=Span(0, 1_193)),
+    Register("Velocity Limit", 44, 4, default=200, rule=Span(0, 1_023)),
+    Register("Max Position Limit", 48, 4, default=4095, rule=Span(0, 4_095)),
+    Register("Min Position Limit", 52, 4, default=0, rule=Span(0, 4_095)),
+    Register("Startup Configuration", 60, 1, rule=Bits(0x03)),
     Register("Shutdown", 63, 1, default=52),
-    Register("Torque Enable", 64, 1),
-    Register("LED", 65, 1),
-    Register("Status Return Level", 68, 1, default=2),
+    Register("Torque Enable", 64, 1, rule=Span(0, 1)),
+    Register("LED", 65, 1, rule=Span(0, 1)),
+    Register("Status Return Level", 68, 1, default=2, rule=Span(0, 2)),
     Register("Registered Instruction", 69, 1, writable=False),
     Register("Hardware Error Status", 70, 1, writable=False),
-    Register("Velocity I Gain", 76, 2, default=1920),
-    Register("Velocity P Gain", 78, 2, default=100),
-    Register("Position D Gain", 80, 2),
-    Register("Position I Gain", 82, 2),
-    Register("Position P Gain", 84, 2, default=800),
-    Register("Feedforward 2nd Gain", 88, 2),
-    Register("Feedforward 1st Gain", 90, 2),
-    Register("Bus Watchdog", 98, 1),
-    Register("Goal PWM", 100, 2, signed=True, default=885, limit="PWM Limit"),
-    Register("Goal Current", 102, 2, signed=True, default=1193, limit="Current Limit"),
-    Register("Goal Velocity", 104, 4, signed=True, limit="Velocity Limit"),
-    Register("Profile Acceleration", 108, 4),
-    Register("Profile Velocity", 112, 4),
-    Register("Goal Position", 116, 4, signed=True, default=2048),
+    Register("Velocity I Gain", 76, 2, default=1920, rule=_GAIN),
+    Register("Velocity P Gain", 78, 2, default=100, rule=_GAIN),
+    Register("Position D Gain", 80, 2, rule=_GAIN),
+    Register("Position I Gain", 82, 2, rule=_GAIN),
+    Register("Position P Gain", 84, 2, default=800, rule=_GAIN),
+    Register("Feedforward 2nd Gain", 88, 2, rule=_GAIN),
+    Register("Feedforward 1st Gain", 90, 2, rule=_GAIN),
+    Register("Bus Watchdog", 98, 1, signed=True, rule=Span(0, 127)),  # -1: tripped
+    Register("Goal PWM", 100, 2, signed=True, default=885, rule=WithinLimit("PWM Limit")),
+    Register("Goal Current", 102, 2, signed=True, default=1193, rule=WithinLimit("Current Limit")),
+    Register("Goal Velocity", 104, 4, signed=True, rule=WithinLimit("Velocity Limit")),
+    Register("Profile Acceleration", 108, 4, rule=_PROFILE),
+    Register("Profile Velocity", 112, 4, rule=_PROFILE),
+    Register("Goal Position", 116, 4, signed=True, default=2048, rule=_GOAL_POSITION),
     Register("Realtime Tick", 120, 2, writable=False),
     Register("Moving", 122, 1, writable=False),
     Register("Moving Status", 123, 1, writable=False),
@@ -134,6 +170,7 @@ _REGISTERS: tuple[Register, ...] = (
     Register("Position Trajectory", 140, 4, signed=True, writable=False),
     Register("Present Input Voltage", 144, 2, writable=False, default=120),
     Register("Present Temperature", 146, 1, writable=False, default=30),
+    Register("Backup Ready", 147, 1, writable=False),
 )
 
 # Indirect Address n (2 bytes) names the control-table byte that Indirect Data n
@@ -141,6 +178,7 @@ _REGISTERS: tuple[Register, ...] = (
 # Two blocks of 28 (e-Manual XM430-W350, "Indirect Address, Indirect Data").
 INDIRECT_BLOCKS = ((1, 168, 224), (29, 578, 634))  # (first n, first address, first data)
 INDIRECT_COUNT = 28  # entries per block
+CONTROL_TABLE_SIZE = 662  # bytes: Indirect Data 56 ends at address 661
 
 
 def _indirect() -> tuple[Register, ...]:
@@ -148,15 +186,20 @@ def _indirect() -> tuple[Register, ...]:
     for first, address, data in INDIRECT_BLOCKS:
         for k in range(INDIRECT_COUNT):
             regs.append(
-                Register(f"Indirect Address {first + k}", address + 2 * k, 2, default=data + k)
+                Register(
+                    f"Indirect Address {first + k}",
+                    address + 2 * k,
+                    2,
+                    default=data + k,
+                    rule=Span(64, CONTROL_TABLE_SIZE - 1),  # the RAM area only
+                )
             )
-            regs.append(Register(f"Indirect Data {first + k}", data + k, 1))
+            regs.append(Register(f"Indirect Data {first + k}", data + k, 1, rule=Span(0, 255)))
     return tuple(sorted(regs, key=lambda r: r.address))
 
 
 XM430_W350: dict[str, Register] = {reg.name: reg for reg in (*_REGISTERS, *_indirect())}
 
-CONTROL_TABLE_SIZE = 662  # bytes: Indirect Data 56 ends at address 661
 
 # Baud Rate register value -> bit/s (e-Manual XM430-W350, "Baud Rate (8)").
 BAUD_RATES: dict[int, int] = {
@@ -168,15 +211,6 @@ BAUD_RATES: dict[int, int] = {
     5: 3_000_000,
     6: 4_000_000,
     7: 4_500_000,
-}
-
-# Goal Position range per Operating Mode [tick] (e-Manual, "Goal Position (116)"): None =
-# between Min and Max Position Limit; modes absent here do not use Goal Position.
-EXTENDED_LIMIT = 1_048_575
-GOAL_POSITION_RANGE: dict[int, tuple[int, int] | None] = {
-    MODE_POSITION: None,
-    MODE_EXTENDED_POSITION: (-EXTENDED_LIMIT, EXTENDED_LIMIT),
-    MODE_CURRENT_POSITION: (-EXTENDED_LIMIT, EXTENDED_LIMIT),
 }
 
 # Status Return Level (68): which instructions get a status packet.

@@ -72,9 +72,7 @@ def _link_encoder(bus: SimDynamixelBus, body: ServoBody, mount: Mount) -> None:
 
     tick = round(mount.from_si(body.position(mount.joint)))
     body.place(mount.joint, mount.to_si(tick))  # a servo with torque rests on a tick
-    servo.set("Goal Position", tick)
-    servo.set("Present Position", tick)
-    servo.profile = type(servo.profile)(float(tick), 0.0, servo.profile.t0)
+    servo.hold_at(tick)
     servo.feedback = feedback
 
 

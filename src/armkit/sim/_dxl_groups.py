@@ -2,11 +2,12 @@
 
 ROBOTIS e-Manual, "DYNAMIXEL Protocol 2.0": SYNC_READ (0x82) and SYNC_WRITE
 (0x83) address one register block on many IDs; BULK_READ (0x92) and
-BULK_WRITE (0x93) a block per ID; FAST_SYNC_READ (0x8A) answers with ONE status
-packet (ID 0xFE) in which each servo's part is ``ERR ID DATA CRC``, each CRC over
-the packet so far, the last part's CRC being the packet's own. Every packet is
-broadcast: writes get no status; a servo whose Status Return Level is 0 gives
-no read reply.
+BULK_WRITE (0x93) a block per ID; FAST_SYNC_READ (0x8A) and FAST_BULK_READ (0x9A)
+answer with ONE status packet (ID 0xFE, not byte-stuffed) in which each servo's part
+is ``ERR ID DATA CRC``, each CRC over the packet so far, the last part's CRC being
+the packet's own. Every packet is broadcast: writes get no status; a servo whose
+Status Return Level is 0 gives no read reply, one whose firmware predates the fast
+reads (``notes.FROM_FIRMWARE``) takes no part in them.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ from collections.abc import Callable
 
 from ..devices import dxl_packet as pkt
 from ..devices import xm430 as xm
-from .xm430 import ACCESS_ERROR, Servo
+from .xm430 import Servo
 
 
 def u16(params: bytes, offset: int) -> int:
@@ -39,6 +40,7 @@ class GroupInstructions:
             pkt.Inst.FAST_SYNC_READ: self._fast_sync_read,
             pkt.Inst.BULK_READ: self._bulk_read,
             pkt.Inst.BULK_WRITE: self._bulk_write,
+            pkt.Inst.FAST_BULK_READ: self._fast_bulk_read,
         }
 
     def by_id(self, servo_id: int) -> Servo | None:
@@ -58,7 +60,7 @@ class GroupInstructions:
         if servo is None or not answers_reads(servo):
             return
         if address + size > xm.CONTROL_TABLE_SIZE:
-            self.reply(servo, ACCESS_ERROR)
+            self.reply(servo, pkt.ACCESS_ERROR)
         else:
             self.reply(servo, 0, servo.read(address, size))
 
@@ -96,12 +98,29 @@ class GroupInstructions:
 
     def _fast_sync_read(self, packet: pkt.Packet) -> None:
         address, size = u16(packet.params, 0), u16(packet.params, 2)
-        servos = [self.by_id(sid) for sid in packet.params[4:]]
-        present = [s for s in servos if s is not None and answers_reads(s)]
-        if not present or address + size > xm.CONTROL_TABLE_SIZE:
+        self._fast_reply([(sid, address, size) for sid in packet.params[4:]], "Fast Sync Read")
+
+    def _fast_bulk_read(self, packet: pkt.Packet) -> None:
+        params = packet.params
+        blocks = [
+            (params[k], u16(params, k + 1), u16(params, k + 3))
+            for k in range(0, len(params) - 4, 5)
+        ]
+        self._fast_reply(blocks, "Fast Bulk Read")
+
+    def _fast_reply(self, blocks: list[tuple[int, int, int]], feature: str) -> None:
+        """One status packet for every (ID, address, size) whose servo answers reads."""
+        parts = []
+        for servo_id, address, size in blocks:
+            servo = self.by_id(servo_id)
+            if servo is None or not answers_reads(servo) or not servo.has(feature):
+                continue
+            if address + size > xm.CONTROL_TABLE_SIZE:
+                return
+            parts.append((servo_id, servo.error_bits, servo.read(address, size)))
+        if not parts:
             return
-        parts = [(s.value("ID"), s.error_bits, s.read(address, size)) for s in present]
-        length = sum(size + 4 for _ in parts) + 1  # INST + parts (last CRC = the packet's)
+        length = sum(len(data) + 4 for _, _, data in parts) + 1  # INST + parts (+ CRC)
         frame = bytearray(pkt.HEADER + bytes((pkt.BROADCAST_ID, length & 0xFF, length >> 8)))
         frame.append(pkt.Inst.STATUS)
         for sid, error, data in parts:

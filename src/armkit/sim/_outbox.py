@@ -10,6 +10,7 @@ board would: ``"drop"`` (never sent), ``"late"`` (sent ``delay_s`` late) or
 from __future__ import annotations
 
 import heapq
+import threading
 from collections import deque
 from typing import Any, Protocol
 
@@ -23,9 +24,14 @@ def log() -> deque[Any]:
 
 
 class ByteDevice(Protocol):
-    """A simulated device on a serial line, as a wire or a pty server drives it."""
+    """A simulated device on a serial line, as a wire or a pty server drives it.
+
+    ``lock`` is held while the host's bytes are handled and replies taken; a simulation
+    step never takes it (the device's outputs are read without it: ``_servo_body``),
+    so the device answers its host whatever the world's thread is doing."""
 
     name: str
+    lock: threading.RLock
     baudrate: int | None  # the rate it listens at; None: it detects the host's (Maestro)
     outbox: Outbox
 

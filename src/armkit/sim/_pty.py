@@ -4,9 +4,13 @@
 from a background thread; ``.port`` is the slave side's path. Any client that
 opens a serial port by path (pyserial, the official dynamixel-sdk, a terminal
 program) talks to the device as to real hardware on a USB-serial adapter.
-Bytes reach the device at the world's time and replies are written when due.
+Bytes reach the device at the world's device time and replies are written when due.
 The client lives in real time, so the world should too (``World(realtime=True)``).
 Like the hardware, the device ignores a client set to another baud rate.
+
+The server thread takes only the device's own lock and reads the world's device time
+(``World.device_time``), which never steps the arms: a device answers within
+microseconds of reading a request, whatever the world's own thread is doing.
 """
 
 from __future__ import annotations
@@ -70,12 +74,14 @@ class PtyServer:
             ready, _, _ = select.select([self._master, self._wake_r], [], [], self._wait_s())
             if self._master in ready:
                 self._receive()
+                if select.select([self._master], [], [], 0.0)[0]:
+                    continue  # the host sent more already: read it before answering
             self._send_due()
 
     def _wait_s(self) -> float:
-        with self.world.lock:
+        with self.device.lock:
             due = self.device.outbox.next_due()
-            now = self.world.now()
+        now = self.world.device_time()
         return 0.5 if due is None else max(0.0, (due - now) / self.world.pace)
 
     def _receive(self) -> None:
@@ -83,8 +89,9 @@ class PtyServer:
             data = os.read(self._master, 4096)
         except OSError:
             return
-        with self.world.lock:
-            heard = deliver(self.device, data, self.world.now(), self._host_rate())
+        rate = self._host_rate()
+        with self.device.lock:
+            heard = deliver(self.device, data, self.world.device_time(), rate)
         if not heard:
             self.misheard += len(data)
 
@@ -94,8 +101,8 @@ class PtyServer:
         return _RATES.get(speed)
 
     def _send_due(self) -> None:
-        with self.world.lock:
-            data = self.device.outbox.take(self.world.now())
+        with self.device.lock:
+            data = self.device.outbox.take(self.world.device_time())
         if data:
             with contextlib.suppress(OSError):  # nobody reading: lost, as on a real line
                 os.write(self._master, data)

@@ -5,38 +5,72 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 
-@dataclass
-class VirtualServo:
-    """One channel's output pulse [µs], moving in time; 0 = never commanded (or off).
-
-    Linear in time, or with ``ramp_s`` > 0 a trapezoid: the speed grows for ``ramp_s``
-    [s], holds, and falls for the last ``ramp_s`` (``ramp_s`` <= half the duration).
-    """
-
+@dataclass(frozen=True, slots=True)
+class _Move:
     start_us: float = 0.0
     target_us: float = 0.0
     t0: float = 0.0
     duration_s: float = 0.0
     ramp_s: float = 0.0
 
+
+class VirtualServo:
+    """One channel's output pulse [µs], moving in time; 0 = never commanded (or off).
+
+    Linear in time, or with ``ramp_s`` > 0 a trapezoid: the speed grows for ``ramp_s``
+    [s], holds, and falls for the last ``ramp_s`` (``ramp_s`` <= half the duration).
+    A move replaces the whole state at once, so a simulation step reading the pulse
+    while the controller's thread starts a move sees the old move or the new one,
+    never half of each.
+    """
+
+    def __init__(self) -> None:
+        self._move = _Move()
+
+    @property
+    def start_us(self) -> float:
+        """Where the move began [µs]."""
+        return self._move.start_us
+
+    @property
+    def target_us(self) -> float:
+        """Where it ends [µs]."""
+        return self._move.target_us
+
+    @property
+    def t0(self) -> float:
+        """When it began [s, device clock]."""
+        return self._move.t0
+
+    @property
+    def duration_s(self) -> float:
+        """How long it takes [s]."""
+        return self._move.duration_s
+
+    @property
+    def ramp_s(self) -> float:
+        """Its acceleration time at each end [s]."""
+        return self._move.ramp_s
+
     def pulse(self, now: float) -> float:
         """The pulse being sent at time ``now`` [s, device clock]."""
-        if self.duration_s <= 0.0 or now >= self.t0 + self.duration_s:
-            return self.target_us
-        frac = _fraction(now - self.t0, self.duration_s, self.ramp_s)
-        return self.start_us + (self.target_us - self.start_us) * frac
+        move = self._move
+        if move.duration_s <= 0.0 or now >= move.t0 + move.duration_s:
+            return move.target_us
+        frac = _fraction(max(0.0, now - move.t0), move.duration_s, move.ramp_s)
+        return move.start_us + (move.target_us - move.start_us) * frac
 
     def moving(self, now: float) -> bool:
         """True while the pulse is still changing."""
-        return self.duration_s > 0.0 and now < self.t0 + self.duration_s
+        move = self._move
+        return move.duration_s > 0.0 and now < move.t0 + move.duration_s
 
     def go(self, target_us: float, duration_s: float, now: float, ramp_s: float = 0.0) -> None:
         """Start a move from here to ``target_us`` lasting ``duration_s`` with ``ramp_s`` [s]
         of acceleration at each end (a first move, or one from off, jumps)."""
         start = self.pulse(now)
-        self.start_us, self.target_us, self.t0 = start, target_us, now
-        self.duration_s = duration_s if start > 0.0 else 0.0
-        self.ramp_s = min(ramp_s, self.duration_s / 2.0)
+        duration = duration_s if start > 0.0 else 0.0
+        self._move = _Move(start, target_us, now, duration, min(ramp_s, duration / 2.0))
 
     def hold(self, now: float) -> None:
         """Stop where the servo is now."""

@@ -140,6 +140,15 @@ class World:
                 self._catch_up()
             return self._t
 
+    def device_time(self) -> float:
+        """The time a simulated device reads [s]: ``now()`` without stepping anything. In
+        real-time mode the wall clock's (paced) time, so a device answering its host
+        never waits for the arms' physics to catch up (the arms follow the devices'
+        setpoints, which are functions of time); in virtual mode the same as ``now()``."""
+        if not self.realtime:
+            return self._t
+        return max(self._t, (time.monotonic() - self._wall0) * self.pace)
+
     def advance(self, seconds: float) -> None:
         """Run the simulation for ``seconds`` [s] of simulated time, a finite number >= 0
         (0: nothing). In real-time mode this waits as long.

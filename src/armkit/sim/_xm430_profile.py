@@ -1,4 +1,8 @@
-"""The XM430's motion profile: a trapezoid in time, and how its Moving Status names it.
+"""The XM430's motion: a position profile (a trapezoid in time) or a spin (velocity and
+PWM control), and how Moving Status names it.
+
+Positions here are the shaft's own [tick] (before Homing Offset and the turns folded
+away); the servo adds its frame when it reports them.
 
 Velocity-based profile: Profile Velocity [0.229 rev/min] and Profile
 Acceleration [214.577 rev/min^2] (0 = instant ramp). Time-based profile (Drive
@@ -34,8 +38,8 @@ class Profile:
     kind: int = xm.PROFILE_STEP
 
     def at(self, now: float) -> tuple[float, float]:
-        """(position [tick], velocity [tick/s]) at time ``now`` [s]."""
-        t = now - self.t0
+        """(position [tick], velocity [tick/s]) at time ``now`` [s] (before ``t0``: its start)."""
+        t = max(0.0, now - self.t0)
         if t >= self.total or self.total <= 0.0:
             return self.start + self.distance, 0.0
         peak = self.distance / (self.total - self.ramp)
@@ -57,6 +61,45 @@ class Profile:
     def goal(self) -> float:
         """Where it ends [tick]."""
         return self.start + self.distance
+
+    def held(self, now: float) -> Profile:
+        """Stopped where it is at ``now`` (the profile applied as 0)."""
+        return Profile(self.at(now)[0], 0.0, now, kind=self.kind)
+
+
+@dataclass(frozen=True, slots=True)
+class Spin:
+    """Velocity control: from ``v0`` to ``v1`` [tick/s] in ``ramp`` [s] from ``t0`` [s],
+    starting at ``start`` [tick], then on at ``v1`` (e-Manual XM430-W350, "Profile
+    Velocity (112)", NOTE: Velocity Control Mode uses only Profile Acceleration)."""
+
+    start: float
+    t0: float
+    v0: float
+    v1: float
+    ramp: float = 0.0
+    kind: int = xm.PROFILE_STEP
+
+    def at(self, now: float) -> tuple[float, float]:
+        """(position [tick], velocity [tick/s]) at time ``now`` [s]."""
+        t = max(0.0, now - self.t0)
+        if t < self.ramp:
+            velocity = self.v0 + (self.v1 - self.v0) * t / self.ramp
+            return self.start + 0.5 * (self.v0 + velocity) * t, velocity
+        return self.start + 0.5 * (self.v0 + self.v1) * self.ramp + self.v1 * (
+            t - self.ramp
+        ), self.v1
+
+    def running(self, now: float) -> bool:
+        """True while it turns or still changes speed."""
+        return self.v1 != 0.0 or now < self.t0 + self.ramp
+
+    def held(self, now: float) -> Profile:
+        """Stopped where it is at ``now``."""
+        return Profile(self.at(now)[0], 0.0, now, kind=self.kind)
+
+
+Motion = Profile | Spin
 
 
 def velocity_profile_times(distance: float, velocity: float, accel: float) -> tuple[float, float]:

@@ -44,12 +44,13 @@ class Emulator:
 
     @property
     def lock(self) -> threading.RLock:
-        """Hold it to read the device's state while the server runs."""
-        return self.world.lock
+        """Hold it to read the device's state while the server runs (the device's own
+        lock: the world's thread never waits for it)."""
+        return self.device.lock
 
     def now(self) -> float:
         """The device's time [s]."""
-        return self.world.now()
+        return self.world.device_time()
 
     def close(self) -> None:
         """Stop serving. Safe to call twice."""
@@ -90,7 +91,7 @@ class _PulseEmulator(Emulator):
     def pulse(self, channel: int) -> float:
         """The pulse ``channel`` sends now [µs] (0 = never commanded)."""
         with self.lock:
-            return float(self.device.pulse(channel, self.world.now()))
+            return float(self.device.pulse(channel, self.world.device_time()))
 
     def inject(self, fault: str, count: int = 1, delay_s: float = 0.15) -> None:
         """Spoil the next ``count`` replies (``_outbox.FAULTS``)."""
@@ -137,7 +138,7 @@ class DynamixelEmulator(Emulator):
 
     def __init__(self, ids: Iterable[int] = OPENMANIPULATOR_X_IDS, *, late_s: float = 0.08) -> None:
         world = World(realtime=True)
-        device = SimDynamixelBus(ids, clock=world.now, late_s=late_s)
+        device = SimDynamixelBus(ids, clock=world.device_time, late_s=late_s)
         self.world, self.device = world, device
         self.server = PtyServer(device, world)
         self.port = self.server.port

@@ -27,6 +27,7 @@ is accepted (the Maestro detects it).
 
 from __future__ import annotations
 
+import threading
 from collections import deque
 from collections.abc import Callable
 
@@ -50,6 +51,7 @@ class SimMaestro(PulseOutputs):
 
     def __init__(self, channels: int = 24, device_number: int = 12) -> None:
         self.baudrate: int | None = None
+        self.lock = threading.RLock()  # held while the host's bytes are handled
         self.device_number, self.mini_ssc_offset = device_number, 0
         self.servos = [VirtualServo() for _ in range(channels)]
         self.speed = [0] * channels  # units of 0.25 µs / 10 ms

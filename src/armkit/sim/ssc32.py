@@ -20,6 +20,7 @@ The analog inputs ``VA``..``VD`` answer one byte each, 0..255 for 0..5 V, from `
 from __future__ import annotations
 
 import re
+import threading
 from collections import deque
 from collections.abc import Callable
 
@@ -45,6 +46,7 @@ class SimSSC32(PulseOutputs):
 
     def __init__(self, baudrate: int = 9600) -> None:
         self.baudrate: int | None = baudrate
+        self.lock = threading.RLock()  # held while the host's bytes are handled
         self.servos = [VirtualServo() for _ in range(CHANNELS)]
         self.outbox = Outbox()
         self.received: deque[bytes] = log()
