@@ -22,6 +22,7 @@ from numpy.typing import NDArray
 from .._errors import InputError, ModelError
 from .._inputs import shown
 from ..model import ArmModel, JointFrame
+from ._boundary_fast import Boundary, boundary_solver
 from ._closed_fast import FixedSolver, Q, fixed_solver
 from ._closed_free import FreeSolver, free_solver
 from ._family import (
@@ -70,6 +71,7 @@ class Chain:
             (``_closed_fast``); None off the family.
         free: on a family arm with 3 planar joints, the closed form without a pitch (it
             chooses one; with 2 the pitch follows from the position), else None.
+        boundary: with ``free``, its fallback's boundary search in floats (``_boundary_fast``).
         shift: on a family arm whose base axis is off the world origin (a URDF's root a
             little beside it), that axis's (x, y) [m]: the family, ``home_pitch`` and the
             closed-form solvers work in the frame moved there (``based``), else None.
@@ -103,6 +105,7 @@ class Chain:
     on_axis: int
     fixed: FixedSolver | None
     free: FreeSolver | None
+    boundary: Boundary | None
     shift: tuple[float, float] | None
     wrist: WristFamily | None
     wrist_solve: WristSolver | None
@@ -181,6 +184,7 @@ def compile_chain(model: ArmModel) -> Chain:
     home_pitch = pitch_scalar(at_home.R[0], (at_home.p[0] - shift[0], at_home.p[1] - shift[1]))
     wrist = wrist_range(fam, lower[fam.planar[1]], upper[fam.planar[1]]) if fam else (0.0, 0.0)
     fixed, free = _solvers(fam, lower, upper, wrist, (home, home_pitch, state, shift))
+    ranges = joint_ranges(fam, lower, upper) if fam else ()
     return Chain(
         name=model.name,
         dof=model.dof,
@@ -204,7 +208,8 @@ def compile_chain(model: ArmModel) -> Chain:
         why_not="" if isinstance(family, PlanarFamily) else f"{model.name} {family}",
         home_pitch=home_pitch,
         wrist_reach=wrist,
-        ranges=joint_ranges(fam, lower, upper) if fam else (),
+        ranges=ranges,
+        boundary=boundary_solver(fam, lower, upper, ranges) if fam and free else None,
         on_axis=_on_axis(steps, tool, np.array(lower), np.array(upper), np.array(home)),
         fixed=fixed,
         free=free,

@@ -17,7 +17,7 @@ from ._closed_fast import Found, Misses, Q, _ways
 from ._closed_free import seed_pitch
 from ._family import PlanarFamily
 from ._lanes import FLOATS
-from ._pitch_range import base_fits, boundary_pitch
+from ._pitch_range import base_fits
 
 
 def limited(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
@@ -30,9 +30,10 @@ def limited(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
     if isinstance(ways, str):
         return []
     want, rho, gap, pitch = preferred(chain, seed), math.hypot(x, y), math.inf, 0.0
+    assert chain.boundary is not None
     for r, q0 in ways:
         if base_fits(chain, fam, q0, FLOATS):
-            g, at = boundary_pitch(chain, fam, r, z, rho, want, FLOATS)
+            g, at = chain.boundary(r, z, rho, want)
             gap, pitch = (g, at) if g < gap else (gap, pitch)
     return solve(x, y, z, pitch, seed, None) if gap < math.inf else []
 
