@@ -8,6 +8,8 @@
    while it draws; an observer notes, at every step, how far the step ran behind
    the wall clock [ms]: median, 99th percentile and worst (targets: median <= 1 ms,
    p99 <= 5 ms). On a shared 2-core machine the tail depends on the neighbours.
+3. Replies: ``benchmarks/sim_replies.py``, ``armkit emulate`` answering the official
+   dynamixel-sdk beside a CPU load of 2x the cores (median and 99.9th percentile).
 
 Run: .venv/bin/python benchmarks/sim.py
 """
@@ -20,6 +22,7 @@ import tempfile
 import time
 
 import numpy as np
+import sim_replies
 from numpy.typing import NDArray
 
 from armkit.connect import open_driver, world_of
@@ -121,6 +124,7 @@ def main() -> None:
         p50, p99, worst = np.percentile(lags, [50, 99, 100])
         print(f"{label:<18} {p50:7.3f} {p99:7.3f} {worst:7.3f} {len(lags):7d}")
     print("(targets: median <= 1 ms, p99 <= 5 ms)")
+    sim_replies.main()  # the emulator's reply latency to the dynamixel-sdk under load
 
 
 if __name__ == "__main__":

@@ -68,7 +68,7 @@ def run_emulate(args: argparse.Namespace) -> int:
                 pass
         except KeyboardInterrupt:
             pass  # Ctrl-C is how an emulator ends
-        print("armkit: emulator stopped", file=sys.stderr)
+        print(f"armkit: emulator stopped; {emulator.reply_summary()}", file=sys.stderr)
     finally:
         signal.signal(signal.SIGTERM, previous)
         emulator.close()

@@ -20,10 +20,12 @@ import os
 import select
 import termios
 import threading
+import time
 import tty
+from collections import deque
 from typing import Self
 
-from ._outbox import ByteDevice, deliver
+from ._outbox import ByteDevice, deliver, log
 from ._world import World
 
 # termios speed constant -> bit/s, for the standard rates this platform names
@@ -55,11 +57,14 @@ _RATES = {
 
 class PtyServer:
     """``device`` on a pseudo-terminal (see module doc). Attributes: ``port`` (the path to
-    open), ``misheard`` (bytes sent at the wrong baud rate)."""
+    open), ``misheard`` (bytes sent at the wrong baud rate), ``reply_s`` (for each reply
+    written at once, the wall time from reading the request to writing the reply [s];
+    the last ``LOG_ROWS``)."""
 
     def __init__(self, device: ByteDevice, world: World) -> None:
         self.device, self.world = device, world
         self.misheard = 0
+        self.reply_s: deque[float] = log()
         self._master, self._slave = os.openpty()
         tty.setraw(self._slave)
         os.set_blocking(self._master, False)
@@ -70,13 +75,17 @@ class PtyServer:
         self._thread.start()
 
     def _serve(self) -> None:
+        read_at: float | None = None  # when the request being answered was read
         while self._running:
             ready, _, _ = select.select([self._master, self._wake_r], [], [], self._wait_s())
             if self._master in ready:
                 self._receive()
+                read_at = time.monotonic() if read_at is None else read_at
                 if select.select([self._master], [], [], 0.0)[0]:
                     continue  # the host sent more already: read it before answering
-            self._send_due()
+            if self._send_due() and read_at is not None:
+                self.reply_s.append(time.monotonic() - read_at)
+            read_at = None
 
     def _wait_s(self) -> float:
         with self.device.lock:
@@ -100,12 +109,14 @@ class PtyServer:
         speed = termios.tcgetattr(self._slave)[5]
         return _RATES.get(speed)
 
-    def _send_due(self) -> None:
+    def _send_due(self) -> bool:
+        """Write the replies that are due; True if there were any."""
         with self.device.lock:
             data = self.device.outbox.take(self.world.device_time())
         if data:
             with contextlib.suppress(OSError):  # nobody reading: lost, as on a real line
                 os.write(self._master, data)
+        return bool(data)
 
     def close(self) -> None:
         """Stop serving and close the pseudo-terminal. Safe to call twice."""

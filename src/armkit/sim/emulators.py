@@ -48,6 +48,18 @@ class Emulator:
         lock: the world's thread never waits for it)."""
         return self.device.lock
 
+    def reply_summary(self) -> str:
+        """How fast it answered: the count, median and 99.9th percentile of the time from
+        reading a request to writing its reply [ms] (the last ``_outbox.LOG_ROWS``)."""
+        times = sorted(self.server.reply_s)
+        if not times:
+            return "answered no request"
+        median, tail = times[len(times) // 2], times[min(len(times) - 1, int(0.999 * len(times)))]
+        return (
+            f"answered {len(times)} requests; from reading a request to writing its reply "
+            f"{1e3 * median:.2f} ms median, {1e3 * tail:.2f} ms at the 99.9th percentile"
+        )
+
     def now(self) -> float:
         """The device's time [s]."""
         return self.world.device_time()
