@@ -41,6 +41,7 @@ docs: $(DOCSTAMP)
 
 bench: $(DEVSTAMP)
 	$(BIN)/python benchmarks/kinematics.py
+	$(BIN)/python benchmarks/ik_peers.py
 	$(BIN)/python benchmarks/paths.py
 	$(BIN)/python benchmarks/bus.py
 	$(BIN)/python benchmarks/owi_drift.py
