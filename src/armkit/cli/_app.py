@@ -12,6 +12,7 @@ from typing import Any, TextIO
 
 from .. import __version__
 from .._errors import ArmkitError, ArmkitWarning, InputError
+from ..connect import driver_kinds, listed
 from ._parser import Parser
 
 # Modules that add sub-commands: each defines ``add_commands(sub)`` and its
@@ -69,13 +70,14 @@ def build_parser() -> argparse.ArgumentParser:
         "--driver",
         default="sim",
         metavar="NAME",
-        help="driver: sim (default), owi535, ssc32, maestro, dynamixel",
+        help=f"driver: sim (default), {', '.join(kind.name for kind in driver_kinds())}",
     )
+    serial = [kind.name for kind in driver_kinds() if kind.port == "serial"]
     parser.add_argument(
         "--port",
         default=None,
         metavar="PORT",
-        help="the serial port or device of ssc32, maestro and dynamixel (/dev/ttyUSB0; they "
+        help=f"the serial port or device of {listed(serial, 'and')} (/dev/ttyUSB0; they "
         "need one), or 'emu' for an emulated device; with --driver sim, a state file "
         "(arm.json) that keeps that simulated arm between commands (default: none, the "
         "simulated arm kept in $ARMKIT_CONFIG_DIR/sim_<arm>.json)",

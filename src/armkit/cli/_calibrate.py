@@ -3,23 +3,15 @@
 from __future__ import annotations
 
 import argparse
-import importlib
 from typing import Any
 
 from .._closing import closing
 from .._errors import ArmkitError, InputError
 from .._files import config_dir
-from ..connect import auto_operator
-from ..model import load_model
+from ..connect import Ask, Calibration, driver_kinds, native_kind
+from ..model import ArmModel, load_model
 from ._args import check_folder
 from ._kept import open_kept
-
-# driver name -> the module whose run_calibration(model, driver, ask, say) measures it
-CALIBRATORS = {
-    "owi535": "armkit.drivers.timed",
-    "ssc32": "armkit.drivers.servo",
-    "maestro": "armkit.drivers.servo",
-}
 
 
 def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
@@ -36,14 +28,18 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     p.set_defaults(func=run_calibrate)
 
 
-def _module_for(model_name: str, driver: str) -> str:
-    if driver == "sim" and model_name == "owi535":
-        return CALIBRATORS["owi535"]
-    if driver not in CALIBRATORS:
-        raise InputError(
-            f"calibrate works with --driver {', '.join(CALIBRATORS)} (or sim on the owi535), got {driver!r}"
-        )
-    return CALIBRATORS[driver]
+def _calibration(model: ArmModel, driver: str) -> Calibration:
+    """How ``driver`` calibrates ``model``: its kind's, or on the simulator (``sim``) the
+    native kind's where an automatic operator answers for the person."""
+    name = native_kind(model) if driver == "sim" else driver
+    found = next((kind.calibrate for kind in driver_kinds() if kind.name == name), None)
+    if found is not None and (driver != "sim" or found.operator is not None):
+        return found
+    kinds = {kind.name: kind.calibrate for kind in driver_kinds() if kind.calibrate is not None}
+    on_sim = " or ".join(name for name, how in kinds.items() if how.operator is not None)
+    raise InputError(
+        f"calibrate works with --driver {', '.join(kinds)} (or sim on the {on_sim}), got {driver!r}"
+    )
 
 
 def _ask(prompt: str) -> str:
@@ -56,13 +52,12 @@ def _ask(prompt: str) -> str:
 def run_calibrate(args: argparse.Namespace) -> int:
     model = load_model(args.arm)
     check_folder(config_dir(), "the config directory")  # where the calibration goes
-    module = importlib.import_module(_module_for(model.name, args.driver))
+    calibration = _calibration(model, args.driver)
     driver = open_kept(model, args)
-    ask = _ask
-    if args.driver == "sim":  # the simulated OWI is timed by an automatic operator
-        operator = auto_operator(driver)
-        ask = operator.ask if operator is not None else _ask
+    ask: Ask = _ask
+    if args.driver == "sim" and calibration.operator is not None:  # an automatic operator
+        ask = calibration.operator(driver) or _ask
     with closing(driver):
-        path = module.run_calibration(model, driver, ask, print)
+        path = calibration.run(model, driver, ask, print)
     print(f"wrote {path}")
     return 0

@@ -10,15 +10,13 @@ from types import FrameType
 from typing import Any
 
 from .._errors import InputError
-from ..connect import emulate
+from ..connect import driver_kind, emulate, emulated_kinds, listed
 from ..model import load_model
-
-KINDS = {"ssc32": "an SSC-32U", "maestro": "a Pololu Maestro", "dynamixel": "a Dynamixel bus"}
 
 EPILOG = """\
 The first line printed is the pseudo-terminal's path (say /dev/pts/7); open it like a
-serial port, from armkit itself (--port /dev/pts/7 with --driver ssc32, maestro or
-dynamixel) or from any program:
+serial port, from armkit itself (--port /dev/pts/7 with --driver {drivers})
+or from any program:
 
   armkit emulate ssc32 --arm lynx6 &
   python -c "import serial; s = serial.Serial('/dev/pts/7', 9600); s.write(b'VER\\r')"
@@ -31,17 +29,20 @@ OpenManipulator-X's five XM430 servos (IDs 11..15) at 1,000,000 baud.
 
 
 def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
-    """Add ``emulate``."""
+    """Add ``emulate``: one choice per driver kind with an emulator (``emulated_kinds``)."""
+    kinds = emulated_kinds()
     p = sub.add_parser(
         "emulate",
-        help="serve a simulated SSC-32, Maestro or Dynamixel bus on a pseudo-terminal",
+        help=f"serve a simulated {listed([kind.title for kind in kinds])} on a pseudo-terminal",
         description="Start a simulated controller on a pseudo-terminal, print its path and "
         "serve until Ctrl-C, so any program or library (pyserial, the dynamixel-sdk, "
         "armkit itself with --port PATH) can talk to it as to the hardware.",
-        epilog=EPILOG,
+        epilog=EPILOG.format(drivers=listed([kind.name for kind in kinds])),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("kind", choices=list(KINDS), help="which controller to emulate")
+    p.add_argument(
+        "kind", choices=[kind.name for kind in kinds], help="which controller to emulate"
+    )
     p.add_argument(
         "--arm",
         dest="emulate_arm",
@@ -60,7 +61,7 @@ def run_emulate(args: argparse.Namespace) -> int:
     done = threading.Event()
     previous = signal.signal(signal.SIGTERM, lambda n, f: _stop(done, n, f))
     try:
-        what = KINDS[args.kind] + (f" driving the {model.name}" if model else "")
+        what = driver_kind(args.kind).device + (f" driving the {model.name}" if model else "")
         try:
             print(emulator.port, flush=True)
             print(f"armkit: {what} on {emulator.port}; Ctrl-C to stop", file=sys.stderr, flush=True)

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 from .._errors import ArmkitError, InputError
 from .._files import config_dir
 from .._terminal import count
+from ..connect import kinds_of
 from ._open_arm import open_arm
 from ._watch import add_watch_options
 
@@ -119,7 +120,7 @@ def _check(args: argparse.Namespace) -> int:
         print(result.plan.format(source))
     plan = result.plan
     later = f" (+{plan.unknown} timed when run)" if plan.unknown else ""
-    if "owi535" in result.model.drivers:  # timed motors: each unit runs at its own rates
+    if any("timed" in kind.traits for kind in kinds_of(result.model)):  # each unit's own rates
         later += "; timed as a new unit runs: 'armkit run --dry-run' times this unit"
     print(
         f"{source.name}: ok for {result.model.name}: {count(len(plan.steps), 'step')}, {plan.total:.2f} s from home{later}"

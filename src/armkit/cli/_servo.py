@@ -7,9 +7,8 @@ from contextlib import ExitStack
 from typing import Any
 
 from .._errors import DeviceError, InputError
+from ..connect import kinds_with
 from ._args import integer, number
-
-SERVO_DRIVERS = ("ssc32", "maestro")
 
 SERVO_EPILOG = """\
 examples:
@@ -59,10 +58,11 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 
 def _servo_driver(args: argparse.Namespace) -> str:
-    if args.driver not in SERVO_DRIVERS:
-        raise InputError(
-            f"this command needs --driver ssc32 or --driver maestro, not {args.driver!r}"
-        )
+    """The --driver, a kind of hobby-servo controller (InputError otherwise)."""
+    hobby = [kind.name for kind in kinds_with("hobby")]
+    if args.driver not in hobby:
+        needs = " or ".join(f"--driver {name}" for name in hobby)
+        raise InputError(f"this command needs {needs}, not {args.driver!r}")
     return str(args.driver)
 
 

@@ -30,19 +30,29 @@ from typing import TYPE_CHECKING, Any
 
 from .._clock import Clock
 from .._errors import InputError
-from ..drivers import DRIVERS, Driver
-from ..drivers import driver_names as hardware_names
-from ..drivers import open_driver as open_hardware
+from ..drivers import Driver
 from ..model import ArmModel
 from ..sim import SimArm as SimArm
 from ..sim import World as World
 from ..sim import state_file
 from ..sim import world_of as world_of
+from ._kind import Ask as Ask
+from ._kind import Calibration as Calibration
+from ._kind import DriverKind as DriverKind
+from ._kind import PortRule as PortRule
+from ._kind import Trait as Trait
+from ._kinds import driver_kind as driver_kind
+from ._kinds import driver_kinds as driver_kinds
+from ._kinds import emulated_kinds as emulated_kinds
+from ._kinds import kind_names
+from ._kinds import kinds_of as kinds_of
+from ._kinds import kinds_with as kinds_with
+from ._kinds import listed as listed
 
 if TYPE_CHECKING:
     from ..devices.dynamixel import DynamixelBus
     from ..sim.emulators import Emulator
-    from ..sim.owi_operator import SimOperator
+    from ._kind import Emulated
 
 # The builders (``_simulate``) import every driver and simulated device: they load
 # when a simulation is opened, so ``import armkit`` stays light.
@@ -70,7 +80,7 @@ def open_driver(
         DeviceError: the device is missing or refuses, or the simulated arm is in use
             by another process (the message names it).
     """
-    from ._simulate import simulate
+    from ._simulate import simulate, simulate_generic
 
     if world is not None and not isinstance(world, World):
         raise InputError(
@@ -81,17 +91,18 @@ def open_driver(
         raise InputError(f"driver must be a driver name such as 'sim', got {driver!r}")
     if driver == "sim":
         check_sim_port(model, port)
-        return simulate(model, native_kind(model), world, kept_state_file(model, port, keep))
-    if driver not in DRIVERS:
-        raise InputError(f"unknown driver {driver!r}; drivers are sim, {', '.join(DRIVERS)}")
+        native = kinds_of(model)
+        build = native[0].simulate if native else simulate_generic
+        return simulate(model, build, world, kept_state_file(model, port, keep))
+    kind = driver_kind(driver)
     if port == "emu":
-        return simulate(model, driver, world, None)
+        return simulate(model, kind.simulate, world, None)
     if world is not None:
         raise InputError(
             f"a world holds simulated devices; {driver} on {port} is real hardware: "
             "drop world=, or use --port emu"
         )
-    return open_hardware(model, driver, port)
+    return kind.open(model, port)
 
 
 def check_sim_port(model: ArmModel, port: str | None) -> None:
@@ -104,8 +115,8 @@ def check_sim_port(model: ArmModel, port: str | None) -> None:
     """
     if port is None or port == "emu" or not _looks_like_a_device(port):
         return
-    kind = native_kind(model)
-    drivers = kind if kind in DRIVERS else "one of " + ", ".join(DRIVERS)
+    native = kinds_of(model)
+    drivers = native[0].name if native else "one of " + ", ".join(kind_names())
     raise InputError(
         f"driver sim simulates the {model.name} and opens no port, but {port} looks like a "
         f"device: for the real arm give its driver (--driver {drivers}), or leave the port "
@@ -124,8 +135,8 @@ def _looks_like_a_device(port: str) -> bool:
 
 
 def driver_names() -> list[str]:
-    """Every name ``driver=`` takes: ``"sim"`` and the drivers of real hardware."""
-    return ["sim", *hardware_names()]
+    """Every name ``driver=`` takes: ``"sim"`` and the driver kinds (``driver_kinds``)."""
+    return ["sim", *kind_names()]
 
 
 def kept_state_file(model: ArmModel, port: str | None, keep: bool) -> Path | None:
@@ -143,35 +154,39 @@ def sim_state_file(model: ArmModel) -> Path:
 
 
 def native_kind(model: ArmModel) -> str:
-    """Which device ``--driver sim`` simulates for ``model``: ``"owi535"``, ``"dynamixel"``,
-    ``"ssc32"``, ``"maestro"``, or ``"generic"`` (a bus of simulated smart servos)."""
-    for kind in ("owi535", "dynamixel", "ssc32", "maestro"):
-        if kind in model.drivers:
-            return kind
-    return "generic"
-
-
-def auto_operator(driver: object) -> SimOperator | None:
-    """An automatic operator for ``calibrate`` on a simulated OWI (None otherwise)."""
-    from ..sim.owi_operator import auto_operator as operator
-
-    return operator(driver)
+    """Which device ``--driver sim`` simulates for ``model``: the first kind (registry
+    order) whose section the model file has, or ``"generic"`` (a bus of simulated smart
+    servos) for a model with none."""
+    native = kinds_of(model)
+    return native[0].name if native else "generic"
 
 
 def simulated_line(kind: str) -> tuple[Any, Clock]:
-    """A serial line to a lone simulated ``"ssc32"`` or ``"maestro"`` and its world's clock
-    (for ``armkit servo --port emu``)."""
+    """A serial line to a lone simulated controller of ``kind`` (``emulated_kinds``) and
+    its world's clock (for ``armkit servo --port emu``)."""
     from ._simulate import simulated_line as line
 
-    return line(kind)
+    return line(_emulated(kind))
 
 
 def emulate(kind: str, model: ArmModel | None = None) -> Emulator:
-    """A simulated ``"ssc32"``, ``"maestro"`` or ``"dynamixel"`` controller (driving ``model``,
-    if given) in a real-time world on a pseudo-terminal: ``.port`` is its path."""
+    """A simulated controller of ``kind`` (``emulated_kinds``), driving ``model`` if given,
+    in a real-time world on a pseudo-terminal: ``.port`` is its path.
+
+    Raises:
+        InputError: a kind that cannot be emulated.
+    """
     from ._emulate import emulate as start
 
-    return start(kind, model)
+    return start(_emulated(kind), model)
+
+
+def _emulated(name: str) -> Emulated:
+    for kind in emulated_kinds():
+        if kind.name == name and kind.emulate is not None:
+            return kind.emulate
+    names = ", ".join(kind.name for kind in emulated_kinds())
+    raise InputError(f"cannot emulate {name!r}; choose one of {names}")
 
 
 def simulated_bus(baudrate: int, retries: int = 3) -> DynamixelBus:
@@ -182,11 +197,22 @@ def simulated_bus(baudrate: int, retries: int = 3) -> DynamixelBus:
 
 
 __all__ = [
+    "Ask",
+    "Calibration",
+    "DriverKind",
+    "PortRule",
     "SimArm",
+    "Trait",
     "World",
-    "auto_operator",
     "check_sim_port",
+    "driver_kind",
+    "driver_kinds",
     "driver_names",
+    "emulate",
+    "emulated_kinds",
+    "kinds_of",
+    "kinds_with",
+    "listed",
     "native_kind",
     "open_driver",
     "sim_state_file",

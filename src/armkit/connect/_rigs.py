@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .._errors import ArmkitError
 from ..drivers.dynamixel import calibration_points
 from ..drivers.servo import load_setup
 from ..model import ArmModel, DynamixelSection, dynamixel_section
@@ -79,11 +80,35 @@ def dynamixel_rig(
     return Rig(device, arm, cfg.baudrate, cfg)
 
 
-def lone_rig(kind: str, world: World) -> Rig:
-    """A controller with no arm on it: an SSC-32 at 9600 baud, a Maestro, or the
-    OpenManipulator-X's five XM430s (IDs 11..15) at 1,000,000 baud."""
-    if kind == "ssc32":
+def ssc32_rig(model: ArmModel | None, world: World) -> Rig:
+    """An SSC-32 driving ``model``'s servos, or alone at 9600 baud (``model`` None)."""
+    if model is None:
         return Rig(SimSSC32(9600), None, 9600)
-    if kind == "maestro":
+    return servo_rig(model, world, "ssc32", None)
+
+
+def maestro_rig(model: ArmModel | None, world: World) -> Rig:
+    """A Maestro driving ``model``'s servos, or alone (``model`` None)."""
+    if model is None:
         return Rig(SimMaestro(), None, 9600)
-    return Rig(SimDynamixelBus(clock=world.device_time), None, GENERIC_BAUD)
+    return servo_rig(model, world, "maestro", None)
+
+
+def dxl_rig(model: ArmModel | None, world: World) -> Rig:
+    """XM430s on a Dynamixel bus driving ``model`` (its ``[drivers.dynamixel]`` table, or
+    the generic setup for an arm with no driver table), or alone: the OpenManipulator-X's
+    five XM430s (IDs 11..15) at 1,000,000 baud (``model`` None).
+
+    Raises:
+        ArmkitError: the model is driven by another kind of controller.
+    """
+    if model is None:
+        return Rig(SimDynamixelBus(clock=world.device_time), None, GENERIC_BAUD)
+    if "dynamixel" in model.drivers:
+        return dynamixel_rig(model, world, None)
+    if model.drivers:
+        raise ArmkitError(
+            f"{model.name} is driven by {', '.join(model.drivers)}, not a Dynamixel bus; "
+            f"emulate that instead"
+        )
+    return dynamixel_rig(model, world, None, generic_config(model))

@@ -31,17 +31,19 @@ from ..sim import SimArm, World, state_key
 from ..sim.assembly import Persistence, Wire, add_owi_arm, serial_port
 from ..sim.owi535 import SimOwiUsb
 from ..sim.owi_sim import OwiSim
-from ._rigs import dynamixel_rig, generic_config, lone_rig, servo_rig
+from ._kind import Emulated, Simulator
+from ._rigs import dxl_rig, dynamixel_rig, generic_config, servo_rig
 
 
-def simulate(model: ArmModel, kind: str, world: World | None, state: Path | None) -> Driver:
-    """``model``'s driver for ``kind`` on a simulated device in ``world`` (None: a new
-    virtual-time world), its truth kept in ``state`` (None: in memory only)."""
+def simulate(model: ArmModel, build: Simulator, world: World | None, state: Path | None) -> Driver:
+    """``model``'s driver on a simulated device, built by a driver kind's ``simulate`` part
+    (``build``), in ``world`` (None: a new virtual-time world), its truth kept in
+    ``state`` (None: in memory only)."""
     where = world or World()
     keep = Persistence(state, model, _what(model, state)) if state is not None else None
     opened: list[SimArm] = []
     try:
-        driver = _BUILDERS[kind](model, where, keep, opened)
+        driver = build(model, where, keep, opened)
     except BaseException:
         for arm in opened:
             where.remove_arm(arm.name)
@@ -62,14 +64,18 @@ def _closing(world: World, arm: SimArm, keep: Persistence | None) -> Callable[[]
 
 
 def _servo(
-    model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm], kind: str
+    model: ArmModel,
+    world: World,
+    keep: Persistence | None,
+    opened: list[SimArm],
+    kind: str,
+    opener: Callable[..., Driver],
 ) -> Driver:
     rig = servo_rig(model, world, kind, keep.truth if keep else None)
     assert rig.arm is not None
     opened.append(rig.arm)
     wire = Wire(rig.device, world, baudrate=rig.baudrate, timeout=0.1)
     wire.on_close(_closing(world, rig.arm, keep))
-    opener = open_ssc32 if kind == "ssc32" else open_maestro
     return opener(model, serial_port(wire), clock=world.clock)
 
 
@@ -89,13 +95,16 @@ def _dynamixel(
     return DynamixelDriver(model, bus, config=rig.config, clock=world.clock)
 
 
-def _generic(
+def simulate_generic(
     model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
 ) -> Driver:
+    """An arm with no driver table: the Dynamixel driver on a generic bus of XM430s."""
     return _dynamixel(model, world, keep, opened, generic_config(model))
 
 
-def _owi(model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]) -> Driver:
+def simulate_owi535(
+    model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
+) -> Driver:
     arm, physics = add_owi_arm(world, model, truth=keep.truth if keep else None)
     opened.append(arm)
     board = SimOwiUsb(physics)
@@ -122,11 +131,12 @@ def _usb_device(board: SimOwiUsb) -> OwiDevice:
     return open_device(OwiUsbBackend(board=board))
 
 
-def simulated_line(kind: str) -> tuple[Any, Clock]:
-    """A serial line to a lone simulated ``"ssc32"`` or ``"maestro"`` (no arm on it) in a
-    new world, and that world's clock: for the raw device commands (``armkit servo``)."""
+def simulated_line(emulated: Emulated) -> tuple[Any, Clock]:
+    """A serial line to a lone simulated controller (a driver kind's ``emulate`` part with
+    no arm on it) in a new world, and that world's clock: for the raw device commands
+    (``armkit servo``)."""
     world = World()
-    rig = lone_rig(kind, world)
+    rig = emulated(None, world)
     return serial_port(Wire(rig.device, world, baudrate=rig.baudrate, timeout=0.1)), world.clock
 
 
@@ -134,7 +144,7 @@ def simulated_bus(baudrate: int, retries: int = 3) -> DynamixelBus:
     """A Dynamixel bus with the OpenManipulator-X's five simulated XM430s (IDs 11..15)
     and no arm on them: for ``armkit dxl-scan --port emu``."""
     world = World()
-    wire = Wire(lone_rig("dynamixel", world).device, world, baudrate=baudrate, timeout=0)
+    wire = Wire(dxl_rig(None, world).device, world, baudrate=baudrate, timeout=0)
     port = PortHandler(serial_port(wire), world.clock)
     if not port.setBaudRate(baudrate):
         raise DeviceError(
@@ -144,24 +154,22 @@ def simulated_bus(baudrate: int, retries: int = 3) -> DynamixelBus:
     return DynamixelBus.on_port(port, clock=world.clock, retries=retries)
 
 
-def _ssc32(model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]) -> Driver:
-    return _servo(model, world, keep, opened, "ssc32")
-
-
-def _maestro(
+def simulate_ssc32(
     model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
 ) -> Driver:
-    return _servo(model, world, keep, opened, "maestro")
+    """The servo driver on a simulated SSC-32 driving ``model``'s servos."""
+    return _servo(model, world, keep, opened, "ssc32", open_ssc32)
 
 
-def _dxl(model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]) -> Driver:
+def simulate_maestro(
+    model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
+) -> Driver:
+    """The servo driver on a simulated Maestro driving ``model``'s servos."""
+    return _servo(model, world, keep, opened, "maestro", open_maestro)
+
+
+def simulate_dynamixel(
+    model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
+) -> Driver:
+    """The Dynamixel driver on simulated XM430s set up by ``[drivers.dynamixel]``."""
     return _dynamixel(model, world, keep, opened, dynamixel_section(model))
-
-
-_BUILDERS: dict[str, Callable[[ArmModel, World, Persistence | None, list[SimArm]], Driver]] = {
-    "owi535": _owi,
-    "ssc32": _ssc32,
-    "maestro": _maestro,
-    "dynamixel": _dxl,
-    "generic": _generic,
-}

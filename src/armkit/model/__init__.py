@@ -14,7 +14,13 @@ from ._load import load_model as load_model
 from ._load import shipped_models as shipped_models
 from ._owi_section import OwiSection as OwiSection
 from ._owi_section import owi_section as owi_section
+from ._sections import DYNAMIXEL_SECTION as DYNAMIXEL_SECTION
+from ._sections import MAESTRO_SECTION as MAESTRO_SECTION
+from ._sections import OWI535_SECTION as OWI535_SECTION
+from ._sections import SECTIONS as SECTIONS
+from ._sections import SSC32_SECTION as SSC32_SECTION
 from ._sections import DynamixelSection as DynamixelSection
+from ._sections import Section as Section
 from ._sections import dynamixel_section as dynamixel_section
 from ._types import ArmModel as ArmModel
 from ._types import DHRow as DHRow

@@ -1,24 +1,26 @@
 """The ``[drivers.<name>]`` tables of a model file, checked completely when the
 model loads and read back as typed setups by the drivers.
 
-Model files keep the tables as written (``ArmModel.drivers``); ``owi_section``
-(``_owi_section``, the OWI-535's table) and ``dynamixel_section`` turn them into
-frozen dataclasses, and
+Model files keep the tables as written (``ArmModel.drivers``). Each table a model
+file may have is one ``Section`` of ``SECTIONS``: its name and the function that
+checks it and reads it as typed settings (``OwiSection``, ``DynamixelSection``).
 ``check_driver_sections`` runs every check at load, so a driver never meets a
-missing key or a wrong type.
+missing key or a wrong type. The driver kinds (``armkit.connect.driver_kinds()``) name
+their section from here: a model file is read below the drivers.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Generic, TypeVar
 
 from .._errors import ModelError
 from ._check import NUM, Checker
-from ._owi_section import check_owi
+from ._owi_section import OwiSection, check_owi
 from ._types import ArmModel
 
-DRIVER_SECTIONS = ("owi535", "ssc32", "maestro", "dynamixel")
+T = TypeVar("T")
 BAUDRATES = (
     9600, 19200, 38400, 57600, 115200, 1_000_000, 2_000_000, 3_000_000, 4_000_000, 4_500_000,
 )  # fmt: skip
@@ -33,6 +35,26 @@ _SERVO = {
     "channels": list, "baudrate": int, "center_deg": list, "direction": list,
     "grip_pulse_us": list,
 }  # fmt: skip
+
+
+@dataclass(frozen=True)
+class Section(Generic[T]):
+    """One ``[drivers.NAME]`` table a model file may have.
+
+    Attributes:
+        name: the table's name (``"ssc32"`` for ``[drivers.ssc32]``).
+        read: checks the table of a model being loaded and reads it as typed settings,
+            ``read(check, table, model)`` (ModelError names the field).
+    """
+
+    name: str
+    read: Callable[[Checker, Any, ArmModel], T]
+
+    def of(self, model: ArmModel) -> T:
+        """The model's table as typed settings (ModelError if it has none)."""
+        if not isinstance(model.drivers.get(self.name), dict):
+            raise ModelError(f"{model.name} has no [drivers.{self.name}] table")
+        return self.read(Checker(model.source), model.drivers[self.name], model)
 
 
 @dataclass(frozen=True)
@@ -66,14 +88,10 @@ class DynamixelSection:
 
 def check_driver_sections(check: Checker, data: Any, model: ArmModel) -> None:
     """Every ``[drivers.*]`` table of a model being loaded (ModelError names the field)."""
-    check.table(data, "drivers", dict.fromkeys(DRIVER_SECTIONS, dict), ())
-    for name, section in data.items():
-        if name == "owi535":
-            check_owi(check, section, model)
-        elif name == "dynamixel":
-            _dynamixel(check, section, model)
-        else:
-            _servo(check, section, model, f"drivers.{name}")
+    by_name = {section.name: section for section in SECTIONS}
+    check.table(data, "drivers", dict.fromkeys(by_name, dict), ())
+    for name, table in data.items():
+        by_name[name].read(check, table, model)
 
 
 def dynamixel_section(model: ArmModel) -> DynamixelSection:
@@ -126,7 +144,8 @@ def _gripper_ticks(check: Checker, data: Any, w: str) -> tuple[int, int]:
 
 
 def _servo(check: Checker, data: Any, model: ArmModel, w: str) -> None:
-    """``[drivers.ssc32]``/``[drivers.maestro]`` (the servo driver reads them as tables)."""
+    """``[drivers.ssc32]``/``[drivers.maestro]`` (the servo driver reads them as tables,
+    ``armkit.drivers.servo.load_setup``)."""
     check.table(data, w, _SERVO, ("channels",))
     dof, channels = model.dof, data["channels"]
     if len(channels) not in (dof, dof + 1):
@@ -148,3 +167,20 @@ def _servo(check: Checker, data: Any, model: ArmModel, w: str) -> None:
     pulses = check.numbers(data.get("grip_pulse_us", [500.0, 2500.0]), f"{w}.grip_pulse_us", 2)
     for k, p in enumerate(pulses):
         check.within(p, f"{w}.grip_pulse_us[{k}]", 500.0, 2500.0, "µs")
+
+
+def _ssc32(check: Checker, data: Any, model: ArmModel) -> None:
+    _servo(check, data, model, "drivers.ssc32")
+
+
+def _maestro(check: Checker, data: Any, model: ArmModel) -> None:
+    _servo(check, data, model, "drivers.maestro")
+
+
+OWI535_SECTION: Section[OwiSection] = Section("owi535", check_owi)
+SSC32_SECTION: Section[None] = Section("ssc32", _ssc32)
+MAESTRO_SECTION: Section[None] = Section("maestro", _maestro)
+DYNAMIXEL_SECTION: Section[DynamixelSection] = Section("dynamixel", _dynamixel)
+SECTIONS: tuple[Section[Any], ...] = (
+    OWI535_SECTION, SSC32_SECTION, MAESTRO_SECTION, DYNAMIXEL_SECTION,
+)  # fmt: skip

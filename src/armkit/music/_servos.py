@@ -11,6 +11,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
+from ..connect import kinds_of
 from ..model import ArmModel
 from ._predict import (
     Predictor,
@@ -39,7 +40,6 @@ SERVO_LAG = {"dynamixel": 0.010, "hobby": 0.025}
 # from the base) turned 0.01 mm above or below the top and were missed or heard at a
 # tenth of their speed; sent on time the head goes 0.5-0.8 mm through (33-35 ms below).
 REBOUND_LEAD = {"dynamixel": 0.002, "hobby": 0.0}
-HOBBY_DRIVERS = ("ssc32", "maestro")  # a model's drivers that move hobby servos
 
 
 @runtime_checkable
@@ -83,9 +83,10 @@ def model_servos(model: ArmModel) -> str:
     """``"dynamixel"`` or ``"hobby"``: the servos of an arm known only by its model (its
     drivers, as the model file lists them: what ``armkit check`` plans a piece with);
     InputError for an arm with neither."""
-    if "dynamixel" in model.drivers:
+    traits = {trait for kind in kinds_of(model) for trait in kind.traits}
+    if "smart" in traits:
         return "dynamixel"
-    if any(name in model.drivers for name in HOBBY_DRIVERS):
+    if "hobby" in traits:
         return "hobby"
     raise InputError(
         f"playing needs servos that time their moves (Dynamixel, SSC-32 or Maestro); the "

@@ -19,6 +19,7 @@ from numpy.typing import NDArray
 
 from .._errors import ArmkitError
 from ..arm import Arm
+from ..connect import kinds_with
 
 F64 = NDArray[np.float64]
 JOG_KEYS = (("i", "k"), ("j", "u"), ("f", "r"), ("d", "e"), ("g", "t"), ("h", "y"))
@@ -191,7 +192,7 @@ def _why_no_limp(arm: Arm) -> str:
             "its angles from time), so a pose moved by hand could not be read back"
         )
     bus = str(getattr(getattr(arm.driver, "bus", None), "name", ""))
-    on = {"ssc32": " on the SSC-32", "maestro": " on the Maestro"}.get(bus, "")
+    on = "".join(f" on the {kind.title}" for kind in kinds_with("hobby") if kind.name == bus)
     return (
         f"its hobby servos{on} report no position and take no torque-off command, "
         "so a pose moved by hand could not be read back"

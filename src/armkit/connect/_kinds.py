@@ -1,0 +1,225 @@
+"""The registry of driver kinds: one ``DriverKind`` entry each, read by every place that
+needs to know the kinds (the factory, ``--driver``, ``emulate``, ``calibrate``,
+``servo``, the script's ``driver`` line, music, teach).
+
+Adding a controller is its parts on their floors and one entry here (see
+docs/adding-a-controller.md). The parts are referenced by small functions that
+import the real one when called, so that reading the registry (``armkit --help``)
+loads no driver, device or simulator.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from .._errors import InputError
+from ..drivers import Driver
+from ..model import (
+    DYNAMIXEL_SECTION,
+    MAESTRO_SECTION,
+    OWI535_SECTION,
+    SSC32_SECTION,
+    ArmModel,
+)
+from ._kind import Ask, Calibration, DriverKind, Say, Trait
+
+if TYPE_CHECKING:
+    from ..sim import SimArm, World
+    from ..sim.assembly import Persistence
+    from ._rigs import Rig
+
+# The OWI-535: four DC motors and a gripper run for a time from a USB board.
+
+
+def _open_owi535(model: ArmModel, port: str | None) -> Driver:
+    from ..drivers.timed import open_driver
+
+    return open_driver(model, port)
+
+
+def _simulate_owi535(
+    model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
+) -> Driver:
+    from ._simulate import simulate_owi535
+
+    return simulate_owi535(model, world, keep, opened)
+
+
+def _calibrate_owi535(model: ArmModel, driver: Any, ask: Ask, say: Say) -> Path:
+    from ..drivers.timed import run_calibration
+
+    return run_calibration(model, driver, ask, say)
+
+
+def _owi535_operator(driver: Driver) -> Ask | None:
+    from ..sim.owi_operator import auto_operator
+
+    operator = auto_operator(driver)
+    return operator.ask if operator is not None else None
+
+
+# Hobby servos on an SSC-32 or a Maestro, through pulse tables.
+
+
+def _open_ssc32(model: ArmModel, port: str | None) -> Driver:
+    from ..drivers.servo import open_ssc32
+
+    return open_ssc32(model, port)
+
+
+def _open_maestro(model: ArmModel, port: str | None) -> Driver:
+    from ..drivers.servo import open_maestro
+
+    return open_maestro(model, port)
+
+
+def _simulate_ssc32(
+    model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
+) -> Driver:
+    from ._simulate import simulate_ssc32
+
+    return simulate_ssc32(model, world, keep, opened)
+
+
+def _simulate_maestro(
+    model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
+) -> Driver:
+    from ._simulate import simulate_maestro
+
+    return simulate_maestro(model, world, keep, opened)
+
+
+def _emulate_ssc32(model: ArmModel | None, world: World) -> Rig:
+    from ._rigs import ssc32_rig
+
+    return ssc32_rig(model, world)
+
+
+def _emulate_maestro(model: ArmModel | None, world: World) -> Rig:
+    from ._rigs import maestro_rig
+
+    return maestro_rig(model, world)
+
+
+def _calibrate_servos(model: ArmModel, driver: Any, ask: Ask, say: Say) -> Path:
+    from ..drivers.servo import run_calibration
+
+    return run_calibration(model, driver, ask, say)
+
+
+# Dynamixel smart servos on one Protocol 2.0 bus.
+
+
+def _open_dynamixel(model: ArmModel, port: str | None) -> Driver:
+    from ..drivers.dynamixel import open_driver
+
+    return open_driver(model, port)
+
+
+def _simulate_dynamixel(
+    model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
+) -> Driver:
+    from ._simulate import simulate_dynamixel
+
+    return simulate_dynamixel(model, world, keep, opened)
+
+
+def _emulate_dynamixel(model: ArmModel | None, world: World) -> Rig:
+    from ._rigs import dxl_rig
+
+    return dxl_rig(model, world)
+
+
+KINDS: tuple[DriverKind, ...] = (
+    DriverKind(
+        name="owi535",
+        device="an OWI-535's USB board",
+        title="OWI-535",
+        section=OWI535_SECTION,
+        traits=frozenset({"timed"}),
+        port="usb",
+        open=_open_owi535,
+        simulate=_simulate_owi535,
+        emulate=None,
+        calibrate=Calibration(_calibrate_owi535, operator=_owi535_operator),
+    ),
+    DriverKind(
+        name="ssc32",
+        device="an SSC-32U",
+        title="SSC-32",
+        section=SSC32_SECTION,
+        traits=frozenset({"hobby"}),
+        port="serial",
+        open=_open_ssc32,
+        simulate=_simulate_ssc32,
+        emulate=_emulate_ssc32,
+        calibrate=Calibration(_calibrate_servos),
+    ),
+    DriverKind(
+        name="maestro",
+        device="a Pololu Maestro",
+        title="Maestro",
+        section=MAESTRO_SECTION,
+        traits=frozenset({"hobby"}),
+        port="serial",
+        open=_open_maestro,
+        simulate=_simulate_maestro,
+        emulate=_emulate_maestro,
+        calibrate=Calibration(_calibrate_servos),
+    ),
+    DriverKind(
+        name="dynamixel",
+        device="a Dynamixel bus",
+        title="Dynamixel bus",
+        section=DYNAMIXEL_SECTION,
+        traits=frozenset({"smart"}),
+        port="serial",
+        open=_open_dynamixel,
+        simulate=_simulate_dynamixel,
+        emulate=_emulate_dynamixel,
+        calibrate=None,
+    ),
+)
+
+
+def driver_kinds() -> tuple[DriverKind, ...]:
+    """Every driver kind, registry order (read at each call: the registry is ``KINDS``)."""
+    return KINDS
+
+
+def kind_names() -> list[str]:
+    """The names of the driver kinds, registry order."""
+    return [kind.name for kind in driver_kinds()]
+
+
+def driver_kind(name: str) -> DriverKind:
+    """The kind called ``name``.
+
+    Raises:
+        InputError: no such kind (the message lists them).
+    """
+    for kind in driver_kinds():
+        if kind.name == name:
+            return kind
+    raise InputError(f"unknown driver {name!r}; drivers are sim, {', '.join(kind_names())}")
+
+
+def kinds_with(trait: Trait) -> tuple[DriverKind, ...]:
+    """The kinds whose motors have ``trait``, registry order."""
+    return tuple(kind for kind in driver_kinds() if trait in kind.traits)
+
+
+def kinds_of(model: ArmModel) -> tuple[DriverKind, ...]:
+    """The kinds ``model``'s file has a section for, registry order."""
+    return tuple(kind for kind in driver_kinds() if kind.section.name in model.drivers)
+
+
+def emulated_kinds() -> tuple[DriverKind, ...]:
+    """The kinds whose simulated controller can be served on a pseudo-terminal."""
+    return tuple(kind for kind in driver_kinds() if kind.emulate is not None)
+
+
+def listed(words: list[str], last: str = "or") -> str:
+    """``"ssc32, maestro or dynamixel"``: words in a sentence."""
+    return words[0] if len(words) == 1 else f"{', '.join(words[:-1])} {last} {words[-1]}"
