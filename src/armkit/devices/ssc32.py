@@ -206,15 +206,16 @@ class SSC32:
         )
 
     def read_analog(self, channel: int) -> float:
-        """The voltage on analog input ``channel`` (0..3 = ``VA``..``VD``) [V], 0..5 in
-        steps of 5/255 V, by one ``V<A-D>`` query (SSC-32U user guide: one byte back)."""
-        if channel not in range(4):
-            raise InputError(f"the SSC-32 has analog inputs 0..3 (VA..VD), got {channel}")
-        letter = "ABCD"[channel]
+        """The voltage on analog input ``channel`` (0..7 = ``VA``..``VH``) [V], 0..4.98 in
+        steps of 5/256 V, by one ``V<A-H>`` query (SSC-32U user guide, "Analog Inputs":
+        one byte back, "multiply by 5/256")."""
+        if channel not in range(8):
+            raise InputError(f"the SSC-32U has analog inputs 0..7 (VA..VH), got {channel}")
+        letter = "ABCDEFGH"[channel]
         reply = self._link.exchange(
             f"V{letter}".encode("ascii") + CR, 1, bytes, f"analog query (V{letter})"
         )
-        return reply[0] * 5.0 / 255.0
+        return reply[0] * 5.0 / 256.0
 
     def pulses_off(self, channels: Iterable[int]) -> None:
         """Stop sending pulses on ``channels`` (``#<ch>P0`` each, one line; SSC-32U user

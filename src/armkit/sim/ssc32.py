@@ -5,16 +5,20 @@ from the host side) is parsed exactly: ``#`` lines (group moves with ``P``,
 ``S``, ``T``; ``P0`` pulse off; ``PO`` offsets; ``H``/``L`` and ``#<bank>:<value>``
 digital outputs: ``_ssc32_lines``, clamping 500..2500 µs and skipping only a bad
 clause), ``Q``, ``QP<ch>...``, ``STOP<ch>``, ``VER``, the digital inputs
-``A B C D`` and latched ``AL BL CL DL`` ("Digital Input": ASCII "0"/"1" each,
-a latched read is "0" if the input went low since the last one); ESC cancels a
-line, CR ends it. Pulses move linearly in the device's time at the commanded
+``A``..``F`` and latched ``AL``..``FL`` ("Digital Input": ASCII "0"/"1" each,
+a latched read is "0" if the input went low since the last one), the analog
+inputs ``VA``..``VH`` ("Analog Inputs": one byte each, volts x 256/5, 255 at
+4.98 V), the registers ``R<r>`` (read: the value in ASCII and CR), ``R<r>=<n>``
+and ``RDFLT`` ("OK" CR) ("Register Read/Write"); ESC cancels a line, CR ends it.
+A line is a run of commands: each query in it is answered in turn, and a piece
+the board cannot read is skipped without silencing the rest. Pulses move linearly in the device's time at the commanded
 speed and time (``_pulses.VirtualServo``). Each command is one row of
 ``commands`` (name -> handler): a new command of the manual is one row and one method.
 
 The board has no feedback: ``QP`` reports the pulse it sends (offset included,
 0 while off). Its replies go through an ``Outbox`` (faults: ``inject``). It
 listens at one baud rate and ignores a host at another (``baudrate``), like the board.
-The analog inputs ``VA``..``VD`` answer one byte each, 0..255 for 0..5 V, from ``analog``.
+The analog inputs read ``analog`` (channel 0..7 = A..H -> volts).
 """
 
 from __future__ import annotations
@@ -29,8 +33,13 @@ from ._pulses import MoveRecord, PulseOutputs, VirtualServo
 from ._ssc32_lines import CHANNELS, HashLine, Tokens, parse_hash_line
 
 VERSION = b"SSC32-V2.50USB\r"
-_TOKEN = re.compile(r"(STOP|VER|V[A-D]|QP|PO|AL|BL|CL|DL|Q|#|P|S|T|H|L|:|A|B|C|D)(-?\d*)")
-INPUTS = ("A", "B", "C", "D")
+_TOKEN = re.compile(
+    r"(RDFLT|STOP|VER|V[A-H]|QP|PO|AL|BL|CL|DL|EL|FL|Q|R|=|#|P|S|T|H|L|:|A|B|C|D|E|F)(-?\d*)"
+)
+INPUTS = ("A", "B", "C", "D", "E", "F")  # G and H are analog only
+MOVE_TOKENS = frozenset(("#", "P", "S", "T", "H", "L", ":", "PO"))
+REGISTERS = 256  # R0..R255
+REGISTER_DEFAULTS = {1: 600, 2: 70}  # Transmit Delay [us], Transmit Pacing [us]; R4 = baud / 10
 
 
 class SimSSC32(PulseOutputs):
@@ -64,12 +73,17 @@ class SimSSC32(PulseOutputs):
             "QP": self._query_pulses,
             "STOP": self._stop,
             "VER": self._version,
-            **{f"V{c}": self._query_analog for c in "ABCD"},
+            **{f"V{c}": self._query_analog for c in "ABCDEFGH"},
             **{name: self._read_inputs for name in INPUTS + tuple(i + "L" for i in INPUTS)},
+            "R": self._register,
+            "RDFLT": self._defaults,
         }
+        self.registers = [0] * REGISTERS
+        self._answer = bytearray()  # the answers of the line being executed
+        self._defaults([], 0.0, answer=False)
 
     def set_input(self, name: str, high: bool) -> None:
-        """Drive digital input ``name`` (A..D) high or low (a low is latched)."""
+        """Drive digital input ``name`` (A..F) high or low (a low is latched)."""
         self.inputs[name] = high
         if not high:
             self._latched[name] = False
@@ -98,12 +112,15 @@ class SimSSC32(PulseOutputs):
     def _execute(self, line: bytes, now: float) -> None:
         self.received.append(line + b"\r")
         text = re.sub(rb"[ \t\n]", b"", line).decode("latin-1").upper()
-        tokens = _tokenize(text)
-        handler = self.commands.get(tokens[0][0]) if tokens else None
-        if handler is None:
-            self.errors.append(f"not a command: {line!r}")
-            return
-        handler(tokens, now)
+        self._answer = bytearray()
+        for command in _commands(_tokenize(text)):
+            handler = self.commands.get(command[0][0])
+            if handler is None:
+                self.errors.append(f"not a command: {command} in {line!r}")
+                continue
+            handler(command, now)
+        if self._answer:  # the line's answers, in order, as one reply
+            self.outbox.send(bytes(self._answer), now)
 
     def _move(self, tokens: Tokens, now: float) -> None:
         line = parse_hash_line(tokens)
@@ -132,14 +149,14 @@ class SimSSC32(PulseOutputs):
         return abs(pw - start) / speed if speed and start else 0.0
 
     def _status(self, tokens: Tokens, now: float) -> None:
-        self.outbox.send(b"+" if self.busy(now) else b".", now)
+        self._answer += b"+" if self.busy(now) else b"."
 
     def _query_pulses(self, tokens: Tokens, now: float) -> None:
         channels = [int(arg) for kind, arg in tokens if kind == "QP" and arg]
         if len(channels) != len(tokens) or any(ch >= CHANNELS for ch in channels):
             self.errors.append(f"bad pulse query: {tokens}")
             return
-        self.outbox.send(bytes(round(self.pulse(ch, now) / 10) for ch in channels), now)
+        self._answer += bytes(round(self.pulse(ch, now) / 10) for ch in channels)
 
     def _stop(self, tokens: Tokens, now: float) -> None:
         if len(tokens) != 1 or not tokens[0][1] or int(tokens[0][1]) >= CHANNELS:
@@ -148,16 +165,37 @@ class SimSSC32(PulseOutputs):
         self.servos[int(tokens[0][1])].hold(now)
 
     def _query_analog(self, tokens: Tokens, now: float) -> None:
-        """``VA``..``VD`` (any of them, in one line): one byte each, 0..255 for 0..5 V
-        (SSC-32U user guide, "Read analog inputs"); an unconnected input reads 0."""
-        if any(kind[0] != "V" or kind == "VER" or arg for kind, arg in tokens):
+        """``VA``..``VH``: one byte, the volts x 256/5 (SSC-32U user guide, "Analog
+        Inputs": "multiply by 5/256", 255 = 4.98 V); an unconnected input reads 0."""
+        if any(arg for _, arg in tokens):
             self.errors.append(f"bad analog query: {tokens}")
             return
         volts = [self.analog.get(ord(kind[1]) - ord("A"), lambda: 0.0)() for kind, _ in tokens]
-        self.outbox.send(bytes(round(min(5.0, max(0.0, v)) / 5.0 * 255) for v in volts), now)
+        self._answer += bytes(min(255, max(0, int(v * 256.0 / 5.0))) for v in volts)
+
+    def _register(self, tokens: Tokens, now: float) -> None:
+        """``R<r>``: the register's value in ASCII and CR; ``R<r>=<n>``: set it (SSC-32U
+        user guide, "Register Read/Write", r = 0..255)."""
+        number = tokens[0][1]
+        if not number or int(number) >= REGISTERS or not number.lstrip("-").isdigit():
+            self.errors.append(f"bad register: {tokens}")
+            return
+        if len(tokens) == 1:
+            self._answer += f"{self.registers[int(number)]}\r".encode("ascii")
+        elif tokens[1][0] == "=" and tokens[1][1].lstrip("-").isdigit():
+            self.registers[int(number)] = int(tokens[1][1])
+        else:
+            self.errors.append(f"bad register write: {tokens}")
+
+    def _defaults(self, tokens: Tokens, now: float, *, answer: bool = True) -> None:
+        """``RDFLT``: every register to its default, then "OK" CR."""
+        self.registers = [REGISTER_DEFAULTS.get(r, 0) for r in range(REGISTERS)]
+        self.registers[4] = (self.baudrate or 9600) // 10  # R4: the baud rate / 10
+        if answer:
+            self._answer += b"OK\r"
 
     def _version(self, tokens: Tokens, now: float) -> None:
-        self.outbox.send(VERSION, now)
+        self._answer += VERSION
 
     def _read_inputs(self, tokens: Tokens, now: float) -> None:
         if any(kind[0] not in INPUTS or arg for kind, arg in tokens):
@@ -170,15 +208,35 @@ class SimSSC32(PulseOutputs):
             if len(kind) == 2:
                 self._latched[name] = self.inputs[name]
             reply += "1" if level else "0"
-        self.outbox.send(reply.encode("ascii"), now)
+        self._answer += reply.encode("ascii")
 
 
 def _tokenize(text: str) -> Tokens:
-    """``"#1P1500T9"`` -> ``[("#", "1"), ("P", "1500"), ("T", "9")]``; [] if any junk."""
+    """``"#1P1500T9"`` -> ``[("#", "1"), ("P", "1500"), ("T", "9")]``; text that is no
+    token becomes ``("?", text)``."""
     tokens, pos = [], 0
     for match in _TOKEN.finditer(text):
         if match.start() != pos:
-            return []
+            tokens.append(("?", text[pos : match.start()]))
         tokens.append((match.group(1), match.group(2)))
         pos = match.end()
-    return tokens if pos == len(text) else []
+    if pos != len(text):
+        tokens.append(("?", text[pos:]))
+    return tokens
+
+
+def _commands(tokens: Tokens) -> list[Tokens]:
+    """A line's tokens as commands: a ``#`` run of move clauses, ``R<r>`` with its
+    ``=<n>``, every other token alone (each query answered in turn)."""
+    commands: list[Tokens] = []
+    for token in tokens:
+        kind = token[0]
+        joins = commands and (
+            (kind in MOVE_TOKENS and commands[-1][0][0] == "#")
+            or (kind == "=" and commands[-1][0][0] == "R" and len(commands[-1]) == 1)
+        )
+        if joins:
+            commands[-1].append(token)
+        else:
+            commands.append([token])
+    return commands
