@@ -297,7 +297,7 @@ def import_seconds(python: Path | str, module: str, repeats: int = 3) -> float:
 
 
 def _spec(model, targets, task: str, repeats: int) -> dict:  # type: ignore[no-untyped-def]
-    from armkit.cli._urdf import urdf_of
+    from armkit.interchange import urdf_of
     from armkit.kinematics import fk, joint_frames
 
     check_q = targets.q[:5]

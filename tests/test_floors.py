@@ -78,6 +78,15 @@ def test_the_import_reader_sees_relative_and_nested_imports() -> None:
         ("armkit.music", "armkit.drivers"),
         ("armkit.drawing", "armkit.sim"),
         ("armkit.drawing", "armkit.drivers"),
+        # interchange (URDF, MJCF) writes model, kinematics and scene as files: pure
+        ("armkit.interchange", "armkit.sim"),
+        ("armkit.interchange", "armkit.drivers"),
+        ("armkit.interchange", "armkit.connect"),
+        ("armkit.interchange", "armkit.arm"),
+        ("armkit.interchange", "armkit.cli"),
+        ("armkit.model", "armkit.interchange"),
+        ("armkit.kinematics", "armkit.interchange"),
+        ("armkit.scene", "armkit.interchange"),
     ],
 )
 def test_a_floor_does_not_import_what_stands_above_or_beside_it(floor: str, forbidden: str) -> None:

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from armkit import InputError, UnreachableError, fk, ik, ik_batch, load_model
-from armkit.cli._urdf import urdf_of
+from armkit.interchange import urdf_of
 from armkit.kinematics import closed_form
 from armkit.kinematics._chain import chain_of
 from armkit.kinematics._wrist import solve_wrist_batch

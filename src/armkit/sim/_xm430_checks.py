@@ -20,13 +20,13 @@ from __future__ import annotations
 
 from ..devices import dxl_packet as pkt
 from ..devices import xm430 as xm
-from ..devices._xm430_notes import WATCHDOG_LOCKS
+from ..devices import xm430_notes
 from ._xm430_memory import merged
 
 _OWNER: dict[int, xm.Register] = {
     a: reg for reg in xm.XM430_W350.values() for a in range(reg.address, reg.address + reg.size)
 }
-_LOCKED = frozenset(xm.register(name) for name in WATCHDOG_LOCKS)
+_LOCKED = frozenset(xm.register(name) for name in xm430_notes.WATCHDOG_LOCKS)
 
 Written = dict[xm.Register, int]  # register -> the value the write gives it
 
