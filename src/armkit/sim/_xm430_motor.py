@@ -16,7 +16,8 @@ its next packet and as every simulation step sees it (``setpoint`` only reads).
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from collections.abc import Callable
+from typing import Protocol
 
 from ..devices import xm430 as xm
 from ..devices import xm430_notes as notes
@@ -30,8 +31,19 @@ from ._xm430_profile import (
     velocity_profile_times,
 )
 
-if TYPE_CHECKING:
-    from .xm430 import Servo
+
+class Servo(Protocol):
+    """What the motor needs of its servo (``sim.xm430.Servo``): the control table by
+    name, the raw memory, the device clock [s] and the arm's feedback, if on an arm."""
+
+    memory: bytearray
+    clock: Callable[[], float]
+    feedback: Callable[[], tuple[float, float]] | None
+
+    def value(self, name: str) -> int: ...
+
+    def set(self, name: str, value: int) -> None: ...
+
 
 TURN = xm.TICKS_PER_TURN
 NO_LOAD_TICKS_PER_S = notes.NO_LOAD_RPM * TURN / 60.0
