@@ -112,7 +112,7 @@ def sim_rows(files: list[str]) -> list[list[object]]:
         for f in files:
             t0 = time.perf_counter()
             arm = Arm(arm_name, "sim", world=World())
-            job = draw(arm, scene, f, "A5", options=DrawOptions(held=held))
+            job = draw(arm, scene, f, "A5", options=DrawOptions(held=held), fit=True)
             wall = time.perf_counter() - t0
             m = job.metrics
             assert m is not None

@@ -25,7 +25,7 @@ def main() -> None:
     print(f"{'file':<14} {'strokes':>7} {'pen down':>9} {'pen up, file order':>19} {'planned':>8}")
     for name in ("lines.svg", "text.svg", "curve.svg", "seed001.gcode"):
         figure = read_drawing(DRAWINGS / name)
-        fit = Fit.as_is() if name.endswith(".gcode") else Fit(margin=0.010)
+        fit = Fit.as_is() if name.endswith(".gcode") else Fit.to_sheet(margin=0.010)
         plan = plan_drawing(figure, A5, fit, tolerance=1e-4, start=START)
         # the same strokes in the file's own order, for comparison
         as_listed = [

@@ -3,7 +3,7 @@
 The scene (seed 001's board) says where the cubes are; ``tasks.pick`` comes
 down onto green from 30 mm above in three waypoints (from the top, where the
 OpenManipulator-X reaches), closes and goes back up; ``tasks.place`` then puts
-it on red. Each call returns its plan; here the plans are printed, then carried
+it in the free socket board[2, 2], nearer the arm, with the same face up. Each call returns its plan; here the plans are printed, then carried
 out by the simulated arm (objects follow in the simulator's world when it has
 one; this script only moves the arm).
 
@@ -20,7 +20,7 @@ with Arm("openmanipulator_x", "sim") as arm:
     pick = tasks.pick(arm, scene, "green", dry_run=True)
     print(pick)
     tasks.run_plan(arm, pick)
-    place = tasks.place(arm, scene, "green", "red", dry_run=True)
+    place = tasks.place(arm, scene, "green", "board[2,2]", dry_run=True)
     print(place.lines()[0])
     print(place.lines()[-1])
     tasks.run_plan(arm, place)

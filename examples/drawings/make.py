@@ -23,9 +23,13 @@ from pathlib import Path
 import numpy as np
 
 HERE = Path(__file__).resolve().parent
-HEAD = (
-    '<svg xmlns="http://www.w3.org/2000/svg" width="{w}mm" height="{h}mm" viewBox="0 0 {w} {h}">\n'
-)
+WIDTH_MM = 120.0  # every drawing's real width: it fits the shipped A5 sheet at real size
+HEAD = '<svg xmlns="http://www.w3.org/2000/svg" width="{sw}mm" height="{sh}mm" viewBox="0 0 {w} {h}">\n'
+
+
+def _head(w: float, h: float) -> str:
+    """The root element: a viewBox of w x h units drawn WIDTH_MM wide."""
+    return HEAD.format(sw=_f(WIDTH_MM), sh=_f(WIDTH_MM * h / w), w=w, h=h)
 
 
 def _f(v: float) -> str:
@@ -33,7 +37,7 @@ def _f(v: float) -> str:
 
 
 def lines_svg() -> str:
-    out = [HEAD.format(w=180, h=130), '<g fill="none" stroke="black" stroke-width="0.3">\n']
+    out = [_head(180, 130), '<g fill="none" stroke="black" stroke-width="0.3">\n']
     out.append('<path d="M 0 105 C 30 95 50 100 80 104 S 140 96 180 102"/>\n')  # ground
     out.append('<path d="M 0 70 Q 40 40 90 72 T 180 60"/>\n')  # hills
     out.append('<g transform="translate(20 52)">\n')  # house
@@ -77,7 +81,7 @@ def text_svg() -> str:
     from matplotlib.path import Path as MPath
     from matplotlib.textpath import TextPath
 
-    out = [HEAD.format(w=190, h=100), '<g fill="none" stroke="black" stroke-width="0.3">\n']
+    out = [_head(190, 100), '<g fill="none" stroke="black" stroke-width="0.3">\n']
     font = FontProperties(family="DejaVu Sans")
     for k, (words, size) in enumerate((("armkit draws", 20.0), ("pen on paper 0123", 16.0))):
         tp = TextPath((0, 0), words, size=size, prop=font)
@@ -110,7 +114,7 @@ def _cubic_path(p: np.ndarray) -> str:
 
 
 def curve_svg() -> str:
-    out = [HEAD.format(w=180, h=180), '<g fill="none" stroke="black" stroke-width="0.2">\n']
+    out = [_head(180, 180), '<g fill="none" stroke="black" stroke-width="0.2">\n']
     R, r, dist = 50.0, 19.0, 34.0  # hypotrochoid: closes after r / gcd(R, r) = 19 turns
     t = np.linspace(0, 2 * math.pi * 19, 2401)
     x = (R - r) * np.cos(t) + dist * np.cos((R - r) / r * t)

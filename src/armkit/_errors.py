@@ -35,7 +35,14 @@ Reason = Literal[
 
 
 class ArmkitError(Exception):
-    """Base class of every error armkit raises on purpose."""
+    """Base class of every error armkit raises on purpose.
+
+    Attributes:
+        details: more than the one line says (each way tried and why it failed),
+            one item per line; the CLI prints them with ``--explain``. "" if none.
+    """
+
+    details: str = ""
 
 
 class ArmkitWarning(UserWarning):

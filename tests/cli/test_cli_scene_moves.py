@@ -43,7 +43,8 @@ def test_moves_are_checked_against_the_cubes_where_they_are_now(
     capsys.readouterr()
     assert main([*kept, "move", "180", "-100", "20", "--pitch", "-90"]) == 2  # red is there
     assert "5.0 mm into the red" in capsys.readouterr().err
-    assert main([*kept, "move", "220", "-45", "20", "--pitch", "-90"]) == 0  # where it stood
+    assert main([*kept, "move", "220", "45", "60", "--pitch", "-90"]) == 0  # over green
+    assert main([*kept, "move", "220", "45", "20", "--pitch", "-90"]) == 0  # where it stood
 
 
 def test_without_a_scene_only_the_table_and_the_base_are_checked(

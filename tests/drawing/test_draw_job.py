@@ -63,7 +63,7 @@ def test_out_of_reach_is_cut_with_a_note(scene: Scene, square: Path) -> None:
     sheet = scene.sheets[0]
     far = replace(sheet, origin=sheet.origin + np.array([0.10, 0.0, 0.0]))
     arm = Arm("openmanipulator_x", "sim", world=World())
-    job = plan_draw(arm, replace(scene, sheets=(far,)), square, "A5", fit=Fit())
+    job = plan_draw(arm, replace(scene, sheets=(far,)), square, "A5", fit=True)
     assert any("cannot reach" in n for n in job.plan.notes)
     gone = replace(sheet, origin=sheet.origin + np.array([0.6, 0.0, 0.0]))
     q0 = arm.driver.read()

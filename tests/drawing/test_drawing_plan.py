@@ -35,7 +35,7 @@ def _aspect(name: str) -> float:
 
 
 def test_fit_fills_the_printable_area_keeping_aspect() -> None:
-    plan = plan_drawing(EXAMPLES / "lines.svg", A5, Fit(margin=0.015))
+    plan = plan_drawing(EXAMPLES / "lines.svg", A5, Fit.to_sheet(margin=0.015))
     lo, hi = _bounds(plan.strokes)
     assert np.all(lo >= 0.015 - 1e-9) and np.all(hi <= np.array([0.195, 0.133]) + 1e-9)
     touches = np.isclose(lo, 0.015, atol=1e-9) & np.isclose(hi, [0.195, 0.133], atol=1e-9)
@@ -46,10 +46,10 @@ def test_fit_fills_the_printable_area_keeping_aspect() -> None:
 
 
 def test_rotation_stretch_and_real_size() -> None:
-    turned = plan_drawing(EXAMPLES / "lines.svg", A5, Fit(rotation=math.pi / 2))
+    turned = plan_drawing(EXAMPLES / "lines.svg", A5, Fit.to_sheet(rotation=math.pi / 2))
     lo, hi = _bounds(turned.strokes)
     assert (hi[1] - lo[1]) / (hi[0] - lo[0]) == pytest.approx(_aspect("lines.svg"), rel=1e-3)
-    stretched = plan_drawing(EXAMPLES / "lines.svg", A5, Fit(keep_aspect=False, margin=0.01))
+    stretched = plan_drawing(EXAMPLES / "lines.svg", A5, Fit(None, 0.01, keep_aspect=False))
     lo, hi = _bounds(stretched.strokes)
     assert np.allclose([lo, hi], [[0.01, 0.01], [0.2, 0.138]], atol=1e-6)
     real = plan_drawing(EXAMPLES / "text.svg", PaperSize(0.297, 0.210), Fit(scale=1.0))

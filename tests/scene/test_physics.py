@@ -92,7 +92,7 @@ def test_pads_must_cover_the_cube() -> None:
 def test_jaws_square_up_a_turned_cube() -> None:
     world, physics = _world()
     world.set_grip(0.045)
-    _to(world, (220, -45, 15.5))  # red, 11.6 deg off the arm's line
+    _to(world, (220, 45, 15.5))  # red, 11.6 deg off the arm's line
     world.set_grip(0.020)
     assert physics.events[-1].kind == "grasped"
     assert "squared up by 11.6 deg" in physics.events[-1].detail

@@ -56,7 +56,7 @@ def _write(tmp_path: Path, scene: str) -> Path:
 def _script(scene: str) -> str:
     return (
         f'arm openmanipulator_x\nscene "{scene}.toml"\nmove xyz 150 0 100 pitch -90\n'
-        "draw square.svg on A5\n"
+        "draw square.svg on A5 fit\n"  # scaled to the sheet (default: its real 60 mm)
     )
 
 
@@ -96,7 +96,7 @@ def test_strokes_cut_for_reach_are_said_as_plan_draw_says_them(tmp_path: Path) -
     q = np.asarray(ik(model, np.array([0.15, 0.0, 0.10]), np.radians(-90.0), model.home).q)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", DrawingWarning)
-        job = plan_draw(Start(model, q), scene, tmp_path / "square.svg", "A5")
+        job = plan_draw(Start(model, q), scene, tmp_path / "square.svg", "A5", fit=True)
     assert [n for n in job.plan.notes if "cannot reach" in n] == cuts  # the same note
 
 
@@ -115,8 +115,8 @@ def test_the_draw_check_plans_from_the_arm_it_is_given(tmp_path: Path) -> None:
     _write(tmp_path, "far")
     model, scene = load_model("openmanipulator_x"), load_scene(tmp_path / "far.toml")
     svg = tmp_path / "square.svg"
-    check_draw(scene, svg, "A5")  # no arm known: the file on the sheet only
+    check_draw(scene, svg, "A5", fit=True)  # no arm known: the file on the sheet only
     with pytest.raises(JobArgProblem) as err:
-        check_draw(scene, svg, "A5", arm=Start(model, model.home))
+        check_draw(scene, svg, "A5", fit=True, arm=Start(model, model.home))
     assert err.value.names == ()  # the job's line, not one argument
     assert "reaches none of the drawing" in str(err.value)

@@ -35,8 +35,8 @@ def test_a_place_that_cannot_be_planned_fails_the_check_at_its_line() -> None:
     (d,) = result.diagnostics
     assert d.loc.line == 4
     assert "place red: board[0, 1] is taken by green" in d.message
-    (d,) = _check(TIPS.replace("board[0,1]", "board[1,1]")).diagnostics
-    assert d.loc.line == 4 and "place red: cannot put red in board[1, 1]" in d.message
+    (d,) = _check(TIPS.replace("board[0,1]", "xyz 400 0 0")).diagnostics
+    assert d.loc.line == 4 and "place red: cannot put red at (400.0, 0.0, 0.0) mm" in d.message
 
 
 def test_run_refuses_it_before_the_first_line_moves() -> None:
@@ -54,7 +54,7 @@ def test_the_check_follows_the_cubes_from_task_to_task() -> None:
     result = _check("scene board_001\npick red\nplace green\npick green\n")
     (d,) = result.diagnostics
     assert d.loc.line == 4 and "under red" in d.message
-    assert _check("scene board_001\npick red\nplace green\npick blue\nplace red\n").ok
+    assert _check("scene board_001\npick red\nplace board[1,0]\npick blue\nplace red\n").ok
 
 
 def test_after_a_task_the_arm_is_where_its_plan_ends() -> None:
@@ -115,10 +115,11 @@ def test_on_hardware_each_task_plans_with_the_cubes_where_the_last_one_left_them
         monkeypatch.setattr(armkit.tasks, name, planned)
     arm: Arm = counting_arm()[0]
     run_source(
-        arm, Source("job.arm", "scene board_001\npick red\nplace green\npick blue\nplace red\n")
+        arm,
+        Source("job.arm", "scene board_001\npick red\nplace board[1,0]\npick blue\nplace red\n"),
     )
     red_when_blue_goes_on_it = seen["place"][1].cube("red")
-    assert red_when_blue_goes_on_it.position == pytest.approx([0.22, 0.0, 0.028])
+    assert red_when_blue_goes_on_it.position == pytest.approx([0.175, 0.045, 0.003])
 
 
 def test_what_the_check_cannot_know_it_leaves_to_the_run() -> None:
@@ -177,7 +178,7 @@ def _moves_time(jobs: str) -> float:
     ("move", "hit"),
     [
         ("move 220 0 15", "the gripper would be 12.5 mm into the green"),
-        ("move 310 45 4", "the gripper would be 16.0 mm into the board"),
+        ("move 242 0 4", "the gripper would be 16.0 mm into the board"),
         ("move 0 0 5", "the gripper would be 25.0 mm into the base column"),
     ],
 )
@@ -195,7 +196,9 @@ def test_after_a_task_moves_are_checked_against_the_cubes_where_it_left_them() -
     moved = "scene board_001\npick red\nplace xyz 180 -100 0\n"
     refused = _check(moved + "move 180 -100 20 pitch -90\n")
     assert "the gripper would be 5.0 mm into the red" in refused.diagnostics[0].message
-    assert _check(moved + "move 220 -45 20 pitch -90\n").ok  # where red stood
+    assert _check(
+        moved + "move 220 45 60 pitch -90\nmove 220 45 20 pitch -90\n"
+    ).ok  # red stood there
 
 
 def test_opening_the_gripper_lets_the_held_cube_go() -> None:

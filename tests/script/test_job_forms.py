@@ -26,7 +26,7 @@ FORMS: dict[str, list[str]] = {
     "pick CUBE / place WHERE": [
         "scene board_001\npick red\nplace board[0,0]",
         "scene board_001\npick red\nplace board[ 0 , 0 ]",
-        "scene board_001\npick red\nplace blue",
+        "scene board_001\npick red\nplace green",
         "scene board_001\npick red\nplace xyz 180 -100 0",
         "scene board_001\npose spot = xyz 180 -100 0\npick red\nplace spot",
         "scene board_001\nrepeat 2\n  pick red\n  place board[0,0]\nend",

@@ -14,7 +14,7 @@ def test_a_covered_cube_says_what_is_on_it(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     state = ["--scene", "board_001"]  # the simulated arm kept in the test's config folder
-    assert main([*state, "pick", "blue"]) == 0
+    assert main([*state, "pick", "blue", "--pitch", "0"]) == 0  # from the side: upright on red
     assert main([*state, "place", "blue", "red"]) == 0
     capsys.readouterr()
     for args, task in (

@@ -37,7 +37,7 @@ def test_dry_run_prints_the_plan_and_moves_nothing(
         == 0
     )
     out = capsys.readouterr().out
-    assert out.startswith("stack green red blue (openmanipulator_x, scene board_001): 106 steps")
+    assert out.startswith("stack green red blue (openmanipulator_x, scene board_001): 111 steps")
     assert "expected: blue at (220.0, 0.0, 53.0) mm" in out
     assert _where(state, capsys) == before
 
@@ -89,7 +89,7 @@ def test_scene_show_and_list(tmp_path: Path, capsys: pytest.CaptureFixture[str])
     picture = tmp_path / "top.png"
     assert main(["--scene", "board_001", "scene", "show", "-o", str(picture)]) == 0
     out = capsys.readouterr().out
-    assert "red: 25.0 mm at (220.0, -45.0, 3.0) mm, yaw 0.0 deg, +z up, in board[0, 0]" in out
+    assert "red: 25.0 mm at (220.0, 45.0, 3.0) mm, yaw 0.0 deg, +z up, in board[0, 0]" in out
     assert picture.stat().st_size > 10_000 and picture.read_bytes()[:4] == b"\x89PNG"
     assert main(["scene", "list"]) == 0
     assert "board_001" in capsys.readouterr().out

@@ -162,7 +162,7 @@ def test_the_cli_keeps_the_objects_with_a_state_file_of_the_users(
     """With '--port FILE' the arm was kept in FILE but the cubes were not: 'place' after
     'pick' failed with the held cube back where it began."""
     port = ["--port", str(tmp_path / "arm.json"), "--scene", "board_001"]
-    assert main([*port, "pick", "blue"]) == 0
+    assert main([*port, "pick", "blue", "--pitch", "0"]) == 0
     assert main([*port, "place", "blue", "red"]) == 0, capsys.readouterr().err
     assert main(["--scene", "board_001", "pick", "blue"]) == 0  # the default arm's own table
 

@@ -123,7 +123,7 @@ def test_stack_rotates_all_then_stacks_one_cube_higher_each() -> None:
 def test_unreachable_step_is_named_and_nothing_moves() -> None:
     arm, driver = _arm()
     scene = _table_scene(("far", 500.0, 0.0))
-    with pytest.raises(TaskError, match="pick far: cannot pick far: from the top: step 'pick far from the top: above' is unreachable") as info:  # fmt: skip
+    with pytest.raises(TaskError, match=r"^pick far: cannot pick far from the top: too far from the arm \(500 mm out, 42 mm up\); move it nearer the arm$") as info:  # fmt: skip
         tasks.pick(arm, scene, "far")
     assert info.value.step == "pick far from the top: above"
     assert driver.commands == 0

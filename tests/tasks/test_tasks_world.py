@@ -93,13 +93,13 @@ def test_pick_then_place_as_two_tasks() -> None:
     physics = ScenePhysics(scene)
     world.attach(physics)
     arm = Arm(OMX, FakeDriver(world))
-    picked = tasks.pick(arm, scene, "blue")
+    picked = tasks.pick(arm, scene, "blue", pitch=0.0)  # from the side: it goes on red upright
     assert physics.holding is not None
     held = physics.cube("blue")
     assert pose_error(held, picked.after.cube("blue"))[0] < 1e-3
     placed = tasks.place(arm, scene, "blue", "red")
     _assert_as_planned(placed, physics)
-    assert physics.cube("blue").position * 1000 == pytest.approx([220.0, -45.0, 28.0], abs=1.0)
+    assert physics.cube("blue").position * 1000 == pytest.approx([220.0, 45.0, 28.0], abs=1.0)
 
 
 def test_a_refused_task_moves_nothing_in_the_world() -> None:

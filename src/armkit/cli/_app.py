@@ -90,6 +90,11 @@ def build_parser() -> argparse.ArgumentParser:
         "(see 'armkit scene list'); tasks and moves are checked against it (default: none, "
         "an empty table)",
     )
+    parser.add_argument(
+        "--explain",
+        action="store_true",
+        help="on a refusal, say more than its one line: each way tried and why it failed",
+    )
     parser.add_argument("--version", action="version", version=f"armkit {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     for name in COMMAND_MODULES:
@@ -133,7 +138,7 @@ def _run(parser: argparse.ArgumentParser, args: argparse.Namespace) -> int:
         sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's exit
         return code
     except ArmkitError as exc:
-        print(f"armkit: error: {_one_line(exc)}", file=sys.stderr)
+        _refused(exc, bool(getattr(args, "explain", False)))
         return 2
     except BrokenPipeError:  # `armkit ... | head`: the reader left; stop quietly, as `cat` does
         _silence_stdout()
@@ -144,6 +149,17 @@ def _run(parser: argparse.ArgumentParser, args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         print("armkit: interrupted", file=sys.stderr)
         return 130
+
+
+def _refused(exc: ArmkitError, explain: bool) -> None:
+    """The refusal's one line; its details below it with ``--explain``, else a hint."""
+    line = _one_line(exc)
+    if exc.details and not explain:
+        line += " (--explain: more)"
+    print(f"armkit: error: {line}", file=sys.stderr)
+    if exc.details and explain:
+        for detail in exc.details.splitlines():
+            print(f"  {detail}", file=sys.stderr)
 
 
 def _show_warning(

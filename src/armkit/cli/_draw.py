@@ -18,7 +18,8 @@ from ._watch import add_watch_options, watched_arm
 
 EPILOG = (
     "Needs --scene FILE|NAME before 'draw' (a scene with a sheet and a pen, e.g. 'drawing'). "
-    "The whole job is planned first (the file read, fitted to the sheet, cut to the arm's "
+    "The whole job is planned first (the file read at its real size, or scaled to the sheet "
+    "with --fit, placed on the sheet, cut to the arm's "
     "reach with a note saying what was cut, every move checked); nothing moves on a bad "
     "file, name or output path. On a simulated arm, what the pen drew is measured."
 )
@@ -78,6 +79,12 @@ def _options(p: argparse.ArgumentParser) -> None:
         action="store_true",
         help="the pen is in the gripper already (on the simulator: taken to be, the stand's pen not used)",
     )
+    p.add_argument(
+        "--fit",
+        action="store_true",
+        help="scale the drawing to fill the sheet inside the margins (default: the file's "
+        "real size from its units, viewBox and width/height, centred on the sheet)",
+    )
     p.add_argument("--preview", metavar="PNG", help="draw the plan to this picture, then move")
     p.add_argument("--result", metavar="PNG", help="simulated arms: picture what was drawn")
     p.add_argument("--dry-run", action="store_true", help="plan (and --preview) only; no motion")
@@ -112,7 +119,7 @@ def _run(args: argparse.Namespace) -> int:
     report = _Report(args.dry_run)
     with watched_arm(args, scene) as arm, report:
         job = draw(
-            arm, scene, path, args.sheet, args.pen, options=opts,
+            arm, scene, path, args.sheet, args.pen, options=opts, fit=args.fit,
             preview=args.preview, result=args.result, dry_run=args.dry_run,
             progress=report,
         )  # fmt: skip

@@ -49,7 +49,7 @@ def draw(
     pen: str | None = None,
     *,
     options: DrawOptions | None = None,
-    fit: Fit | None = None,
+    fit: Fit | bool | None = None,
     preview: str | Path | None = None,
     result: str | Path | None = None,
     dry_run: bool = False,
@@ -57,6 +57,8 @@ def draw(
 ) -> DrawJob:
     """Draw the SVG or G-code ``file`` on ``sheet`` with ``pen`` (None: the scene's only one).
 
+    Drawn at the file's real size, centred on the sheet (refused with its size if it
+    does not fit); ``fit=True`` scales it to the sheet, a ``Fit`` places it exactly.
     Planned whole first (see ``DrawOptions``); ``preview`` [.png/.svg/.pdf] draws the
     plan before moving; ``dry_run`` stops there. On a simulated arm the pen's trace
     is measured (``DrawJob.metrics``) and ``result`` pictures what it drew.

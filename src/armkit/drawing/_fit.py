@@ -24,9 +24,13 @@ F64 = NDArray[np.float64]
 class Fit:
     """How a drawing goes onto the sheet.
 
+    The default is the file's real size (its units, ``viewBox`` and
+    ``width``/``height``), centred on the sheet, as AxiDraw and vpype keep a
+    file's size; ``Fit.to_sheet()`` scales it to fill the sheet instead.
+
     Attributes:
         scale: None: as large as fits inside the margins; else this factor
-            (1.0 = the file's real size).
+            (1.0 = the file's real size, the default).
         margin: clear border on every side [m]; nothing is drawn there.
         rotation: turn the drawing by this much [rad], counter-clockwise.
         keep_aspect: False stretches the drawing to fill the printable area
@@ -36,7 +40,7 @@ class Fit:
             shapes placed in u, v).
     """
 
-    scale: float | None = None
+    scale: float | None = 1.0
     margin: float = 0.010
     rotation: float = 0.0
     keep_aspect: bool = True
@@ -53,9 +57,26 @@ class Fit:
             raise DrawingError("keep_aspect=False stretches to fit: give no scale with it")
 
     @classmethod
+    def to_sheet(cls, margin: float = 0.010, rotation: float = 0.0) -> Fit:
+        """Scaled to fill the sheet inside the margins, aspect kept (``--fit``)."""
+        return cls(scale=None, margin=margin, rotation=rotation)
+
+    @classmethod
     def as_is(cls, margin: float = 0.0) -> Fit:
         """Real size, where the drawing's coordinates say (G-code for this sheet, shapes)."""
         return cls(scale=1.0, margin=margin, center=False)
+
+
+def as_fit(fit: Fit | bool | None) -> Fit:
+    """A job's ``fit`` argument as a ``Fit``: None or False: the file's real size,
+    centred on the sheet; True: scaled to the sheet (``--fit``, the script's ``fit``)."""
+    if isinstance(fit, Fit):
+        return fit
+    if fit is None or fit is False:
+        return Fit()
+    if fit is True:
+        return Fit.to_sheet()
+    raise DrawingError(f"fit must be True, False or a Fit, got {fit!r}")
 
 
 def fit_transform(strokes: Sequence[F64], size: tuple[float, float], fit: Fit) -> F64:
@@ -73,11 +94,26 @@ def fit_transform(strokes: Sequence[F64], size: tuple[float, float], fit: Fit) -
     pts = np.vstack(strokes) @ R[:2, :2].T
     lo, hi = pts.min(axis=0), pts.max(axis=0)
     k = _scales(hi - lo, room, fit)
+    if fit.center and fit.scale is not None:
+        _check_fits(k * (hi - lo), room, w, h, fit.margin)
     S = np.diag([k[0], k[1], 1.0])
     M: F64 = S @ R
     if fit.center:
         M[:2, 2] = np.array([w, h]) / 2 - k * (lo + hi) / 2
     return M
+
+
+def _check_fits(extent: F64, room: F64, w: float, h: float, margin: float) -> None:
+    """DrawingError with the drawing's size if ``extent`` (2,) [m] exceeds ``room``."""
+    if np.all(extent <= room + 1e-9):
+        return
+    dw, dh = extent * 1e3
+    raise DrawingError(
+        f"the drawing is {dw:.1f} x {dh:.1f} mm, more than the {room[0] * 1e3:g} x "
+        f"{room[1] * 1e3:g} mm inside the {margin * 1e3:g} mm margins of the "
+        f"{w * 1e3:g} x {h * 1e3:g} mm sheet; scale it to the sheet with --fit "
+        "(script: fit)"
+    )
 
 
 def _scales(extent: F64, room: F64, fit: Fit) -> F64:

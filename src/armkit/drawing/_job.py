@@ -23,7 +23,7 @@ from ..model import ArmModel
 from ..scene import Pen, Scene, Sheet
 from ..tasks import Start
 from ._errors import DrawingError, DrawingWarning
-from ._fit import Fit
+from ._fit import Fit, as_fit
 from ._metrics import DrawingMetrics, PenTrace
 from ._pen import pick_pen, put_pen, stand_of
 from ._plan import DrawingPlan, plan_drawing
@@ -127,7 +127,7 @@ def plan_draw(
     pen: str | None = None,
     *,
     options: DrawOptions | None = None,
-    fit: Fit | None = None,
+    fit: Fit | bool | None = None,
 ) -> DrawJob:
     """Plan the job from the arm's joints now; nothing moves (errors as ``draw``).
 
@@ -160,7 +160,7 @@ def plan_on_sheet(
     pen: str | None = None,
     *,
     options: DrawOptions | None = None,
-    fit: Fit | None = None,
+    fit: Fit | bool | None = None,
 ) -> DrawingPlan:
     """The part of ``plan_draw`` no arm is needed for, refused the same way: the sheet
     and the pen of the scene, the pen's stand (unless ``held``), and the file planned on
@@ -170,7 +170,7 @@ def plan_on_sheet(
     the_sheet, the_pen = find_sheet(scene, sheet), find_pen(scene, pen)
     if stand_of(scene, the_pen) is None and not opts.held:
         raise DrawingError(f"no stand in scene {scene.name} holds {the_pen.name}; use held")
-    return plan_drawing(file, the_sheet, replace(fit or Fit(), margin=opts.margin), opts.tolerance)
+    return plan_drawing(file, the_sheet, replace(as_fit(fit), margin=opts.margin), opts.tolerance)
 
 
 def _reachable(rig: Rig, plan: DrawingPlan, q: F64, arm: str) -> tuple[list[Run], tuple[str, ...]]:

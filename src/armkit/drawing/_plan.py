@@ -22,7 +22,7 @@ from .._errors import InputError
 from .._inputs import brief, is_number, shown
 from ._errors import DrawingError, DrawingWarning
 from ._figure import Figure
-from ._fit import Fit, apply, clip_to_box, fit_transform
+from ._fit import Fit, apply, as_fit, clip_to_box, fit_transform
 from ._gcode import read_gcode
 from ._merge import merge_strokes
 from ._order import order_strokes, pen_up_length
@@ -136,19 +136,22 @@ def read_drawing(path: str | Path, *, z_down: float = 0.0) -> Figure:
 def plan_drawing(
     source: Figure | str | Path,
     sheet: SheetLike | tuple[float, float],
-    fit: Fit | None = None,
+    fit: Fit | bool | None = None,
     tolerance: float = 1e-4,
     *,
     start: ArrayLike | None = None,
 ) -> DrawingPlan:
     """Plan ``source`` on ``sheet`` (or a (width, height) [m]) within ``tolerance`` [m];
-    the pen starts at ``start`` (u, v) [m] if given. Raise ``DrawingError``."""
+    the pen starts at ``start`` (u, v) [m] if given. ``fit``: None or False draws the
+    file at its real size centred on the sheet (DrawingError with its size if it does
+    not fit), True scales it to the sheet, a ``Fit`` says exactly how. Raise
+    ``DrawingError``."""
     size = _size(sheet)
     if not (is_number(tolerance) and math.isfinite(tolerance) and tolerance > 0):
         raise DrawingError(f"tolerance must be > 0 m, got {shown(tolerance)}")
     uv0 = None if start is None else uv_point(start, "start")
     fig = source if isinstance(source, Figure) else read_drawing(source)
-    fit = fit or Fit()
+    fit = as_fit(fit)
     M, strokes = _fitted(fig, size, fit, tolerance)
     margin = np.full(2, fit.margin)
     kept = clip_to_box(strokes, margin - 1e-9, np.array(size) - margin + 1e-9)
@@ -190,7 +193,12 @@ def _fitted(
     if not math.isfinite(extent):
         raise DrawingError("coordinates are not finite", file=fig.source)
     coarse = fig.flatten(max(extent, 1e-9) / 2000)
-    M = fit_transform(coarse, size, fit)
+    try:
+        M = fit_transform(coarse, size, fit)
+    except DrawingError as e:
+        if e.file:
+            raise
+        raise DrawingError(str(e), file=fig.source) from None
     k = float(np.sqrt(abs(np.linalg.det(M[:2, :2]))))
     fine = fig.flatten(tolerance / 2 / max(k, 1e-12))
     M = fit_transform(fine, size, fit)

@@ -177,8 +177,27 @@ def _with_cubes(scene: Scene, items: list[Entry]) -> Scene:
                 f"the cube's bottom is at z = {cube.position[2] * 1000:.1f} mm but the surface "
                 f"under it ({under.on}) is at {under.z * 1000:.1f} mm; cubes rest on something",
             )
+        _check_apart(e, scene.cubes, cube)
         scene = replace(scene, cubes=(*scene.cubes, cube))
     return scene
+
+
+def _check_apart(e: Entry, cubes: tuple[Cube, ...], cube: Cube) -> None:
+    """SceneError if ``cube`` would stand inside one listed before it (two cubes in one
+    socket or at one place): their bodies overlap in height and their centres are
+    nearer than half their sizes added (each one's inscribed circle)."""
+    for other in cubes:
+        low, high = cube.position[2], cube.position[2] + cube.size
+        if min(high, other.top_z) - max(low, other.position[2]) <= REST_TOLERANCE:
+            continue  # one above the other
+        apart = float(np.linalg.norm(cube.position[:2] - other.position[:2]))
+        if apart < (cube.size + other.size) / 2 - REST_TOLERANCE:
+            key = next(k for k in ("socket", "position_mm", "on") if e.has(k))
+            raise e.fail(
+                key,
+                f"{cube.name} would stand inside {other.name} (centres {apart * 1000:.1f} mm "
+                "apart); give each cube its own socket or place, or stand it on the other",
+            )
 
 
 def _cube(e: Entry, scene: Scene) -> Cube:

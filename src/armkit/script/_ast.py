@@ -167,10 +167,11 @@ class Header:
 
 @dataclass(frozen=True)
 class JobArg:
-    """One argument of a job: a quantity, a target, or a word or file as written."""
+    """One argument of a job: a quantity, a target, a word or file as written, or
+    True for a flag written."""
 
     name: str
-    value: Quantity | TargetExpr | str | tuple[PoseName, ...]
+    value: Quantity | TargetExpr | str | bool | tuple[PoseName, ...]
     loc: Loc
 
 

@@ -185,7 +185,7 @@ def read_job(c: Cursor, t: Token) -> Statement:
             )
         word = c.word(tuple(keyed), "an argument keyword")
         p = keyed.pop(word.text)
-        args.append(_job_arg(c, p))
+        args.append(JobArg(p.name, True, c.loc(word)) if p.kind == "flag" else _job_arg(c, p))
     written = {a.name for a in args}
     for p in spec.params:
         if p.required and p.name not in written:

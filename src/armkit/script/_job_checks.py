@@ -111,6 +111,7 @@ def draw(
     file: Path,
     sheet: str | None = None,
     pen: str | None = None,
+    fit: bool = False,
     *,
     arm: Start | None = None,
 ) -> None:
@@ -132,9 +133,9 @@ def draw(
         read_drawing(file)
     with _about():
         if arm is None:
-            plan_on_sheet(scene, file, sheet, pen)
+            plan_on_sheet(scene, file, sheet, pen, fit=fit)
         else:
-            plan_draw(arm, scene, file, sheet, pen)
+            plan_draw(arm, scene, file, sheet, pen, fit=fit)
 
 
 def play(

@@ -13,7 +13,8 @@ The function is called as ``function(arm, scene, **arguments)`` with
   poses through FK);
 - ``object``: a scene name (str); ``objects``: a tuple of them;
 - ``file``: a ``pathlib.Path`` (relative paths are relative to the script);
-- ``choice``: the word; ``angle`` [rad]; ``length`` [m]; ``percent`` as a
+- ``choice``: the word; ``flag``: True when its keyword is written (it takes
+  no value: ``draw square.svg fit``); ``angle`` [rad]; ``length`` [m]; ``percent`` as a
   fraction; ``count`` an int. Optional arguments not written are not passed.
 
 ``place`` puts down the cube the script's ``pick`` took: the runner passes it as
@@ -33,7 +34,7 @@ from .._errors import ScriptError
 from ._units import Dim
 
 ParamKind = Literal[
-    "where", "object", "objects", "file", "choice", "angle", "length", "percent", "count"
+    "where", "object", "objects", "file", "choice", "flag", "angle", "length", "percent", "count"
 ]
 QUANTITY_KINDS: dict[str, Dim] = {
     "angle": "angle",
@@ -69,6 +70,8 @@ class JobParam:
         shown = "|".join(self.choices) if self.kind == "choice" else self.name.upper()
         if self.kind == "objects":
             shown += " ..."
+        if self.kind == "flag":
+            return f"[{self.keyword}]"
         text = f"{self.keyword} {shown}" if self.keyword else shown
         return text if self.required else f"[{text}]"
 
@@ -170,9 +173,11 @@ JOBS: dict[str, JobSpec] = {
             JobParam("file", "file", choices=DRAW_SUFFIXES),
             JobParam("sheet", "object", keyword="on", required=False),
             JobParam("pen", "object", keyword="with", required=False),
+            JobParam("fit", "flag", keyword="fit", required=False),
         ),
         "armkit.drawing:draw",
-        "draw an SVG or G-code file on a sheet (picking the pen up and putting it back)",
+        "draw an SVG or G-code file on a sheet at its real size (fit: scaled to the sheet), "
+        "picking the pen up and putting it back",
         check=f"{CHECKS}:draw",
         check_plans=True,
     ),

@@ -202,6 +202,8 @@ class Resolver:
 
     def _job_arg(self, p: JobParam, a: JobArg, here: JointPose | None) -> object:
         v = a.value
+        if isinstance(v, bool):
+            return v
         if isinstance(v, Quantity):
             si = self.number(v.value, v.dim)
             return int(si) if si is not None and v.dim == "count" else si

@@ -21,6 +21,7 @@ TOP, SIDE = -math.pi / 2, 0.0
 JAW_ROOM = 0.010  # [m] opened this much wider than the cube on each side
 SIDE_MARGIN = 0.002  # [m] between a level gripper's links and the surface round the cube
 UP = np.array([0.0, 0.0, 1.0])
+OTHER_FACE = "would land on another face"  # the end of a put-down's refusal for it
 
 
 def how(pitch: float) -> str:
@@ -125,9 +126,13 @@ def pick(ctx: Context, st: State, name: str, pitch: float, shift: float) -> Stat
     return up(ctx, st, p, pitch, label, kin=kin, ignore=frozenset())
 
 
-def place(ctx: Context, st: State, bottom: F64, pitch: float, where: str) -> State:
+def place(
+    ctx: Context, st: State, bottom: F64, pitch: float, where: str, *, turn: bool = False
+) -> State:
     """Come down with the held cube so its lowest face's centre is at ``bottom``
-    (scene frame) [m], open, go back up."""
+    (scene frame) [m], open, go back up. The cube keeps the face up it had when it
+    was picked unless ``turn`` (001's rotation); a pitch that would lay it on
+    another face is a TaskError."""
     if st.held is None:
         raise TaskError(f"{ctx.task}: nothing is held to put down", step=ctx.task)
     cube = st.held.cube
@@ -138,12 +143,31 @@ def place(ctx: Context, st: State, bottom: F64, pitch: float, where: str) -> Sta
     if rest.outcome != "placed":
         raise TaskError(
             f"{ctx.task}: step '{label}': {cube.name} would be {rest.outcome} on {rest.on}",
-            step=label,
-        )
+            step=label, why=f"{cube.name} would be {rest.outcome} on {rest.on}",
+            remedy="put it on a flat, free place",
+        )  # fmt: skip
+    if not turn and rest.cube.up_face != cube.up_face:
+        was = held_pitch(st.held)
+        raise TaskError(
+            f"{ctx.task}: step '{label}': {cube.name} would land {rest.cube.up_face} up, "
+            f"not {cube.up_face} up as it was",
+            step=label, why=f"{cube.name} {OTHER_FACE}",
+            remedy=f"put it down {how(was)}, as it was picked, or turn it with rotate-cube",
+        )  # fmt: skip
     st = down(ctx, st, p, pitch, label, kin=kin, ignore=frozenset())
     st = grip(ctx, st, opening, f"release {cube.name}")
     st = replace(st, held=None, scene=replace(st.scene, cubes=(*st.scene.cubes, rest.cube)))
     return up(ctx, st, p, pitch, label, kin=kin, ignore=frozenset({cube.name}))
+
+
+def held_pitch(held: Held) -> float:
+    """The pitch [rad] at which ``held`` goes down with the face up it was picked
+    with: the direction that was up, in the tool frame, is (sin pitch, ., .) for a
+    tool whose x axis points along the approach (every base-yaw arm)."""
+    cube = held.cube
+    R_obj = cube.T[:3, :3]  # as it stood when picked
+    up_in_tool = held.T_tool_object[:3, :3] @ (R_obj.T @ UP)
+    return math.asin(max(-1.0, min(1.0, float(up_in_tool[0]))))
 
 
 def _tool_point(

@@ -19,7 +19,7 @@ from .._inputs import is_number, shown
 from ..kinematics import fk
 from ..scene import Cube, Scene
 from ._calibration import Calibration, calibration_for
-from ._choose import pick_any, place_any, rotate
+from ._choose import carry, pick_any, place_any, rotate
 from ._live import live_scene, run_checked
 from ._plan import Plan, TaskError
 from ._points import move_point
@@ -207,9 +207,8 @@ def move_item(
         name = item
 
         def body(c: Context, s: State) -> State:
-            s = pick_any(c, s, item, p)
-            return place_any(
-                c, s, target.bottom, target.label, p if p is not None else target.pitch
+            return carry(
+                c, s, item, target.bottom, target.label, p if p is not None else target.pitch
             )
 
     else:
@@ -281,9 +280,10 @@ def stack(
         for name in names if rotate_first else ():
             s = rotate(c, s, name, str(rotate_first))
         for below, name in itertools.pairwise(names):
-            s = pick_any(c, s, name, None)
             top = s.scene.cube(below)
-            s = place_any(c, s, top.position + np.array([0.0, 0.0, top.size]), f"on {below}", None)
+            s = carry(
+                c, s, name, top.position + np.array([0.0, 0.0, top.size]), f"on {below}", None
+            )
         return s
 
     plan = plan_task(

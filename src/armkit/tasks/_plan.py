@@ -8,7 +8,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import UnreachableError
+from .._errors import Reason, UnreachableError
 from .._terminal import count
 from ..scene import Cube, Held, Scene
 
@@ -22,11 +22,26 @@ class TaskError(UnreachableError):
         step: the step's label (``"rotate red: pick from the top: down 3/3"``).
         link: the colliding link (``"gripper"``, ``"held red"``), or ``""``.
         object: what it would hit (``"board"``, ``"table"``), or ``""``.
+        why: the reason in a few words (``"too far from the arm"``), "" if not known.
+        remedy: what to do, in a few words (``"move it nearer the arm"``), or "".
+        details: the whole story (``ArmkitError.details``).
     """
 
-    def __init__(self, message: str, *, step: str = "", link: str = "", obj: str = "") -> None:
-        super().__init__(message, reason="collision" if link else "unreachable")
+    def __init__(
+        self,
+        message: str,
+        *,
+        step: str = "",
+        link: str = "",
+        obj: str = "",
+        reason: Reason | None = None,
+        why: str = "",
+        remedy: str = "",
+        details: str = "",
+    ) -> None:
+        super().__init__(message, reason=reason or ("collision" if link else "unreachable"))
         self.step, self.link, self.object = step, link, obj
+        self.why, self.remedy, self.details = why, remedy, details
 
 
 @dataclass(frozen=True)

@@ -105,7 +105,9 @@ def moves(
         where = "" if end else " on the way"
         raise TaskError(
             f"{ctx.task}: step '{labels[k]}'{where}: {hit.describe()}",
-            step=labels[k], link=hit.link, obj=hit.object,
+            step=labels[k], link=hit.link, obj=hit.object, why=hit.describe(),
+            remedy="give a point higher above the table" if hit.object == "table" else
+            f"move the {hit.object} out of the way or choose another place",
         )  # fmt: skip
     steps = list(st.steps)
     for k, q in enumerate(qs):
@@ -196,12 +198,26 @@ def up(
 
 def solve(kin: ArmModel, base: F64, pitch: float, seed: F64, task: str, label: str) -> F64:
     """IK for tool point ``base`` (base frame) [m] at ``pitch`` [rad] nearest ``seed``;
-    TaskError ``"<task>: step '<label>' is unreachable: ..."``."""
+    TaskError ``"<task>: step '<label>' is unreachable: ..."`` with the reason and
+    the remedy in a few words (``TaskError.why``, ``remedy``)."""
     try:
         q: F64 = ik(kin, (float(base[0]), float(base[1]), float(base[2])), pitch, seed).q
     except UnreachableError as exc:
-        raise TaskError(f"{task}: step '{label}' is unreachable: {exc}", step=label) from None
+        why, remedy = UNREACHABLE_WORDS.get(exc.reason, UNREACHABLE_WORDS["unreachable"])
+        out = float(np.hypot(base[0], base[1])) * 1000.0
+        raise TaskError(
+            f"{task}: step '{label}' is unreachable: {exc}", step=label, reason=exc.reason,
+            why=f"{why} ({out:.0f} mm out, {base[2] * 1000.0:.0f} mm up)", remedy=remedy,
+        ) from None  # fmt: skip
     return q
+
+
+UNREACHABLE_WORDS = {  # an IK failure's reason -> (why, remedy), in a few words
+    "too_far": ("too far from the arm", "move it nearer the arm"),
+    "too_close": ("too near the arm's base", "move it further out"),
+    "joint_limit": ("a joint would pass its limit", "move it nearer the middle of the reach"),
+    "unreachable": ("out of reach", "move it nearer the middle of the reach"),
+}
 
 
 def _calibrated(ctx: Context, kin: ArmModel, st: State, point: F64, pitch: float, q: F64) -> F64:
