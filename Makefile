@@ -12,8 +12,8 @@ $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
-$(STAMP): $(BIN)/python pyproject.toml
-	$(BIN)/python -m pip install --quiet -e ".[plot]"
+$(STAMP): $(BIN)/python pyproject.toml  # the demo's own environment: its hints need plot and web
+	$(BIN)/python -m pip install --quiet -e ".[plot,web]"
 	touch $(STAMP)
 
 $(DEVSTAMP): $(BIN)/python pyproject.toml

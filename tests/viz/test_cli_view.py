@@ -112,3 +112,36 @@ def test_view_serves_the_page_on_loopback_until_ctrl_c(config: Path) -> None:
     assert "stopped" in out
     assert f"wrote 0 poses to {config.parent / 'page.arm'}" in out
     assert main(["check", str(config.parent / "page.arm")]) == 0
+
+
+def test_a_target_is_a_marker_and_the_kept_arm_stays(
+    config: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """'view --target' is documented as a marker, and it moved the kept simulated arm to the
+    target (a later task then started with the gripper 16 mm above a cube)."""
+    import os
+    import signal
+    import subprocess
+    import sys
+
+    assert main(["where"]) == 0
+    before = capsys.readouterr().out
+    cmd = [sys.executable, "-c", "from armkit.cli import main; raise SystemExit(main())"]
+    cmd += ["--scene", "board_001", "view", "--port", "0", "--target", "220", "0", "16"]
+    env = dict(os.environ, ARMKIT_CONFIG_DIR=str(config))
+    proc = subprocess.Popen(
+        [*cmd, "--pitch", "-90"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+        env=env,
+    )  # fmt: skip
+    try:
+        assert proc.stdout is not None
+        said = [proc.stdout.readline() for _ in range(2)]
+        assert "on green" in said[0] and said[1].startswith("armkit view: http://"), said
+        proc.send_signal(signal.SIGINT)
+        proc.communicate(timeout=20)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert main(["where"]) == 0
+    assert capsys.readouterr().out == before

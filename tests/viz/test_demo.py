@@ -14,7 +14,9 @@ import pytest
 from browser_page import chromium_or_skip
 
 from armkit.cli import main
-from armkit.cli._demo import FOLLOW, NEXT
+from armkit.cli._demo import FOLLOW, SCREENSHOT, TOUR, next_commands
+
+ROOT = Path(__file__).parents[2]
 
 
 @pytest.fixture(autouse=True)
@@ -43,7 +45,7 @@ def test_the_demo_shows_every_arm_and_scene_and_leaves_nothing_behind(
 
     with Image.open(tmp_path / "stack.png") as img:
         assert np.asarray(img.convert("RGB")).std() > 10  # a picture, not a blank page
-    for command in [*NEXT, FOLLOW]:
+    for command in [*next_commands(), FOLLOW]:
         assert command in out
 
 
@@ -54,7 +56,7 @@ def test_a_demo_refusal_comes_before_anything_runs(capsys: pytest.CaptureFixture
     assert captured.out == "" and captured.err.count("armkit: error:") == 2
 
 
-@pytest.mark.parametrize("command", NEXT)
+@pytest.mark.parametrize("command", [*next_commands(), TOUR, SCREENSHOT])
 def test_every_suggested_command_works(
     command: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -82,3 +84,29 @@ def test_the_suggested_follow_serves_until_ctrl_c(config: Path) -> None:
             proc.kill()
             proc.wait()
     assert proc.returncode == 0 and "stopped" in out
+
+
+def test_without_chromium_the_demo_suggests_a_picture_it_can_make(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """On a bare machine (no Chromium on PATH) the demo's hint 'view --screenshot' failed;
+    it now suggests the animation of the same view, which needs only the plot extra."""
+    monkeypatch.delenv("ARMKIT_CHROMIUM", raising=False)
+    monkeypatch.setenv("PATH", str(tmp_path))  # nothing there: no chromium, no tmux
+    hints = next_commands()
+    assert SCREENSHOT not in hints and TOUR in hints
+    assert main(shlex.split(TOUR)[1:]) == 0 and (tmp_path / "tour.gif").stat().st_size > 1000
+
+
+def test_make_demo_installs_what_its_hints_need() -> None:
+    """`make demo` installed only the plot extra, and the hints 'view --screenshot' and
+    'view --follow' need the web extra: every extra a hint needs is in the demo's install."""
+    makefile = (ROOT / "Makefile").read_text()
+    stamp = makefile.split("$(STAMP):", 1)[1].split("\n\n", 1)[0]
+    installed = set(stamp.split('-e ".[', 1)[1].split("]", 1)[0].split(","))
+    needs = {"--gif": "plot", "view": "web"}
+    for hint in (*next_commands(), SCREENSHOT, TOUR, FOLLOW):
+        words = shlex.split(hint)
+        for word, extra in needs.items():
+            if word in words and not (word == "view" and "--gif" in words):
+                assert extra in installed, (hint, extra, installed)

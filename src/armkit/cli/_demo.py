@@ -14,6 +14,7 @@ shows it live in the browser in real time. It ends with commands to try next.
 from __future__ import annotations
 
 import argparse
+import importlib.util
 import math
 import warnings
 from pathlib import Path
@@ -31,12 +32,13 @@ from ._watch import add_watch_options, watch_world, watching
 
 NEXT = (
     "armkit --scene board_001 rotate-cube red --gif rotate.gif",
-    "armkit --scene board_001 view --screenshot board.png",
     "armkit --scene search_002 move-item object bin",
     "armkit --arm lynx6 ik 200 0 50 --pitch -45 --all",
     "armkit scene list",
 )
-FOLLOW = "armkit --scene board_001 view --follow"
+SCREENSHOT = "armkit --scene board_001 view --screenshot board.png"  # web extra and Chromium
+TOUR = "armkit --scene board_001 view --gif tour.gif"  # the picture without a browser (plot)
+FOLLOW = "armkit --scene board_001 view --follow"  # the web extra
 REACH = (0.55, 0.0, 0.25)  # the point each arm reaches: fractions of its reach (x, y, z)
 
 
@@ -69,9 +71,28 @@ def run_demo(args: argparse.Namespace) -> int:
     _put_away()
     _other_scenes()
     _draw_circle()
-    print("\nNext: " + ", ".join(f"'{command}'" for command in NEXT) + ".")
-    print(f"Watch them: '{FOLLOW}' in one terminal (open its URL), one of them in another.")
+    print("\nNext: " + ", ".join(f"'{command}'" for command in next_commands()) + ".")
+    if has_web():
+        print(f"Watch them: '{FOLLOW}' in one terminal (open its URL), one of them in another.")
+    else:
+        print("Watch them in a 3D page in the browser: pip install 'armkit[web]'.")
     return 0
+
+
+def has_web() -> bool:
+    """Whether the web extra (viser) is installed: ``view --follow`` and ``--screenshot``."""
+    return importlib.util.find_spec("viser") is not None
+
+
+def next_commands() -> tuple[str, ...]:
+    """The commands the demo suggests, each one that runs here: a screenshot of the 3D
+    page where the web extra and Chromium are, else an animation of it (plot extra)."""
+    picture = TOUR
+    if has_web():
+        from ..viz.web import find_chromium
+
+        picture = SCREENSHOT if find_chromium() is not None else TOUR
+    return (*NEXT[:1], picture, *NEXT[1:])
 
 
 def _every_arm() -> None:

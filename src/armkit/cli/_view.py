@@ -156,9 +156,8 @@ def run_view(args: argparse.Namespace) -> int:
             teach.move_joints(q)
             teach.mover.wait_idle()
         view.update()
-        if target is not None:
-            teach.drag_target(target[0], target[1])
-            teach.mover.wait_idle()
+        if target is not None:  # a marker only: the arm stays where it is (--help)
+            view.set_target(target[0], target[1])
         done = _finish(args, web, view, outputs, target, teach.close, teach.poses)
         if script is not None:
             _write_script(script, teach)
