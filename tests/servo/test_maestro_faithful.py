@@ -103,3 +103,43 @@ def test_acceleration_ramps_the_speed(b: Board) -> None:
     assert 0 < early < 0.25 * 800 * 0.6
     b.world.advance(1.3)
     assert b.position(0) == 1800.0
+
+
+def test_script_commands_leave_the_servos_alone(b: Board) -> None:
+    """5.f "Serial Script Commands": Stop Script 0xA4 (Pololu 0xAA, n, 0x24), Restart
+    Script at Subroutine 0xA7 n, with Parameter 0xA8 n lo hi, Get Script Status 0xAE
+    (0x00 running, 0x01 stopped). None is an error and no servo moves or goes off."""
+    b.device.script_subroutines = 2
+    b.target(0, 1600)
+    b.send(0xAE)
+    assert b.port.read(1) == b"\x01"  # factory: the script is stopped
+    b.send(0xA7, 1)
+    b.send(0xAE)
+    assert b.port.read(1) == b"\x00"
+    b.send(0xA4)
+    b.send(0xAA, 12, 0x2E)
+    assert b.port.read(1) == b"\x01"
+    b.send(0xA8, 0, 16383 & 0x7F, 16383 >> 7)
+    b.send(0xAA, 12, 0x2E)
+    assert b.port.read(1) == b"\x00"
+    assert b.device.script_stack == [16383]
+    b.send(0xAA, 12, 0x24)
+    b.send(0xAE)
+    assert b.port.read(1) == b"\x01"
+    assert b.position(0) == 1600.0
+    b.send(0xA1)  # Get Errors: none
+    assert b.port.read(2) == b"\x00\x00"
+
+
+def test_a_subroutine_the_script_lacks_leaves_it_stopped(b: Board) -> None:
+    """5.f: subroutines are numbered in the order the script defines them; the factory
+    script defines none, so restarting at one leaves the script stopped (no error bit:
+    the guide names none), and the servos as they were."""
+    b.target(3, 1500)
+    b.send(0xA7, 0)
+    b.send(0xA8, 5, 1, 0)
+    b.send(0xAE)
+    assert b.port.read(1) == b"\x01"
+    assert b.position(3) == 1500.0
+    b.send(0xA1)
+    assert b.port.read(2) == b"\x00\x00"

@@ -16,6 +16,16 @@ Pololu Maestro Servo Controller User's Guide, 5.c "Serial Protocols" and 5.e
 Get Errors (0xA1), Go Home (0xA2). A byte that breaks the framing sets the
 serial protocol error bit.
 
+5.f "Serial Script Commands": Stop Script (0xA4), Restart Script at Subroutine
+(0xA7, subroutine number), with Parameter (0xA8, subroutine, parameter low and
+high 7 bits: 0..16383 pushed on the stack) and Get Script Status (0xAE: 0x00
+running, 0x01 stopped). None of them touches the servos. The emulator runs no
+script bytecode: the loaded script is ``script_subroutines`` subroutines (factory:
+an empty script, none, and stopped), a started one runs until Stop Script (a
+subroutine started by serial command loops forever or ends with QUIT, 5.f); a
+subroutine the script does not define leaves the script stopped (logged in
+``errors``; the guide names no error bit for it).
+
 4.b "Channel Settings": each channel has a range (factory 992..2000 µs; a target
 outside it is clamped, ``configure`` widens it) and a home setting (factory
 "off"). On any error, and on Go Home, every channel goes to its home setting:
@@ -63,6 +73,9 @@ class SimMaestro(PulseOutputs):
         self.errors: deque[str] = log()
         self.history: deque[MoveRecord] = log()
         self.error_bits = 0
+        self.script_subroutines = 0  # the loaded script's subroutines (factory: empty)
+        self.script_running = False
+        self.script_stack: list[int] = []
         self._packet = b""
         self.commands: dict[int, tuple[int, Callable[[bytes, float], None]]] = {
             0x84: (3, self._set_target),
@@ -73,6 +86,10 @@ class SimMaestro(PulseOutputs):
             0x9F: (-1, self._set_multiple_targets),  # 2 + 2 x count
             0xA1: (0, self._get_errors),
             0xA2: (0, self._go_home),
+            0xA4: (0, self._stop_script),
+            0xA7: (1, self._restart_script),
+            0xA8: (3, self._restart_script),
+            0xAE: (0, self._get_script_status),
         }
 
     def configure(self, channel: int, low_us: float, high_us: float, home: Home = "off") -> None:
@@ -200,3 +217,19 @@ class SimMaestro(PulseOutputs):
                 self.go(ch, 0.0, 0.0, now)
             elif home != "ignore":
                 self._target(ch, float(home), now)
+
+    def _stop_script(self, data: bytes, now: float) -> None:
+        self.script_running = False
+
+    def _restart_script(self, data: bytes, now: float) -> None:
+        """Restart Script at Subroutine ``data[0]``, with the parameter ``data[1:]`` if given."""
+        self.script_running, self.script_stack = False, []
+        if data[0] >= self.script_subroutines:
+            self.errors.append(f"no subroutine {data[0]}: the script has {self.script_subroutines}")
+            return
+        if len(data) == 3:
+            self.script_stack = [data[1] | data[2] << 7]
+        self.script_running = True
+
+    def _get_script_status(self, data: bytes, now: float) -> None:
+        self.outbox.send(b"\x00" if self.script_running else b"\x01", now)
