@@ -121,10 +121,13 @@ def test_refusals_say_why() -> None:
     with pytest.raises(UnreachableError, match="waist would be") as limit:
         ik(m, (0.3, 0.1, 0.5), orientation=np.eye(3))
     assert limit.value.reason == "joint_limit"
-    out = ik_batch(
-        m, [[2.0, 0.0, 0.5], [0.3, 0.1, 0.5]], orientations=np.tile(np.eye(3), (2, 1, 1))
-    )
-    assert out.reason.tolist() == ["too_far", "joint_limit"] and np.isnan(out.q).all()
+    with pytest.raises(UnreachableError) as close:  # within the 150 mm shoulder offset
+        ik(m, (0.05, 0.0, 0.67), orientation=np.eye(3))
+    assert close.value.reason == "too_close"
+    P = [[2.0, 0.0, 0.5], [0.3, 0.1, 0.5], [0.05, 0.0, 0.67]]
+    out = ik_batch(m, P, orientations=np.tile(np.eye(3), (3, 1, 1)))
+    assert out.reason.tolist() == ["too_far", "joint_limit", "too_close"]
+    assert np.isnan(out.q).all()
 
 
 @pytest.mark.parametrize(

@@ -96,14 +96,15 @@ def ik(
     if solve is not None and orientation is None and (method == "auto" or method == "analytic"):
         if pitch is None:
             pitch = chain.default_pitch
-        free = chain.free
-        bx, by, at = (x, y, pitch) if chain.shift is None else chain.based(x, y, pitch)
+        free, at = chain.free, pitch
+        if chain.shift is not None:  # the family's frame; p and pitch stay the world's
+            x, y, at = chain.based(x, y, pitch)
         if at is not None or free is None:
-            found = solve(bx, by, z, at, seed, None)
-        elif not (found := free(bx, by, z, seed)):  # type: ignore[assignment]
-            found = [] if found is None else limited(chain, bx, by, z, seed)
+            found = solve(x, y, z, at, seed, None)
+        elif not (found := free(x, y, z, seed)):  # type: ignore[assignment]
+            found = [] if found is None else limited(chain, x, y, z, seed)
         if not found:
-            if not x * x + y * y + z * z <= chain.reach2:
+            if not p[0] * p[0] + p[1] * p[1] + z * z <= chain.reach2:
                 raise too_far(chain, p, pitch)
             assert chain.family is not None
             raise refusal(chain, chain.family, p, pitch, seed)
@@ -253,7 +254,10 @@ def ik_batch(
             raise InputError("give pitches or orientations, not both")
         Rw = rotation(orientations, "orientations", n)
         q, ok = solve_wrist_batch(chain.wrist, chain.lower, chain.upper, P, Rw, seed)
-        reason = np.where(ok, "", "joint_limit").astype("<U14")  # near ones; far: too_far
+        reason = np.full(n, "", dtype="<U14")
+        for i in np.flatnonzero(~ok).tolist():  # why not, as ``ik`` says it
+            R9 = tuple(Rw[i].ravel().tolist())
+            reason[i] = wrist_refusal(chain, tuple(P[i].tolist()), R9, tuple(seed[i])).reason
         return IKBatchResult(q, ok, reason, "analytic")
     use = _numeric_method(chain, name, orientations)
     if use != "lm":

@@ -106,7 +106,10 @@ def wrist_solver(wf: WristFamily, lower: Q, upper: Q) -> WristSolver:
     lo3, lo4, lo5, hi3, hi4, hi5 = lower[3], lower[4], lower[5], upper[3], upper[4], upper[5]
     wide3, wide4, wide5 = (upper[j] - lower[j] > _TWO_PI - 2e-9 for j in (3, 4, 5))  # 2 ways in
     cos, sin = math.cos, math.sin
-    angles = _float_angles(_constants(wf))
+    # Work in the world turned about z so that w1 is +y (B): the base turn stays a turn
+    # about z and the plane's turn becomes one about y, a 2D turn in x-z
+    ux, uy = w1[0], w1[1]  # w1 is horizontal
+    angles = _float_angles(_turned(_constants(wf), ux, uy))
 
     def solve(
         x: float, y: float, z: float, R: tuple[float, ...], seed: Q, misses: Misses | None
@@ -115,10 +118,10 @@ def wrist_solver(wf: WristFamily, lower: Q, upper: Q) -> WristSolver:
         px = x + r00 * cx + r01 * cy + r02 * cz - bx
         py = y + r10 * cx + r11 * cy + r12 * cz - by
         pz = z + r20 * cx + r21 * cy + r22 * cz
-        md = (r00 * a5[0] + r01 * a5[1] + r02 * a5[2], r10 * a5[0] + r11 * a5[1] + r12 * a5[2],
-              r20 * a5[0] + r21 * a5[1] + r22 * a5[2])  # fmt: skip
-        mg = (r00 * ar[0] + r01 * ar[1] + r02 * ar[2], r10 * ar[0] + r11 * ar[1] + r12 * ar[2],
-              r20 * ar[0] + r21 * ar[1] + r22 * ar[2])  # fmt: skip
+        mx, my = r00 * a5[0] + r01 * a5[1] + r02 * a5[2], r10 * a5[0] + r11 * a5[1] + r12 * a5[2]
+        md = (uy * mx - ux * my, ux * mx + uy * my, r20 * a5[0] + r21 * a5[1] + r22 * a5[2])
+        mx, my = r00 * ar[0] + r01 * ar[1] + r02 * ar[2], r10 * ar[0] + r11 * ar[1] + r12 * ar[2]
+        mg = (uy * mx - ux * my, ux * mx + uy * my, r20 * ar[0] + r21 * ar[1] + r22 * ar[2])
         found: Found = []
         e0, e1, e2, e3, e4, e5 = seed
         last, bd, bg = math.nan, md, mg
@@ -127,9 +130,11 @@ def wrist_solver(wf: WristFamily, lower: Q, upper: Q) -> WristSolver:
                 last, c, s = q0, cos(s0 * q0), sin(s0 * q0)
                 bd = (c * md[0] + s * md[1], c * md[1] - s * md[0], md[2])
                 bg = (c * mg[0] + s * mg[1], c * mg[1] - s * mg[0], mg[2])
-            cu, su = cos(q1 + k * q2), -sin(q1 + k * q2)
+            cu, su = cos(q1 + k * q2), sin(q1 + k * q2)  # turn back about y
+            d = (cu * bd[0] - su * bd[2], bd[1], su * bd[0] + cu * bd[2])
+            g = (cu * bg[0] - su * bg[2], bg[1], su * bg[0] + cu * bg[2])
             b = (q0 - e0) ** 2 + (q1 - e1) ** 2 + (q2 - e2) ** 2
-            for a3, a4, a5_ in angles(_rot(bd, w1, cu, su), _rot(bg, w1, cu, su), e3):
+            for a3, a4, a5_ in angles(d, g, e3):
                 v3 = a3 if lo3 <= a3 <= hi3 and not wide3 else _fit(a3, lo3, hi3, e3)
                 v4 = a4 if lo4 <= a4 <= hi4 and not wide4 else _fit(a4, lo4, hi4, e4)
                 v5 = a5_ if lo5 <= a5_ <= hi5 and not wide5 else _fit(a5_, lo5, hi5, e5)
@@ -158,6 +163,15 @@ class WristConstants(NamedTuple):
     n34: float
     r5: Vec3
     t5: Vec3
+
+
+def _turned(k: WristConstants, ux: float, uy: float) -> WristConstants:
+    """The constants in the frame turned about z that takes the unit (ux, uy, 0) to +y."""
+
+    def b(v: Vec3) -> Vec3:
+        return (uy * v[0] - ux * v[1], ux * v[0] + uy * v[1], v[2])
+
+    return k._replace(w3=b(k.w3), w4=b(k.w4), w5=b(k.w5), x34=b(k.x34), r5=b(k.r5), t5=b(k.t5))
 
 
 def _constants(wf: WristFamily) -> WristConstants:
