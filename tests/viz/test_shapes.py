@@ -17,7 +17,7 @@ from armkit.viz import (
     scene_primitives,
     table_primitive,
 )
-from armkit.viz._primitives import capsule_mesh, segment_frame
+from armkit.viz._meshes import capsule_mesh, segment_frame
 
 ARMS = ["openmanipulator_x", "owi535", "lynx6", "al5d", "puma560", "planar2"]
 

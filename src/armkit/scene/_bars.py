@@ -1,17 +1,22 @@
-"""``[[xylophones]]`` of a scene file: bars interpolated from the first to the last,
-or given bar by bar (``bars = [{note = "C5", top_mm = [x, y, z]}, ...]``)."""
+"""The instruments of a scene file: ``[[xylophones]]`` (bars interpolated from the first
+to the last, or given bar by bar: ``bars = [{note = "C5", top_mm = [x, y, z]}, ...]``)
+and ``[[drums]]``."""
 
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ._fields import Entry, entries
-from ._instruments import Xylophone, note_name, note_number
+from ._instruments import Drum, Xylophone, note_name, note_number
 from ._support import Rect
+
+if TYPE_CHECKING:
+    from ._scene import Scene
 
 XYLOPHONE_KEYS = (
     "name", "bars", "bar_size_mm", "row_deg", "first_bar_mm", "last_bar_mm", "lowest_note",
@@ -19,10 +24,11 @@ XYLOPHONE_KEYS = (
 )  # fmt: skip
 _ROW_KEYS = ("first_bar_mm", "last_bar_mm", "lowest_note", "bar_count")
 _BAR_KEYS = ("note", "top_mm", "size_mm", "row_deg")
+_DRUM_KEYS = ("name", "position_mm", "radius_mm", "top_z_mm", "note")
 MAX_BARS = 88
 
 
-def xylophones(path: Path, data: dict[str, Any]) -> tuple[Xylophone, ...]:
+def load_xylophones(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
     """``[[xylophones]]``: bar centres from ``first_bar_mm`` to ``last_bar_mm`` one
     semitone apart, or ``bars``, a list of ``{note, top_mm, size_mm, row_deg}``."""
     out = []
@@ -30,7 +36,21 @@ def xylophones(path: Path, data: dict[str, Any]) -> tuple[Xylophone, ...]:
         xylophone = _by_bar(e) if e.has("bars") else _interpolated(e)
         _check_apart(e, xylophone)
         out.append(xylophone)
-    return tuple(out)
+    return replace(scene, instruments=(*scene.instruments, *out))
+
+
+def load_drums(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
+    """``[[drums]]``: a round head of ``radius_mm`` at ``top_z_mm``."""
+    out = []
+    for e in entries(path, data, "drums", _DRUM_KEYS):
+        position = e.point_mm("position_mm")
+        top = e.mm("top_z_mm")
+        if top <= position[2]:
+            raise e.fail("top_z_mm", f"must be above the drum's base ({position[2] * 1000:g} mm)")
+        out.append(
+            Drum(e.name(), position, e.positive_mm("radius_mm"), top, e.integer("note", hi=127))
+        )
+    return replace(scene, instruments=(*scene.instruments, *out))
 
 
 def _interpolated(e: Entry) -> Xylophone:

@@ -17,8 +17,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..model import ArmModel
 from ._capsules import Capsules, clearance_capsules, column_links, frame_origins, link_names
+from ._cube import Cube
 from ._distance import box_box_gap, box_corners, segment_box_distance, segment_segment_distance
-from ._objects import Cube
 from ._obstacles import Obstacles, obstacles
 from ._scene import Scene
 

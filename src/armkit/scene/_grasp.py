@@ -12,7 +12,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..model import Gripper
-from ._objects import Cube
+from ._cube import Cube
 from ._rotations import pose, rot_axis
 
 F64 = NDArray[np.float64]

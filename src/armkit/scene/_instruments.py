@@ -5,15 +5,24 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
 from .._inputs import array, brief, is_number, shown
+from .._primitives import RGB, Box, Cylinder, Primitive
+from .._primitives import pose as placed
 from ._fields import MAX_MM
+from ._object import Solid
+
+if TYPE_CHECKING:
+    from ._scene import Scene
 
 F64 = NDArray[np.float64]
+BAR_COLOURS: tuple[RGB, ...] = ((190, 140, 70), (150, 100, 50))  # naturals, sharps (darker)
+DRUM_COLOUR: RGB = (180, 40, 40)
 NOTE_NAMES = ("C", "C#", "D", "D#", "E", "F", "F#", "G", "G#", "A", "A#", "B")
 _PITCH = re.compile(r"([A-Ga-g])([#b]?)(-?\d)")
 MIDI_HIGHEST = 127  # MIDI notes are 0..127
@@ -194,6 +203,22 @@ class Xylophone:
         """Direction along the row at ``note``'s bar [rad], from +x towards +y."""
         return float(self.rows[self.index(note)])
 
+    def solids(self) -> tuple[Solid, ...]:
+        """None: playing strikes the bars on purpose."""
+        return ()
+
+    def primitives(self, scene: Scene) -> list[Primitive]:
+        """Its bars (naturals light, sharps dark), each at its place."""
+        shapes: list[Primitive] = []
+        for note in self.notes:
+            length, width = self.bar_size(note)
+            size = np.array([length, width * 0.9, 0.01])
+            top = self.bar_top(note) - np.array([0.0, 0.0, 0.005])
+            T = placed(top, self.bar_row(note) + math.pi / 2)
+            colour = BAR_COLOURS[int(note % 12 in (1, 3, 6, 8, 10))]
+            shapes.append(Box(f"/scene/{self.name}/bar_{note}", size, T, colour))
+        return shapes
+
 
 @dataclass(frozen=True, eq=False)
 class Drum:
@@ -228,6 +253,16 @@ class Drum:
     def head(self) -> F64:
         """Centre of the head [m], shape (3,)."""
         return np.array([self.position[0], self.position[1], self.top_z])
+
+    def solids(self) -> tuple[Solid, ...]:
+        """None: playing strikes the head on purpose."""
+        return ()
+
+    def primitives(self, scene: Scene) -> list[Primitive]:
+        """Its body, up to the head."""
+        height = float(self.head[2] - self.position[2])
+        centre = self.position + np.array([0.0, 0.0, height / 2])
+        return [Cylinder(f"/scene/{self.name}", self.radius, height, placed(centre), DRUM_COLOUR)]
 
 
 Instrument = Xylophone | Drum

@@ -18,8 +18,8 @@ from numpy.typing import NDArray
 from ..kinematics import fk
 from ..model import ArmModel
 from ._clearance import WIDTH_EPS, Held
+from ._cube import Cube
 from ._grasp import Grasp, grasp
-from ._objects import Cube
 from ._scene import Scene
 from ._support import settle
 

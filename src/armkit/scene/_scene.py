@@ -11,8 +11,14 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
+from ._board import Board
+from ._container import Container
+from ._cube import Cube
+from ._hand import Hand
 from ._instruments import Instrument
-from ._objects import Board, Container, Cube, Hand, Pen, PenStand, Place
+from ._object import SceneObject
+from ._pen import Pen, PenStand
+from ._place import Place
 from ._surfaces import Sheet
 
 F64 = NDArray[np.float64]
@@ -31,6 +37,8 @@ class Scene:
             the objects, each name unique across the scene.
         hands: hands held out to shake (003), after ``source`` so that positional
             construction stays as it was.
+        others: objects of kinds no job looks up by kind (a kind added to
+            ``OBJECT_KINDS`` whose loader puts its objects here needs no field of its own).
         source: the file it was loaded from, or None.
     """
 
@@ -47,10 +55,11 @@ class Scene:
     places: tuple[Place, ...] = ()
     source: Path | None = None
     hands: tuple[Hand, ...] = ()
+    others: tuple[SceneObject, ...] = ()
 
-    def names(self) -> tuple[str, ...]:
-        """Every object's name, in file order by kind."""
-        groups = (
+    def objects(self) -> tuple[SceneObject, ...]:
+        """Every object, in file order by kind (what clearance and the views iterate)."""
+        groups: tuple[tuple[SceneObject, ...], ...] = (
             self.boards,
             self.cubes,
             self.containers,
@@ -60,8 +69,13 @@ class Scene:
             self.instruments,
             self.places,
             self.hands,
+            self.others,
         )
-        return tuple(obj.name for group in groups for obj in group)
+        return tuple(obj for group in groups for obj in group)
+
+    def names(self) -> tuple[str, ...]:
+        """Every object's name, in file order by kind."""
+        return tuple(obj.name for obj in self.objects())
 
     def cube(self, name: str) -> Cube:
         """The cube called ``name``; ValueError lists the cubes."""

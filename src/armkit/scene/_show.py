@@ -9,8 +9,9 @@ from numpy.typing import NDArray
 
 from .._inputs import mm
 from .._terminal import count
+from ._board import Board
+from ._cube import Cube
 from ._instruments import Drum, Xylophone, note_name
-from ._objects import Board, Cube
 from ._scene import Scene
 
 F64 = NDArray[np.float64]

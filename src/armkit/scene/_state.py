@@ -20,7 +20,7 @@ import numpy as np
 
 from .._errors import DeviceError
 from .._files import config_dir, write_atomic
-from ._objects import Cube
+from ._cube import Cube
 from ._physics import ScenePhysics
 from ._scene import Scene
 

@@ -4,15 +4,18 @@ top, socket floor, container floor, another cube), and where a released cube set
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from typing import Literal
+from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING, Literal
 
 import numpy as np
 from numpy.typing import NDArray
 
-from ._objects import Board, Cube
 from ._rotations import yaw_and_face
-from ._scene import Scene
+
+if TYPE_CHECKING:  # the kinds' modules read a scene file with ``support_under``
+    from ._board import Board
+    from ._cube import Cube
+    from ._scene import Scene
 
 F64 = NDArray[np.float64]
 FLAT_TILT = math.radians(10.0)  # a cube released tilted less than this lands flat
@@ -128,9 +131,7 @@ def settle(scene: Scene, cube: Cube, T: F64) -> Settled:
     flat = cube.moved(T)
     bottom = float(T[2, 3]) - cube.size / 2
     below = support_under(scene, footprint(flat), bottom)
-    rest = Cube(
-        cube.name, cube.size, np.array([*flat.position[:2], below.z]), flat.yaw, flat.up_face
-    )
+    rest = replace(flat, position=np.array([*flat.position[:2], below.z]))
     fall = bottom - below.z
     outcome: Outcome = "placed"
     if tilt > FLAT_TILT or not below.stable:

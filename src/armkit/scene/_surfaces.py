@@ -2,14 +2,25 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError
+from .._primitives import RGB, Box, Primitive
+from ._fields import Entry, entries
+from ._object import Solid
+
+if TYPE_CHECKING:
+    from ._scene import Scene
 
 F64 = NDArray[np.float64]
+SHEET_COLOUR: RGB = (250, 250, 250)
+THIN = 0.001  # [m] thickness of paper in a view
+KEYS = ("name", "size", "width_mm", "height_mm", "landscape", "origin_mm", "u", "v")
 
 # ISO 216 sizes, portrait (width, height) [m].
 PAPER_SIZES: dict[str, tuple[float, float]] = {
@@ -73,3 +84,40 @@ class Sheet:
         """The four corners [m], shape (4, 3), counter-clockwise from the origin."""
         uv = np.array([[0, 0], [self.width, 0], [self.width, self.height], [0, self.height]])
         return self.to_world(uv)
+
+    def solids(self) -> tuple[Solid, ...]:
+        """None: drawing touches the sheet on purpose."""
+        return ()
+
+    def primitives(self, scene: Scene) -> list[Primitive]:
+        """A thin white box on its plane."""
+        T = np.eye(4)
+        T[:3, :3] = np.column_stack([self.u, self.v, self.normal])
+        T[:3, 3] = self.center - self.normal * THIN / 2
+        size = np.array([self.width, self.height, THIN])
+        return [Box(f"/scene/{self.name}", size, T, SHEET_COLOUR)]
+
+
+def load_sheets(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
+    """``[[sheets]]``: a preset ``size`` (A3..A6, ``landscape = true`` to turn it) or
+    ``width_mm``/``height_mm``; ``origin_mm`` a corner; ``u``, ``v`` its edge
+    directions (default: along x and y, lying on the table)."""
+    return replace(scene, sheets=tuple(_sheet(e) for e in entries(path, data, "sheets", KEYS)))
+
+
+def _sheet(e: Entry) -> Sheet:
+    if e.has("size") == (e.has("width_mm") or e.has("height_mm")):
+        raise e.fail("size", "give either size (A3, A4, A5, A6) or width_mm and height_mm")
+    if e.has("size"):
+        width, height = PAPER_SIZES[e.text("size", choices=tuple(PAPER_SIZES))]
+    else:
+        width, height = e.positive_mm("width_mm"), e.positive_mm("height_mm")
+    landscape = e.data.get("landscape", False)
+    if not isinstance(landscape, bool):
+        raise e.fail("landscape", f"must be true or false, got {landscape!r}")
+    if landscape:
+        width, height = height, width
+    u, v = e.direction("u", [1.0, 0.0, 0.0]), e.direction("v", [0.0, 1.0, 0.0])
+    if abs(float(u @ v)) > 1e-6:
+        raise e.fail("v", f"must be at right angles to u, got u = {u.tolist()}, v = {v.tolist()}")
+    return Sheet(e.name(), e.point_mm("origin_mm"), u, v, width, height)

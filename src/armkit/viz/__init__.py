@@ -7,6 +7,19 @@ Nothing here imports matplotlib or viser until a picture or the web view
 (``armkit.viz.web``) is asked for.
 """
 
+from .._primitives import RGB as RGB
+from .._primitives import Axes as Axes
+from .._primitives import Box as Box
+from .._primitives import Capsule as Capsule
+from .._primitives import Cylinder as Cylinder
+from .._primitives import Label as Label
+from .._primitives import Polyline as Polyline
+from .._primitives import Primitive as Primitive
+from .._primitives import Sphere as Sphere
+from .._primitives import moved as moved
+from .._primitives import pose as pose
+from ..scene import cube_colour as cube_colour
+from ..scene import cube_primitive as cube_primitive
 from ._address import Address as Address
 from ._address import serve_address as serve_address
 from ._arm_shapes import arm_primitives as arm_primitives
@@ -23,19 +36,6 @@ from ._live import publisher_of as publisher_of
 from ._mover import Goal as Goal
 from ._mover import Mover as Mover
 from ._pose import plot_pose as plot_pose
-from ._primitives import RGB as RGB
-from ._primitives import Axes as Axes
-from ._primitives import Box as Box
-from ._primitives import Capsule as Capsule
-from ._primitives import Cylinder as Cylinder
-from ._primitives import Label as Label
-from ._primitives import Polyline as Polyline
-from ._primitives import Primitive as Primitive
-from ._primitives import Sphere as Sphere
-from ._primitives import moved as moved
-from ._primitives import pose as pose
-from ._scene_shapes import cube_colour as cube_colour
-from ._scene_shapes import cube_primitive as cube_primitive
 from ._scene_shapes import scene_primitives as scene_primitives
 from ._state import ArmState as ArmState
 from ._state import DriverSource as DriverSource

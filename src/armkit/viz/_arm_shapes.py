@@ -11,10 +11,10 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .._primitives import RGB, Axes, Box, Capsule, Primitive, moved, pose
 from ..kinematics import fk_frames
 from ..model import ArmModel
 from ..scene import Scene, arm_capsules
-from ._primitives import RGB, Axes, Box, Capsule, Primitive, moved, pose
 
 F64 = NDArray[np.float64]
 

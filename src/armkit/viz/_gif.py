@@ -20,14 +20,14 @@ from numpy.typing import NDArray
 
 from .._errors import ArmkitError
 from .._files import check_output_path
+from .._primitives import Polyline, Primitive
 from ..arm import Arm
 from ..kinematics import fk
 from ..model import ArmModel
-from ..scene import Scene, ScenePhysics
+from ..scene import Scene, ScenePhysics, cube_primitive
 from ._arm_shapes import TRAIL_COLOUR, arm_primitives, reach_of, table_primitive
 from ._ink import Ink
-from ._primitives import Polyline, Primitive
-from ._scene_shapes import cube_primitive, scene_primitives
+from ._scene_shapes import scene_primitives
 from ._state import ArmState, Truth, cubes
 from ._target import check_target
 

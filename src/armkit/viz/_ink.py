@@ -11,8 +11,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
+from .._primitives import RGB, Polyline
 from ..scene import Sheet
-from ._primitives import RGB, Polyline
 
 F64 = NDArray[np.float64]
 TOUCH = 0.002  # [m] the tool point this close to a sheet's plane is drawing on it

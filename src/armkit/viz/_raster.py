@@ -17,7 +17,7 @@ import numpy as np
 from numpy.typing import NDArray
 from PIL import Image, ImageDraw, ImageFont
 
-from ._primitives import (
+from .._primitives import (
     RGB,
     Axes,
     Box,
@@ -27,8 +27,8 @@ from ._primitives import (
     Polyline,
     Primitive,
     Sphere,
-    segment_frame,
 )
+from ._meshes import segment_frame
 
 F64 = NDArray[np.float64]
 SIDES = 10  # of a cylinder's or a capsule's prism

@@ -16,7 +16,7 @@ import viser
 import viser.transforms as vtf
 from numpy.typing import NDArray
 
-from .._primitives import (
+from ..._primitives import (
     Axes,
     Box,
     Capsule,
@@ -25,9 +25,8 @@ from .._primitives import (
     Polyline,
     Primitive,
     Sphere,
-    capsule_mesh,
-    segment_frame,
 )
+from .._meshes import capsule_mesh, segment_frame
 
 F64 = NDArray[np.float64]
 GEOMETRY_TOLERANCE = 1e-6  # [m] a change of shape below this keeps the node

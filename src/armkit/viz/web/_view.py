@@ -24,12 +24,12 @@ import viser
 from numpy.typing import ArrayLike, NDArray
 
 from ..._errors import ArmkitError, InputError
-from ...scene import Scene
+from ..._primitives import Label, Polyline, Primitive, Sphere
+from ...scene import Scene, cube_primitive
 from .._address import serve_address
 from .._arm_shapes import TRAIL_COLOUR, arm_primitives, reach_of, table_primitive
 from .._ink import Ink
-from .._primitives import Label, Polyline, Primitive, Sphere
-from .._scene_shapes import cube_primitive, scene_primitives
+from .._scene_shapes import scene_primitives
 from .._state import ArmState, ObjectPose, StateSource
 from .._target import TargetCheck, check_target
 from ._render import Renderer

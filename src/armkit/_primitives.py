@@ -1,7 +1,8 @@
 """The shapes every picture of armkit is drawn from (pure data, SI units).
 
-A view (the web page, a GIF) is a list of primitives; anything that wants to be
-seen (an arm, a scene object, a trail, a target) turns itself into them. Each
+A view (the web page, a GIF; ``armkit.viz``) is a list of primitives; anything that
+wants to be seen (an arm, a scene object, a trail, a target) turns itself into them:
+they stand on the ground floor so that a scene object can (``armkit.scene``). Each
 primitive has a ``name``: a path such as ``"/scene/cube_a"`` that stays the
 same from one frame to the next, so a renderer moves what it has instead of
 drawing it again. Colours are RGB in 0..255.
@@ -15,7 +16,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._errors import InputError
+from ._errors import InputError
 
 F64 = NDArray[np.float64]
 RGB = tuple[int, int, int]
@@ -27,7 +28,7 @@ def pose(position: ArrayLike = (0.0, 0.0, 0.0), yaw: float = 0.0) -> F64:
     T = np.eye(4)
     c, s = math.cos(yaw), math.sin(yaw)
     T[:2, :2] = [[c, -s], [s, c]]
-    T[:3, 3] = _vec3(position, "position")
+    T[:3, 3] = vec3(position, "position")
     return T
 
 
@@ -132,45 +133,8 @@ class Label:
 Primitive = Box | Cylinder | Capsule | Sphere | Polyline | Axes | Label
 
 
-def capsule_mesh(length: float, radius: float, segments: int = 16) -> tuple[F64, NDArray[np.int32]]:
-    """A capsule's triangle mesh along +z from 0 to ``length`` [m]: vertices (V, 3) [m]
-    and faces (F, 3) (indices, counter-clockwise seen from outside)."""
-    rings = segments // 2
-    # latitude angles: bottom cap (-pi/2..0) at z = 0, top cap (0..pi/2) at z = length
-    lat = np.concatenate(
-        [np.linspace(-math.pi / 2, 0, rings + 1), np.linspace(0, math.pi / 2, rings + 1)]
-    )
-    z_off = np.concatenate([np.zeros(rings + 1), np.full(rings + 1, length)])
-    lon = np.linspace(0, 2 * math.pi, segments, endpoint=False)
-    cl, sl = np.cos(lat)[:, None], np.sin(lat)[:, None]
-    x = radius * cl * np.cos(lon)[None, :]
-    y = radius * cl * np.sin(lon)[None, :]
-    z = radius * sl + z_off[:, None] + 0 * lon[None, :]
-    vertices = np.stack([x, y, z], axis=-1).reshape(-1, 3)
-    faces = []
-    for i in range(len(lat) - 1):
-        for j in range(segments):
-            a, b = i * segments + j, i * segments + (j + 1) % segments
-            c, d = a + segments, b + segments
-            faces += [(a, b, d), (a, d, c)]
-    return vertices, np.array(faces, dtype=np.int32)
-
-
-def segment_frame(p0: ArrayLike, p1: ArrayLike) -> tuple[F64, float]:
-    """The frame at ``p0`` whose z axis points to ``p1`` (4, 4), and the length [m]."""
-    a, b = _vec3(p0, "p0"), _vec3(p1, "p1")
-    axis = b - a
-    length = float(np.linalg.norm(axis))
-    z = axis / length if length > 1e-12 else np.array([0.0, 0.0, 1.0])
-    helper = np.array([1.0, 0.0, 0.0]) if abs(z[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
-    x = np.cross(helper, z)
-    x /= np.linalg.norm(x)
-    T = np.eye(4)
-    T[:3, 0], T[:3, 1], T[:3, 2], T[:3, 3] = x, np.cross(z, x), z, a
-    return T, length
-
-
-def _vec3(value: ArrayLike, what: str) -> F64:
+def vec3(value: ArrayLike, what: str) -> F64:
+    """``value`` as 3 finite numbers [m], shape (3,), else InputError naming ``what``."""
     v = np.asarray(value, dtype=np.float64)
     if v.shape != (3,) or not np.all(np.isfinite(v)):
         raise InputError(f"{what} must be 3 finite numbers [m], got {value!r}")
