@@ -85,14 +85,18 @@ def test_the_cli_search_keeps_the_object_in_the_bin(capsys: pytest.CaptureFixtur
     assert "armkit: nothing found: scanned from 30 to 120 deg" in capsys.readouterr().err
 
 
-def test_the_simulated_ssc32_answers_va_to_vd_with_one_byte_each() -> None:
+def test_the_simulated_ssc32_answers_va_to_vh_with_one_byte_each() -> None:
+    """SSC-32U user guide, "Read Analog Inputs": VA..VH answer one byte each, V x 256 / 5
+    (saturating); an input with nothing on it reads 0; no other V query exists."""
     from armkit.sim.ssc32 import SimSSC32
 
     board = SimSSC32()
     board.analog = {0: lambda: 2.5, 2: lambda: 7.0}
     board.receive(b"VA VB VC\r", 0.0)
     assert board.outbox.take(1.0) == bytes([128, 0, 255])
-    board.receive(b"VE\r", 1.0)
+    board.receive(b"VE VH\r", 1.0)
+    assert board.outbox.take(2.0) == bytes([0, 0]) and not board.errors
+    board.receive(b"VZ\r", 2.0)
     assert board.errors
 
 
