@@ -84,9 +84,7 @@ def check_and_run(script: Script, folder: Path) -> Outcome:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # an OWI's uncertain estimate, cut drawings, ...
         with Arm(script.arm, "sim") as arm:
-            result = check_source(
-                source, model=arm.model, now=ArmNow.of(arm), require_jobs=True, base_dir=folder
-            )
+            result = check_source(source, model=arm.model, now=ArmNow.of(arm), base_dir=folder)
             check = _first_error(result.first_error)
             t0 = arm.clock.now()
             run = None

@@ -4,8 +4,6 @@ from __future__ import annotations
 
 import inspect
 import math
-import sys
-import types
 from pathlib import Path
 from typing import Any
 
@@ -144,34 +142,16 @@ def test_adding_a_job_is_one_entry(
     arm: tuple[Arm, CountingDriver], monkeypatch: pytest.MonkeyPatch, tmp_path: Path
 ) -> None:
     a, _ = arm
-    module = types.ModuleType("wave_job")
     got: dict[str, object] = {}
-    module.wave = lambda arm_, scene, **kw: got.update(kw)  # type: ignore[attr-defined]
-    monkeypatch.setitem(sys.modules, "wave_job", module)
     spec = JobSpec(
         (JobParam("times", "count"), JobParam("height", "length", keyword="up", required=False),
          JobParam("song", "file", keyword="humming", required=False, choices=(".txt",))),
-        "wave_job:wave", "wave the gripper",
+        lambda arm_, scene, **kw: got.update(kw), "wave the gripper",
     )  # fmt: skip
     monkeypatch.setitem(JOBS, "wave", spec)
     (tmp_path / "la.txt").write_text("la")
     _run(a, "wave 3 up 2cm humming la.txt\n", base_dir=tmp_path)
     assert got == {"times": 3, "height": pytest.approx(0.02), "song": tmp_path / "la.txt"}
-
-
-def test_a_missing_job_function_refuses_the_run_before_any_motion(
-    arm: tuple[Arm, CountingDriver], monkeypatch: pytest.MonkeyPatch
-) -> None:
-    from dataclasses import replace
-
-    from armkit.script._jobs import JOBS
-
-    job = replace(JOBS["move-item"], call="armkit.tasks:no_such_job")
-    monkeypatch.setitem(JOBS, "move-item", job)
-    a, driver = arm
-    with pytest.raises(ScriptCheckError, match="the job 'move-item' is not available"):
-        _run(a, "home\nmove-item xyz 150 0 30 to xyz 150 50 30\n")
-    assert driver.sent == 0
 
 
 def test_owi_timed_rotation_and_light() -> None:

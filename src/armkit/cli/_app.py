@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import importlib
 import os
 import sys
 import warnings
@@ -13,27 +12,45 @@ from typing import Any, TextIO
 from .. import __version__
 from .._errors import ArmkitError, ArmkitWarning, InputError
 from ..connect import driver_kinds, listed
+from . import (
+    _calibrate,
+    _compare,
+    _demo,
+    _dynamixel,
+    _emulate,
+    _info,
+    _kinematics,
+    _motion,
+    _owi,
+    _play,
+    _scene,
+    _script,
+    _servo,
+    _tasks,
+    _urdf,
+    _view,
+)
 from ._parser import Parser
 
-# Modules that add sub-commands: each defines ``add_commands(sub)`` and its
-# handlers take the parsed ``args`` and return an exit code.
+# Modules that add sub-commands, in the order ``armkit --help`` lists them: each defines
+# ``add_commands(sub)`` and its handlers take the parsed ``args`` and return an exit code.
 COMMAND_MODULES = (
-    "armkit.cli._info",
-    "armkit.cli._kinematics",
-    "armkit.cli._demo",
-    "armkit.cli._motion",
-    "armkit.cli._servo",
-    "armkit.cli._owi",
-    "armkit.cli._calibrate",
-    "armkit.cli._compare",
-    "armkit.cli._dynamixel",
-    "armkit.cli._emulate",
-    "armkit.cli._view",
-    "armkit.cli._script",
-    "armkit.cli._scene",
-    "armkit.cli._tasks",
-    "armkit.cli._urdf",
-    "armkit.cli._play",
+    _info,
+    _kinematics,
+    _demo,
+    _motion,
+    _servo,
+    _owi,
+    _calibrate,
+    _compare,
+    _dynamixel,
+    _emulate,
+    _view,
+    _script,
+    _scene,
+    _tasks,
+    _urdf,
+    _play,
 )
 
 EPILOG = """\
@@ -97,8 +114,8 @@ def build_parser() -> argparse.ArgumentParser:
     )
     parser.add_argument("--version", action="version", version=f"armkit {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for name in COMMAND_MODULES:
-        importlib.import_module(name).add_commands(sub)
+    for module in COMMAND_MODULES:
+        module.add_commands(sub)
     return parser
 
 

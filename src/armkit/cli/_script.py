@@ -137,7 +137,7 @@ def _run(args: argparse.Namespace) -> int:
     with _open(args, setup, source) as arm:
         result = check_source(
             source, model=arm.model, scene=_scene(args), now=ArmNow.of(arm),
-            require_jobs=not args.dry_run, repeat=args.repeat,
+            repeat=args.repeat,
         )  # fmt: skip
         _report(result)
         result.raise_if_failed()

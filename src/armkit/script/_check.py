@@ -4,7 +4,6 @@ problem and the plan with its time."""
 
 from __future__ import annotations
 
-import importlib
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -16,10 +15,10 @@ from numpy.typing import NDArray
 from .._errors import ArmkitError
 from ..connect import driver_names
 from ..model import ArmModel, load_model, shipped_models
+from ..scene import load_scene, shipped_scenes
 from ._arm_now import ArmNow
-from ._ast import Define, Header, Job, Loc, Num, Program, Repeat, Source, Statement
+from ._ast import Define, Header, Loc, Num, Program, Repeat, Source, Statement
 from ._diagnostics import Diagnostic, ScriptCheckError, sorted_unique, suggest
-from ._jobs import JobUnavailable, job_function
 from ._model_arm import ModelArm
 from ._parse import parse
 from ._plan import Plan
@@ -91,7 +90,6 @@ def check_source(
     model: ArmModel | None = None,
     scene: SceneInfo | None = None,
     now: ArmNow | None = None,
-    require_jobs: bool = False,
     repeat: int = 1,
     base_dir: Path | None = None,
     env: Env | None = None,
@@ -103,7 +101,6 @@ def check_source(
         scene: the scene (None: the script's ``scene`` line, if any).
         now: the arm it will run on as it is at the start (``ArmNow.of(arm)``); None:
             the model at home, nothing held, the scene's file, on the simulator.
-        require_jobs: a job whose function is missing is an error (``run``), not a warning.
         repeat: run the whole script this many times (``--repeat``).
         base_dir: where relative file names start (default: the script's folder).
         env: poses and procedures already defined (copied, not changed).
@@ -132,7 +129,7 @@ def check_source(
     walker.finish()
     # a parse, arm, driver or scene error stops a run before its first statement
     first = next((d for d in diagnostics if d.severity == "error"), walker.first_error)
-    diagnostics += walker.diagnostics + _job_diagnostics(program, require_jobs)
+    diagnostics += walker.diagnostics
     return CheckResult(program, model, arm.plan, setup, scene, sorted_unique(diagnostics), first)
 
 
@@ -216,33 +213,22 @@ def load_scene_info(
     label: str, here: Path, loc: Loc, diagnostics: list[Diagnostic]
 ) -> SceneInfo | None:
     """The scene a ``scene`` line names (a file next to the script, or a shipped
-    scene's name); a warning if this armkit has no ``armkit.scene`` yet."""
+    scene's name)."""
     try:
-        module = importlib.import_module("armkit.scene")
-    except ImportError:
-        diagnostics.append(
-            Diagnostic(
-                loc,
-                "this armkit has no scenes yet (armkit.scene); the names of scene objects are not checked",
-                "warning",
-            )
-        )
-        return SceneInfo(label, None, None)
-    try:
-        scene = module.load_scene(_scene_path(label, here, module))
+        scene = load_scene(_scene_source(label, here))
     except (ArmkitError, ValueError, OSError) as exc:
         diagnostics.append(Diagnostic(loc, f"scene {label!r}: {exc}"))
         return None
     return SceneInfo(label, frozenset(scene_names(scene)), scene)
 
 
-def _scene_path(label: str, here: Path, module: Any) -> Path:
+def _scene_source(label: str, here: Path) -> Path | str:
     """A file next to the script, a path, or a shipped scene's name (``board_001``)."""
     for candidate in (here / label, Path(label)):
         if candidate.is_file():
             return candidate
-    shipped = Path(module.__file__).parent / "scenes" / f"{Path(label).stem}.toml"
-    return shipped if shipped.is_file() else here / label
+    stem = Path(label).stem
+    return stem if stem in shipped_scenes() else here / label
 
 
 def scene_names(scene: object) -> Iterator[str]:
@@ -262,25 +248,3 @@ def scene_names(scene: object) -> Iterator[str]:
             name = getattr(item, "name", None)
             if isinstance(name, str):
                 yield name
-
-
-def _job_diagnostics(program: Program, required: bool) -> list[Diagnostic]:
-    out: list[Diagnostic] = []
-    seen: set[str] = set()
-    for job in _jobs_in(program.statements):
-        if job.command in seen:
-            continue
-        seen.add(job.command)
-        try:
-            job_function(job.command)
-        except JobUnavailable as exc:
-            out.append(Diagnostic(job.loc, str(exc), "error" if required else "warning"))
-    return out
-
-
-def _jobs_in(statements: tuple[Statement, ...]) -> Iterator[Job]:
-    for s in statements:
-        if isinstance(s, Job):
-            yield s
-        elif isinstance(s, Repeat | Define):
-            yield from _jobs_in(s.body)

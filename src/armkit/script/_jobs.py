@@ -3,9 +3,10 @@
 function that does it.
 
 Adding a job is one entry in ``JOBS``: the parameters (how they are written and
-checked), ``call``, ``"module:function"``, imported only when the job runs, and
-``check``, the function ``armkit check`` calls with the scene and the same
-arguments (the job's own argument checks, so what check passes the job takes).
+checked), ``call``, the function that does it (by reference: a small function here
+that imports it when the job runs), and ``check``, the function ``armkit check``
+calls with the scene and the same arguments (``_job_checks``: the job's own argument
+checks, so what check passes the job takes).
 The function is called as ``function(arm, scene, **arguments)`` with
 
 - ``where`` arguments: a scene object's or place's name (str), or a gripper
@@ -23,14 +24,14 @@ The function is called as ``function(arm, scene, **arguments)`` with
 
 from __future__ import annotations
 
-import importlib
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 
 from .._errors import ScriptError
+from . import _job_checks as checks
 from ._units import Dim
 
 ParamKind = Literal[
@@ -79,17 +80,17 @@ class JobParam:
 @dataclass(frozen=True)
 class JobSpec:
     """A job: its parameters, the function that runs it, one line of help, the
-    function that checks its arguments (``"module:function"``, called as
-    ``function(scene, **arguments)``; None: none), words it refuses with why
+    function that checks its arguments (called as ``function(scene, **arguments)``;
+    None: none), words it refuses with why
     (``refused``: word -> message), and whether the function plans the job whole
     before it moves and can plan it from a model and joints alone (``plans``: given an
     ``armkit.tasks.Start``), so that ``armkit check`` plans it too; ``check_plans``: its
     check plans it, given the arm as the check knows it (``arm=tasks.Start``)."""
 
     params: tuple[JobParam, ...]
-    call: str
+    call: Callable[..., object]
     help: str
-    check: str | None = None
+    check: Callable[..., object] | None = None
     refused: tuple[tuple[str, str], ...] = ()
     plans: bool = False
     check_plans: bool = False
@@ -102,7 +103,59 @@ class JobSpec:
 DRAW_SUFFIXES = (".svg", ".gcode", ".nc", ".ngc", ".gc")
 PLAY_SUFFIXES = (".mid", ".midi", ".rtttl", ".txt")
 
-CHECKS = "armkit.script._job_checks"
+
+# The jobs' functions, each imported when the job runs (``armkit --help`` and the
+# checker's parse load none of them).
+
+
+def _pick(*args: Any, **kwargs: Any) -> object:
+    from ..tasks import pick
+
+    return pick(*args, **kwargs)
+
+
+def _place(*args: Any, **kwargs: Any) -> object:
+    from ..tasks import place
+
+    return place(*args, **kwargs)
+
+
+def _move_item(*args: Any, **kwargs: Any) -> object:
+    from ..tasks import move_item
+
+    return move_item(*args, **kwargs)
+
+
+def _rotate_cube(*args: Any, **kwargs: Any) -> object:
+    from ..tasks import rotate_cube
+
+    return rotate_cube(*args, **kwargs)
+
+
+def _stack(*args: Any, **kwargs: Any) -> object:
+    from ..tasks import stack
+
+    return stack(*args, **kwargs)
+
+
+def _search(*args: Any, **kwargs: Any) -> object:
+    from ..tasks import search
+
+    return search(*args, **kwargs)
+
+
+def _draw(*args: Any, **kwargs: Any) -> object:
+    from ..drawing import draw
+
+    return draw(*args, **kwargs)
+
+
+def _play(*args: Any, **kwargs: Any) -> object:
+    from ..music import play
+
+    return play(*args, **kwargs)
+
+
 PICK_HINT = (
     "pick takes a cube of the scene by its name (pick red); an item known only by "
     "its point is carried with move-item xyz X Y Z to WHERE"
@@ -119,24 +172,24 @@ STACK_ON = (
 JOBS: dict[str, JobSpec] = {
     "pick": JobSpec(
         (JobParam("cube", "object", hint=PICK_HINT),),
-        "armkit.tasks:pick",
+        _pick,
         "pick up a cube of the scene (by name) and stay above it",
-        check=f"{CHECKS}:pick",
+        check=checks.pick,
         plans=True,
     ),
     "place": JobSpec(
         (JobParam("to", "where"),),
-        "armkit.tasks:place",
+        _place,
         "put the picked cube down at a scene place, board[ROW,COL], a cube, a container, "
         "a pose or an xyz point",
-        check=f"{CHECKS}:place",
+        check=checks.place,
         plans=True,
     ),
     "move-item": JobSpec(
         (JobParam("item", "where"), JobParam("to", "where", keyword="to")),
-        "armkit.tasks:move_item",
+        _move_item,
         "000: pick an item up, lift it, carry it and put it down",
-        check=f"{CHECKS}:move_item",
+        check=checks.move_item,
         plans=True,
     ),
     "rotate-cube": JobSpec(
@@ -144,16 +197,16 @@ JOBS: dict[str, JobSpec] = {
             JobParam("cube", "object"),
             JobParam("direction", "choice", required=False, choices=("forward", "backward")),
         ),
-        "armkit.tasks:rotate_cube",
+        _rotate_cube,
         "001: turn a cube onto its side (forward) or back up (backward) where it stands",
-        check=f"{CHECKS}:rotate_cube",
+        check=checks.rotate_cube,
         plans=True,
     ),
     "stack": JobSpec(
         (JobParam("cubes", "objects"),),
-        "armkit.tasks:stack",
+        _stack,
         "001: turn every cube in place, then stack them on the first, each on the one before",
-        check=f"{CHECKS}:stack",
+        check=checks.stack,
         plans=True,
         refused=(("on", STACK_ON),),
     ),
@@ -164,9 +217,9 @@ JOBS: dict[str, JobSpec] = {
             JobParam("step", "angle", keyword="step", required=False),
             JobParam("into", "object", keyword="into", required=False),
         ),
-        "armkit.tasks:search",
+        _search,
         "002: scan with the distance sensor, pick up what is found, drop it in a container",
-        check=f"{CHECKS}:search",
+        check=checks.search,
     ),
     "draw": JobSpec(
         (
@@ -175,10 +228,10 @@ JOBS: dict[str, JobSpec] = {
             JobParam("pen", "object", keyword="with", required=False),
             JobParam("fit", "flag", keyword="fit", required=False),
         ),
-        "armkit.drawing:draw",
+        _draw,
         "draw an SVG or G-code file on a sheet at its real size (fit: scaled to the sheet), "
         "picking the pen up and putting it back",
-        check=f"{CHECKS}:draw",
+        check=checks.draw,
         check_plans=True,
     ),
     "play": JobSpec(
@@ -188,9 +241,9 @@ JOBS: dict[str, JobSpec] = {
             JobParam("tempo", "percent", keyword="tempo", required=False),
             JobParam("transpose", "count", keyword="transpose", required=False),
         ),
-        "armkit.music:play",
+        _play,
         "play a MIDI, RTTTL or note-list tune on the scene's instrument",
-        check=f"{CHECKS}:play",
+        check=checks.play,
         check_plans=True,
     ),
 }
@@ -201,38 +254,14 @@ def job_keywords() -> set[str]:
     return {p.keyword for spec in JOBS.values() for p in spec.params if p.keyword}
 
 
-class JobUnavailable(ScriptError):
-    """A job's function is not in this armkit (yet)."""
-
-
 def job_function(command: str) -> Callable[..., object]:
-    """The function that runs ``command`` (imported now).
-
-    Raises:
-        JobUnavailable: its module or function does not exist in this armkit.
-    """
-    spec = JOBS[command]
-    module_name, _, func_name = spec.call.partition(":")
-    try:
-        module = importlib.import_module(module_name)
-    except ImportError:
-        module = None
-    func = getattr(module, func_name, None)
-    if not callable(func):
-        raise JobUnavailable(
-            f"the job {command!r} is not available in this armkit ({spec.call} is missing); "
-            "'armkit check' accepts it, 'armkit run' cannot run it yet"
-        )
-    return func  # type: ignore[no-any-return]
+    """The function that runs ``command``."""
+    return JOBS[command].call
 
 
 def job_check(command: str) -> Callable[..., object] | None:
     """The function that checks ``command``'s arguments (None: the job has none)."""
-    spec = JOBS[command]
-    if spec.check is None:
-        return None
-    module_name, _, func_name = spec.check.partition(":")
-    return getattr(importlib.import_module(module_name), func_name)  # type: ignore[no-any-return]
+    return JOBS[command].check
 
 
 def as_called(args: dict[str, object]) -> dict[str, object]:

@@ -202,7 +202,6 @@ def run_source(
         model=arm.model,
         scene=scene,
         now=ArmNow.of(arm),
-        require_jobs=True,
         repeat=repeat,
         base_dir=base_dir,
     )

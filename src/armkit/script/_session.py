@@ -164,7 +164,6 @@ class Session:
         result = check_source(
             source, model=self.arm.model, scene=self.scene,
             now=ArmNow.of(self.arm, self.backend.objects, self.backend.grip_width),
-            require_jobs=True,
             base_dir=self.base_dir, env=env,
         )  # fmt: skip
         if any(isinstance(s, Header) for s in result.program.statements):
