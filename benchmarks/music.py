@@ -12,6 +12,14 @@ against the score [ms] (targets: RMS <= 2 ms, max <= 5 ms), missed and extra
 notes, the longest time the mallet stayed below a bar top [ms] (the rebound),
 and the same errors after one calibration run (``LatencyTable.from_run``).
 
+A second table: the shortest interval between two strikes the planner plays, between
+adjacent bars (C5 D5 C5 D5 ...), across the row (C5 C6 ...) and on one bar (E5 E5 ...),
+found by bisection on the tempo, beside the servos' physical minimum: the time the
+joints need, at their servos' own speed and acceleration limits (``servo_speed_dps``,
+``servo_accel_dps2``; bang-bang, each joint alone), to go from one contact up to the
+next bar's lowest hover and down to its contact. Issue 28's targets: 0.25 s between
+adjacent bars and 0.17 s on one bar on the OpenManipulator-X, within 1.5x on the Lynx6.
+
 Run: .venv/bin/python benchmarks/music.py
 """
 
@@ -20,8 +28,14 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+import numpy as np
+
 from armkit import Arm
-from armkit.music import LatencyTable, PerformanceError, Played, play
+from armkit.model import load_model
+from armkit.music import LatencyTable, PerformanceError, Played, Score, plan_play, play
+from armkit.music._play import mallet_model
+from armkit.music._score import Note
+from armkit.music._strike import strike_poses
 from armkit.scene import load_scene
 from armkit.sim import World
 
@@ -68,6 +82,63 @@ def row(arm_name: str, tune: Path, tempo: float, refused: int) -> str:
     )
 
 
+PAIRS = {"adjacent bars": (72, 74), "across the row": (72, 84), "one bar": (76, 76)}
+
+
+def shortest_interval(arm_name: str, a: int, b: int) -> float:
+    """The least time [s] between strikes the planner plays alternating ``a`` and ``b``."""
+    model = load_model(arm_name)
+    lo, hi = 0.01, 2.0  # [s] plays at hi, not at lo
+    for _ in range(14):
+        mid = (lo + hi) / 2
+        notes = tuple(Note(k * mid, (a, b)[k % 2], 80, mid) for k in range(8))
+        try:
+            plan_play(model, SCENE, Score(notes, f"{a}-{b}"))
+            hi = mid
+        except PerformanceError:
+            lo = mid
+    return hi
+
+
+def physical_minimum(arm_name: str, a: int, b: int) -> float:
+    """A lower bound [s] on the time from a contact on ``a`` to one on ``b`` passing ``b``'s
+    10 mm hover, at the servos' own limits: each joint alone, free to be moving at either
+    contact; a joint that turns back at the hover stops there (``_leg``), one that does
+    not runs at its full speed."""
+    model = mallet_model(load_model(arm_name), SCENE)
+    bars = SCENE.instruments[0]
+    v = np.array([j.peak_velocity for j in model.joints])
+    acc = np.array([j.peak_acceleration for j in model.joints])
+    pa = strike_poses(model, SCENE.to_base(bars.bar_top(a)), 0.01, 0.0, -np.pi / 3, model.home)
+    pb = strike_poses(model, SCENE.to_base(bars.bar_top(b)), 0.01, 0.0, -np.pi / 3, pa.through)
+    up, down = pb.hover - pa.through, pb.through - pb.hover
+    turns = up * down < 0.0
+    times = np.where(
+        turns, _leg(np.abs(up), v, acc) + _leg(np.abs(down), v, acc), np.abs(up + down) / v
+    )
+    return float(np.max(times))
+
+
+def _leg(d: np.ndarray, v: np.ndarray, a: np.ndarray) -> np.ndarray:
+    """Least time [s] to cover ``d`` [rad] ending (or starting) at rest, speed <= ``v``."""
+    short = d <= v * v / (2 * a)
+    return np.where(short, np.sqrt(2 * d / a), (d - v * v / (2 * a)) / v + v / a)
+
+
+def intervals() -> None:
+    print(f"\n{'arm':18s} {'strikes':15s} {'planned s':>9s} {'physical s':>10s} {'target s':>8s}")
+    for arm_name in ARMS:
+        scale = 1.0 if arm_name == "openmanipulator_x" else 1.5
+        for what, (a, b) in PAIRS.items():
+            target = (0.17 if a == b else 0.25) * scale if what != "across the row" else None
+            shown = f"{target:8.3f}" if target else f"{'-':>8s}"
+            print(
+                f"{arm_name:18s} {what:15s} {shortest_interval(arm_name, a, b):9.3f} "
+                f"{physical_minimum(arm_name, a, b):10.3f} {shown}",
+                flush=True,
+            )
+
+
 def main() -> None:
     print(
         f"{'arm':18s} {'tune':18s} {'tempo':>5s} {'notes':>5s} {'refused':>7s} "
@@ -85,6 +156,7 @@ def main() -> None:
         "written tempo; on bar: longest time the mallet stayed below a bar top (ms); cal: after "
         "one calibration run (per-bar latency table)"
     )
+    intervals()
 
 
 if __name__ == "__main__":

@@ -38,8 +38,8 @@ def test_each_contact_sounds_its_bar_at_its_time() -> None:
 
 
 def test_loudness_follows_contact_speed() -> None:
-    soft = render([Contact(0.1, "x", 72, 0.1)], rate=RATE)
-    loud = render([Contact(0.1, "x", 72, 0.4)], rate=RATE)
+    both = render([Contact(0.1, "x", 72, 0.1), Contact(2.1, "x", 72, 0.4)], rate=RATE)
+    soft, loud = both[: round(2.0 * RATE)], both[round(2.1 * RATE) :]
     assert np.max(np.abs(loud)) == pytest.approx(4 * np.max(np.abs(soft)), rel=1e-6)
 
 

@@ -47,7 +47,7 @@ def _unmoved(arm_name: str, tune: Path, **options: object) -> ArmkitError:
 
 
 def test_a_tune_too_fast_is_refused_with_its_late_notes_and_nothing_moves() -> None:
-    err = _unmoved("openmanipulator_x", TUNES / "ode_to_joy.mid", tempo=1.5)
+    err = _unmoved("openmanipulator_x", TUNES / "ode_to_joy.mid", tempo=3.0)
     assert isinstance(err, PerformanceError) and err.problems
     assert "--tempo" in str(err) and "needs" in str(err)
 

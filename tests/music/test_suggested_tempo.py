@@ -22,7 +22,8 @@ from armkit.sim import World
 
 TUNES = Path(__file__).parents[2] / "examples" / "music"
 SCENE = load_scene("xylophone")
-TUNE = "tempo 120 mf\nC5 q E5 e G5 e R q C6 q\nsnare q F#5 q. D5 e3 D5 e3 D5 e3\n"
+# at 240 bpm: played at the servos' own limits, the arms play it written at 120 (issue 28)
+TUNE = "tempo 240 mf\nC5 q E5 e G5 e R q C6 q\nsnare q F#5 q. D5 e3 D5 e3 D5 e3\n"
 
 
 @pytest.fixture(scope="module")
@@ -45,7 +46,7 @@ def _refused(arm: Arm, tune: Path, tempo: float) -> PerformanceError:
         ("openmanipulator_x", "ode_to_joy.mid", 3.0),
         ("openmanipulator_x", "twinkle.rtttl", 3.0),
         ("lynx6", "t.txt", 1.0),
-        ("lynx6", "ode_to_joy.mid", 3.0),
+        ("lynx6", "ode_to_joy.mid", 4.0),
     ],
 )
 def test_the_suggested_tempo_plays_and_is_the_fastest_that_does(

@@ -32,8 +32,8 @@ TEXT_SVG = (
     '<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm">'
     '<text x="10" y="50">hello</text></svg>\n'
 )
-LATE = (
-    "6 of 9 notes of t.txt cannot be played: E5 at 0.500 s: 0.500 s after the previous note, needs"
+LATE = (  # at twice its tempo: as written it plays (issue 28: strikes at the servos' limits)
+    "5 of 9 notes of t.txt cannot be played: G5 at 0.375 s: 0.125 s after the previous note, needs"
 )
 
 
@@ -58,16 +58,16 @@ def test_the_play_check_plans_the_piece_from_the_arm_as_the_checker_knows_it(
     model, scene = load_model("openmanipulator_x"), load_scene("xylophone")
     q = np.asarray(ik(model, np.array([0.15, 0.0, 0.10]), np.radians(-90.0), model.home).q)
     with pytest.raises(JobArgProblem) as err:
-        check_play(scene, tmp_path / "t.txt", tempo=1.0, arm=Start(model, q))
+        check_play(scene, tmp_path / "t.txt", tempo=2.0, arm=Start(model, q))
     message = str(err.value)
     assert err.value.names == ()  # the job's line, not one argument
     assert message.startswith(LATE.replace("t.txt", str(tmp_path / "t.txt")))
-    assert "(tempo 46% plays it)" in message and "--tempo" not in message
-    check_play(scene, tmp_path / "t.txt", tempo=0.46, arm=Start(model, q))  # plays
+    assert "(tempo 102% plays it)" in message and "--tempo" not in message
+    check_play(scene, tmp_path / "t.txt", tempo=1.02, arm=Start(model, q))  # plays
     check_play(scene, tmp_path / "t.txt", tempo=1.0)  # no arm known: arguments only
 
 
-@pytest.mark.parametrize("job", ["play t.txt tempo 100%", "play t.txt tempo 70%"])
+@pytest.mark.parametrize("job", ["play t.txt tempo 200%", "play t.txt tempo 150%"])
 def test_a_piece_too_fast_for_the_arm_is_an_error_at_its_line(tmp_path: Path, job: str) -> None:
     errors = _errors(tmp_path, _script(job))
     assert [(line, col) for line, col, _ in errors] == [(3, 1)]
@@ -81,7 +81,7 @@ def test_run_refuses_a_piece_too_fast_before_the_first_move(tmp_path: Path) -> N
     with Arm("openmanipulator_x", "sim", world=world, scene=load_scene("xylophone")) as arm:
         before, start = world.arm().q().copy(), world.now()
         with pytest.raises(ScriptCheckError, match="cannot be played"):
-            run_source(arm, Source("job.arm", _script("play t.txt tempo 100%")), base_dir=tmp_path)
+            run_source(arm, Source("job.arm", _script("play t.txt tempo 200%")), base_dir=tmp_path)
         assert np.array_equal(world.arm().q(), before) and world.now() == start
 
 

@@ -14,6 +14,7 @@ from typing import Any
 
 from .._errors import ArmkitError
 from .._terminal import count
+from ._args import number
 from ._watch import add_watch_options, watched_arm
 
 EPILOG = (
@@ -34,6 +35,8 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     p.add_argument("--on", metavar="NAME", help="play on this instrument only (its scene name)")
     p.add_argument("--tempo", type=float, metavar="FACTOR", help="speed factor of the piece (0.8 = 80%% of the written tempo; default 1; out of range: refused, naming the range)")  # fmt: skip
     p.add_argument("--transpose", type=int, metavar="SEMITONES", help="move every pitched note by this many semitones, -48..48 (12 = an octave up)")  # fmt: skip
+    p.add_argument("--hover", type=number("mm", 2.0, 200.0), metavar="MM", help="the mallet head's height above a bar before the loudest stroke [mm], 2..200 (default 30; softer notes start lower, down to 10): lower plays faster and softer")  # fmt: skip
+    p.add_argument("--chords", choices=("top", "arpeggio", "refuse"), default="top", help="notes written together: top keeps the highest and says what was dropped (default), arpeggio plays them one after another, refuse refuses the piece")  # fmt: skip
     p.add_argument("--wav", metavar="OUT", help="write the contacts the simulated mallet made as sound (.wav, 16-bit mono 44.1 kHz)")  # fmt: skip
     p.add_argument("--plot", metavar="OUT", help="plot planned against played onsets [s] and their errors [ms] (.png, .svg, .pdf)")  # fmt: skip
     p.add_argument("--calibrate", metavar="OUT", help="first strike every bar once in the simulator, measure each bar's onset delay [ms] and write the table (.toml); then play FILE, if given, with it")  # fmt: skip
@@ -72,13 +75,16 @@ def _run(args: argparse.Namespace) -> int:
 
 def _play(arm: Any, scene: Any, args: argparse.Namespace, table: Any, music: Any, dry_run: bool) -> Any:  # fmt: skip
     file, on, tempo, shift = Path(args.file), args.on, args.tempo, args.transpose
-    return music.play(arm, scene, file, on, tempo, shift, dry_run=dry_run, latency=table)
+    return music.play(
+        arm, scene, file, on, tempo, shift, dry_run=dry_run, latency=table, hover=args.hover,
+        chords=args.chords,
+    )  # fmt: skip
 
 
 def _calibrate(arm: Any, scene: Any, args: argparse.Namespace, out: Path, music: Any) -> Any:
     """Play the calibration pass, write its table to ``out``, say what it measured."""
     if args.file is not None and not args.dry_run:  # the piece is checked before the pass
-        music.play(arm, scene, Path(args.file), args.on, args.tempo, args.transpose, dry_run=True)
+        _play(arm, scene, args, None, music, dry_run=True)
     table = music.calibrate(arm, scene, args.on)
     music.save_latency(table, out)
     delays = [d * 1000 for _, d in table.delays] or [table.default * 1000]

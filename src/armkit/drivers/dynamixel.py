@@ -161,7 +161,7 @@ class DynamixelDriver:
                 f"this move takes {seconds:.1f} s; a servo profile lasts at most "
                 f"{MAX_PROFILE_MS / 1000} s, so it goes in pieces and must wait"
             )
-        _, amax = limits(self.model)
+        _, amax = limits(self.model, peak=duration is not None)  # timed: the servos' own
         ramp = ramp_time(seconds, end - start, amax) if len(parts) == 1 else 0.0
         try:
             origin = start

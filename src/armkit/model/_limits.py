@@ -16,9 +16,10 @@ joint space, every joint arriving together:
   do the accelerating, ``ramps=False``) takes the shortest constant-speed move
   within ``speed`` x every joint's maximum velocity;
 - a ``duration`` [s]: exactly that long. It must let every joint keep within
-  ``speed`` x its maximum velocity moving at constant speed (a stream of short
+  ``speed`` x its servo's own velocity limit (``Joint.peak_velocity``: the model's
+  ``servo_speed_dps``, else its maximum) moving at constant speed (a stream of short
   segments is such a move); shorter raises InputError. Within that time the
-  device may ramp where the acceleration limit allows (``ramp_time``).
+  device may ramp where the servo's acceleration limit allows (``ramp_time``).
 
 ``Arm`` also bounds a single move to ``MAX_MOVE_S`` (``longest=``): a duration
 or a speed that would make one move crawl for longer is refused, not obeyed.
@@ -130,8 +131,12 @@ def check_duration(duration: float, longest: float | None = None) -> float:
     return float(duration)
 
 
-def limits(model: ArmModel, speed: float = 1.0) -> tuple[F64, F64]:
-    """(velocity limits x ``speed`` [rad/s], acceleration limits [rad/s^2]), shape (dof,) each."""
+def limits(model: ArmModel, speed: float = 1.0, *, peak: bool = False) -> tuple[F64, F64]:
+    """(velocity limits x ``speed`` [rad/s], acceleration limits [rad/s^2]), shape (dof,)
+    each: the planning limits, or with ``peak`` the servos' own (``Joint.peak_*``)."""
+    if peak:
+        vmax = speed * np.array([j.peak_velocity for j in model.joints])
+        return vmax, np.array([j.peak_acceleration for j in model.joints])
     vmax = speed * np.array([j.max_velocity for j in model.joints])
     amax = np.array([j.max_acceleration for j in model.joints])
     return vmax, amax
@@ -164,11 +169,14 @@ def shortest_time(model: ArmModel, q0: ArrayLike, q1: ArrayLike, speed: float = 
     return float(trapezoid_time(1.0, v_unit, a_unit))
 
 
-def constant_speed_time(model: ArmModel, q0: ArrayLike, q1: ArrayLike, speed: float = 1.0) -> float:
+def constant_speed_time(
+    model: ArmModel, q0: ArrayLike, q1: ArrayLike, speed: float = 1.0, *, peak: bool = False
+) -> float:
     """The least time [s] of the move q0 -> q1 [rad] at constant speed within every
-    joint's ``speed`` x maximum velocity: the shortest legal ``duration``."""
+    joint's ``speed`` x maximum velocity (``peak``: its servo's own, the shortest legal
+    ``duration``)."""
     dist = np.abs(np.asarray(q1, dtype=np.float64) - np.asarray(q0, dtype=np.float64))
-    vmax, _ = limits(model, speed)
+    vmax, _ = limits(model, speed, peak=peak)
     return float(np.max(dist / vmax, initial=0.0))
 
 
@@ -201,10 +209,10 @@ def move_time(
             )
         return seconds
     duration = check_duration(duration, longest)
-    needed = constant_speed_time(model, q0, q1, frac)
+    needed = constant_speed_time(model, q0, q1, frac, peak=True)
     if duration < needed - 1e-9:
         raise InputError(
-            f"duration {duration:.4g} s is too short: the joints' speed limits need "
+            f"duration {duration:.4g} s is too short: the servos' speed limits need "
             f"{needed:.4g} s or more for this move"
         )
     return duration

@@ -39,6 +39,8 @@ _JOINT = {
     "home_deg": _NUM,
     "max_speed_dps": _NUM,
     "max_accel_dps2": _NUM,
+    "servo_speed_dps": _NUM,
+    "servo_accel_dps2": _NUM,
     "dh": dict,
 }
 _REQUIRED_JOINT = ("name", "limits_deg", "home_deg", "dh")
@@ -167,6 +169,15 @@ def _joint(check: _Checker, data: Any, k: int) -> tuple[Joint, DHRow]:
         data.get("max_accel_dps2", 360.0), f"{where}.max_accel_dps2", 0, MAX_ACCEL_DPS2,
         "deg/s^2", open_low=True,
     )  # fmt: skip
+    servo_speed, servo_accel = (
+        None if key not in data else math.radians(check.within(
+            data[key], f"{where}.{key}", low, top, unit
+        ))
+        for key, low, top, unit in (
+            ("servo_speed_dps", speed, MAX_SPEED_DPS, "deg/s (at least max_speed_dps)"),
+            ("servo_accel_dps2", accel, MAX_ACCEL_DPS2, "deg/s^2 (at least max_accel_dps2)"),
+        )
+    )  # fmt: skip
     joint = Joint(
         name=check.identifier(data["name"], f"{where}.name"),
         lower=math.radians(lo),
@@ -174,6 +185,8 @@ def _joint(check: _Checker, data: Any, k: int) -> tuple[Joint, DHRow]:
         home=math.radians(home),
         max_velocity=math.radians(speed),
         max_acceleration=math.radians(accel),
+        servo_velocity=servo_speed,
+        servo_acceleration=servo_accel,
     )
     return joint, _dh(check, data["dh"], f"{where}.dh")
 

@@ -62,7 +62,10 @@ class Joint:
         name: the seed's name for it (``"shoulder"``).
         lower, upper: limits [rad], lower < upper.
         home: home angle [rad].
-        max_velocity: [rad/s].  max_acceleration: [rad/s^2].
+        max_velocity: [rad/s].  max_acceleration: [rad/s^2]: what moves are planned with.
+        servo_velocity, servo_acceleration: the servo's own physical limits [rad/s],
+            [rad/s^2] (None: the same as max_*): a move given its duration may use them
+            (music's strikes), as the servo itself allows.
     """
 
     name: str
@@ -71,6 +74,19 @@ class Joint:
     home: float
     max_velocity: float = math.radians(90.0)
     max_acceleration: float = math.radians(360.0)
+    servo_velocity: float | None = None
+    servo_acceleration: float | None = None
+
+    @property
+    def peak_velocity(self) -> float:
+        """The most the servo turns [rad/s]: ``servo_velocity``, else ``max_velocity``."""
+        return self.max_velocity if self.servo_velocity is None else self.servo_velocity
+
+    @property
+    def peak_acceleration(self) -> float:
+        """The most the servo accelerates [rad/s^2]: ``servo_acceleration``, else the max."""
+        a = self.servo_acceleration
+        return self.max_acceleration if a is None else a
 
 
 @dataclass(frozen=True)
@@ -210,6 +226,15 @@ class ArmModel:
         T = self.T_flange_tool.copy()
         T[:3, 3] += T[:3, 0] * (length - self.tool_length)
         return replace(self, T_flange_tool=T, tool_length=length)
+
+    def at_servo_limits(self) -> ArmModel:
+        """The same arm planned at its servos' own limits (``Joint.peak_velocity`` and
+        ``peak_acceleration`` as its max_*): what music's strikes are timed with."""
+        joints = tuple(
+            replace(j, max_velocity=j.peak_velocity, max_acceleration=j.peak_acceleration)
+            for j in self.joints
+        )
+        return replace(self, joints=joints)
 
     def with_grip_width(self, width: float) -> ArmModel:
         """The same arm with the grip point moved for a gripper opening ``width`` [m]

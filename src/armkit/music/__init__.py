@@ -14,6 +14,9 @@ checks the same job on a model alone (``armkit check``). A tempo factor is
 the planner plays it at.
 """
 
+from ._chords import CHORDS as CHORDS
+from ._chords import ChordWarning as ChordWarning
+from ._chords import one_line as one_line
 from ._latency import LatencyError as LatencyError
 from ._latency import calibrate as calibrate
 from ._latency import calibration_score as calibration_score

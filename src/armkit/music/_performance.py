@@ -30,8 +30,9 @@ class Move:
         t: when to send it [s].  q: goal [rad], shape (dof,).
         profile: the predicted motion from ``t`` on.  speed: its speed fraction.
         kind: ``"travel"``, ``"down"`` or ``"rebound"``.  strike: index of its strike.
-        timed: sent with its duration (``profile.duration``) rather than its speed: the
-            rebound, whose servos then ramp only as long as the time allows.
+        timed: sent with its duration (``profile.duration``) rather than its speed: every
+            move the planner makes (the servos then run it at their own limits, ramping only
+            as long as the time allows).
     """
 
     t: float

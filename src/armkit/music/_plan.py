@@ -22,6 +22,7 @@ from .._inputs import array, joints, shown, tolerance
 from ..model import ArmModel
 from ._layout import Bars, DrumLike, Instrument, Target, map_notes
 from ._listen import Surface, height_over, surfaces
+from ._loop import Servos, lagged_contact
 from ._onsets import LatencyTable
 from ._performance import Move, Performance, Problem, Strike
 from ._predict import JointProfile, Predictor, Rebound, rebound_of
@@ -71,14 +72,6 @@ class _Rebounded:
     key: tuple[str, int]
 
 
-@dataclass(frozen=True)
-class _Servos:
-    """How the servos move: ``move`` for travel and strokes, ``rebound`` for rebounds."""
-
-    move: Predictor
-    rebound: Rebound
-
-
 def plan_performance(
     score: Score,
     layout: Sequence[Instrument],
@@ -92,6 +85,7 @@ def plan_performance(
     T_world_base: ArrayLike | None = None,
     tempo: float = 1.0,
     rebound: Rebound | None = None,
+    loop: float = 0.0,
 ) -> Performance:
     """Plan every strike of ``score`` on ``layout``.
 
@@ -106,6 +100,9 @@ def plan_performance(
         T_world_base: the arm's base in the scene frame, shape (4, 4), default identity.
         rebound: how a rebound moves (``timed_predictor(model)`` on Dynamixel servos: sent
             with its duration, no slower ramp than the time allows), default ``predictor``'s.
+        loop: the servos' position loop as a first-order lag [s] (hobby servos:
+            ``SERVO_LAG``), 0: a pure delay; a stroke starting from rest is then timed
+            by how far the loop has built up its lag at the contact.
 
     Returns:
         The Performance; ``check_performance`` refuses it if any note is infeasible
@@ -128,7 +125,7 @@ def plan_performance(
     T_base_world = np.linalg.inv(T)
     begin = arm.home if start is None else joints(start, arm.dof, "start", batch=False)
     cursor = _Cursor(begin, -np.inf, _Stage(surfaces(layout), T))
-    servos = _Servos(predictor, rebound or rebound_of(predictor))
+    servos = Servos(predictor, rebound or rebound_of(predictor), loop)
     for target in map_notes(score.at_tempo(factor) if factor != 1.0 else score, layout):
         point = (T_base_world @ np.append(target.point, 1.0))[:3]
         _plan_note(arm, servos, p, target, point, delays.of(target.key), cursor)
@@ -137,6 +134,7 @@ def plan_performance(
         return plan_performance(
             score, layout, model, predictor, tool_length=tool_length, params=params,
             latency=latency, start=start, T_world_base=T_world_base, tempo=at, rebound=rebound,
+            loop=loop,
         )  # fmt: skip
 
     return replace(_shifted(cursor, arm, score.source, factor), replan=replan)
@@ -204,7 +202,7 @@ class _Option:
 
 def _plan_note(
     arm: ArmModel,
-    servos: _Servos,
+    servos: Servos,
     p: StrikeParams,
     target: Target,
     point: F64,
@@ -232,7 +230,7 @@ def _plan_note(
 
 def _option(
     arm: ArmModel,
-    servos: _Servos,
+    servos: Servos,
     p: StrikeParams,
     target: Target,
     top: float,
@@ -254,13 +252,17 @@ def _option(
     if hit is None:
         return None
     stroke_start = target.note.onset - lag - hit[0]
+    if servos.loop > 0.0:  # behind a first-order loop: where its lag has built up to
+        lead = p.settle + travel.duration  # a first travel is sent this long before the stroke
+        move = (since, lead, again, travel)
+        stroke_start = _behind_loop(arm, servos, cursor, move, down, top, lag, target)
     ready = since + travel.duration + p.settle
     return _Option(poses, down, hit[0], hit[1], travel, stroke_start, ready, again)
 
 
 def _schedule(
     arm: ArmModel,
-    servos: _Servos,
+    servos: Servos,
     p: StrikeParams,
     target: Target,
     lag: float,
@@ -279,23 +281,25 @@ def _schedule(
         )
     elif not np.isfinite(cursor.free):
         send = o.stroke_start - p.settle - o.travel.duration
-        cursor.moves.append(Move(send, o.poses.hover, o.travel, p.travel_speed, "travel", index))
+        cursor.moves.append(
+            Move(send, o.poses.hover, o.travel, p.travel_speed, "travel", index, True)
+        )
     elif o.travel.duration > 0:
         cursor.moves.append(
-            Move(cursor.free, o.poses.hover, o.travel, p.travel_speed, "travel", index)
+            Move(cursor.free, o.poses.hover, o.travel, p.travel_speed, "travel", index, True)
         )
         if cursor.stage.clearance(arm, o.travel, p.clearance) < p.clearance:
             detail = "the stick passes too close to a bar or drum on the way; raise the hover"
             cursor.problems.append(Problem(note, "low travel", detail=detail))
     speed = p.stroke_speed(note.velocity)
-    cursor.moves.append(Move(o.stroke_start, o.poses.through, o.down, speed, "down", index))
+    cursor.moves.append(Move(o.stroke_start, o.poses.through, o.down, speed, "down", index, True))
     _rebound(servos, p, note.onset - lag + p.rebound_delay, target, o, cursor)
     cursor.strikes.append(Strike(target, note.onset, o.poses.height, o.poses, o.speed, lag))
     cursor.previous = note.onset
 
 
 def _rebound(
-    servos: _Servos, p: StrikeParams, at: float, target: Target, o: _Option, cursor: _Cursor
+    servos: Servos, p: StrikeParams, at: float, target: Target, o: _Option, cursor: _Cursor
 ) -> None:
     """Append the rebound of ``o``'s stroke, sent at ``at`` [s], back to its hover (a
     timed move: see ``timed_predictor``), and move the cursor to its end."""
@@ -306,6 +310,44 @@ def _rebound(
     cursor.moves.append(Move(at, o.poses.hover, rebound, p.travel_speed, "rebound", index, True))
     cursor.q, cursor.free = end_of(rebound), at + rebound.duration
     cursor.rebound = _Rebounded(at, q_now, ends, target.key)
+
+
+def _behind_loop(
+    arm: ArmModel,
+    servos: Servos,
+    cursor: _Cursor,
+    travel: tuple[float, float, bool, JointProfile],
+    down: JointProfile,
+    top: float,
+    lag: float,
+    target: Target,
+) -> float:
+    """The stroke's start [s] at which the head, behind the servos' first-order loop
+    (``Servos.loop``, the commands so far, the travel and the stroke), touches the top
+    ``lag - loop`` [s] (the latency table's rest) before the note: from the pure-delay
+    start, three corrections. ``travel``: (send time [s] or -inf for the first note's,
+    sent ``lead`` [s] before the stroke; ``again``: it replaces the last rebound; its
+    profile)."""
+    since, lead, again, profile = travel
+    onset = target.note.onset - (lag - servos.loop)
+    before = [(m.t, m.profile) for m in cursor.moves]
+    if again:
+        before = before[:-1]  # the same bar again: the travel replaces the last rebound
+    start = target.note.onset - lag - contact_time(arm, down, top)
+    for _ in range(3):
+        sent = since if np.isfinite(since) else start - lead
+        commands = [*before, (sent, profile), (start, down)]
+        touched = lagged_contact(arm, commands, top + 0.0, start, servos.loop)
+        if touched is None:
+            break
+        start += onset - touched
+    return start
+
+
+def contact_time(arm: ArmModel, down: JointProfile, top: float) -> float:
+    """When [s] the stroke's own command crosses ``top`` (0 if it never does)."""
+    hit = contact(arm, down, top)
+    return 0.0 if hit is None else hit[0]
 
 
 def end_of(profile: JointProfile) -> F64:

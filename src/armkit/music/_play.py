@@ -20,8 +20,9 @@ from typing import TYPE_CHECKING
 from numpy.typing import ArrayLike
 
 from .._errors import InputError, UnreachableError
-from .._inputs import shown
+from .._inputs import is_number, shown
 from ..model import ArmModel
+from ._chords import check_chords, one_line
 from ._layout import Instrument, RangeError, map_notes
 from ._listen import Listener
 from ._load import load_score
@@ -72,6 +73,8 @@ def play(
     dry_run: bool = False,
     latency: LatencyTable | None = None,
     params: StrikeParams | None = None,
+    hover: float | None = None,
+    chords: str = "top",
 ) -> Played:
     """Play the score ``file`` (MIDI, RTTTL or a note list) on the scene's instruments.
 
@@ -86,13 +89,19 @@ def play(
         latency: per-bar delays [s] from a calibration run (default: the servos' lag,
             ``SERVO_LAG``).  params: how to strike (default: rebound just after the
             lagging contact).
+        hover: the mallet head's height above a bar before the loudest stroke [mm]
+            (softer notes start lower, down to 10 mm or ``hover``), default 30.
+        chords: notes written together: ``"top"`` keeps the highest (a warning says
+            what was dropped), ``"arpeggio"`` plays them one after another, ``"refuse"``.
 
     Raises:
         ScoreError, RangeError, PerformanceError, UnreachableError, InputError: the
             piece cannot be played as asked; nothing has moved.
     """
     table = latency or LatencyTable(default=SERVO_LAG[servo_kind(arm)])
-    performance = prepare(arm, scene, file, on, tempo, transpose, table, params)
+    performance = prepare(
+        arm, scene, file, on, tempo, transpose, table, params, hover=hover, chords=chords
+    )
     if dry_run:
         return Played(performance, latency=table)
     return replace(perform(arm, scene, performance), latency=table)
@@ -107,6 +116,9 @@ def prepare(
     transpose: int | None = None,
     latency: LatencyTable | None = None,
     params: StrikeParams | None = None,
+    *,
+    hover: float | None = None,
+    chords: str = "top",
 ) -> Performance:
     """Plan and check the whole piece (see ``play``) from where the arm is: ``plan_play``
     with its model, its servos and its joints now; the Performance to send."""
@@ -116,7 +128,8 @@ def prepare(
     kind = servo_kind(arm)
     return plan_play(
         arm.model, scene, file, on, tempo, transpose,
-        servos=kind, start=arm.driver.read(), latency=latency, params=params,
+        servos=kind, start=arm.driver.read(), latency=latency, params=params, hover=hover,
+        chords=chords,
     )  # fmt: skip
 
 
@@ -132,6 +145,8 @@ def plan_play(
     start: ArrayLike | None = None,
     latency: LatencyTable | None = None,
     params: StrikeParams | None = None,
+    hover: float | None = None,
+    chords: str = "top",
     script: bool = False,
 ) -> Performance:
     """The ``play`` job planned and checked whole on an arm known by its model alone:
@@ -151,14 +166,15 @@ def plan_play(
             the planner plays the piece at), UnreachableError, InputError.
     """
     factor = check_tempo(tempo, script=script)
-    score, layout = score_on(scene, file, on, transpose, script=script)
+    score, layout = score_on(scene, file, on, transpose, chords=chords, script=script)
     mallet = mallet_model(model, scene)
     predictor, rebound, lag, lead = predictors(servos or model_servos(model), mallet)
     perf = plan_performance(
         score, layout, mallet, predictor,
-        params=params or StrikeParams(rebound_delay=lag - lead),
+        params=strike_params(params or StrikeParams(rebound_delay=lag - lead), hover),
         latency=latency or LatencyTable(default=lag), start=start,
         T_world_base=scene.T_world_base, tempo=factor, rebound=rebound,
+        loop=lag if (servos or model_servos(model)) == "hobby" else 0.0,
     )  # fmt: skip
     check_performance(perf, lambda p: collision(p, scene) is None, script=script)
     hit = collision(perf, scene)
@@ -167,20 +183,34 @@ def plan_play(
     return perf
 
 
+def strike_params(params: StrikeParams, hover: float | None) -> StrikeParams:
+    """``params`` with the loudest stroke's hover ``hover`` [mm] (None: as they are);
+    InputError outside 2..200 mm."""
+    if hover is None:
+        return params
+    if not (is_number(hover) and 2.0 <= hover <= 200.0):
+        raise InputError(f"hover must be 2..200 mm above the bar, got {shown(hover)}")
+    h = float(hover) / 1000.0
+    return replace(params, hover=h, min_hover=min(params.min_hover, h))
+
+
 def score_on(
     scene: Scene,
     file: str | Path | Score,
     on: str | None = None,
     transpose: int | None = None,
     *,
+    chords: str = "top",
     script: bool = False,
 ) -> tuple[Score, Sequence[Instrument]]:
-    """The score, transposed, and the instruments it is played on; RangeError if a note
-    is on none of them (with a transposition in all that fits, as ``--transpose N``, or
-    with ``script`` as ``transpose N``)."""
+    """The score, transposed, one line (``chords``: see ``one_line``), and the instruments
+    it is played on; RangeError if a note is on none of them (with a transposition in all
+    that fits, as ``--transpose N``, or with ``script`` as ``transpose N``)."""
     shift = check_transpose(transpose)
     layout = instruments(scene, on)
+    check_chords(chords)
     score = file.transposed(shift) if isinstance(file, Score) else load_score(file, shift)
+    score = one_line(score, chords)
     try:
         map_notes(score, layout)
     except RangeError as err:

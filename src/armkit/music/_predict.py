@@ -93,7 +93,8 @@ def time_based_predictor(
         goal = np.rint(np.asarray(q1, dtype=np.float64) * per_rad) / per_rad
         fastest = shortest_time(model, start, goal, speed)
         steps = max(1, math.ceil(fastest / tick - 1e-9))
-        ramp = min(round(ramp_time(fastest, goal - start, a_max) / tick), steps // 2) * tick
+        # sent with its duration (steps * tick): the driver ramps as that time allows
+        ramp = min(round(ramp_time(steps * tick, goal - start, a_max) / tick), steps // 2) * tick
         return ramped_line(start, goal, steps * tick, ramp)
 
     return predict

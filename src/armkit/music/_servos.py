@@ -96,7 +96,10 @@ def model_servos(model: ArmModel) -> str:
 
 
 def predictors(kind: str, model: ArmModel) -> tuple[Predictor, Rebound, float, float]:
-    """``predictor_for`` of servos of ``kind`` (``servo_kind``, ``model_servos``)."""
+    """``predictor_for`` of servos of ``kind`` (``servo_kind``, ``model_servos``), at the
+    servos' own limits (``ArmModel.at_servo_limits``: every move of a piece is sent with
+    its duration, which a servo may fill up to its own speed and acceleration)."""
+    model = model.at_servo_limits()
     if kind == "dynamixel":
         return (
             time_based_predictor(model),

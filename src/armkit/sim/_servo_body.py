@@ -123,7 +123,7 @@ class ServoBody:
         self.joint = self.motor.copy()
         self.setpoint = self.motor.copy()
         self.lower, self.upper = model.lower, model.upper
-        self.motor_vmax = np.array([j.max_velocity for j in model.joints]) * (
+        self.motor_vmax = np.array([j.peak_velocity for j in model.joints]) * (  # the servo's own
             params.motor_speed_margin
         )
         self.grip_width = truth.grip

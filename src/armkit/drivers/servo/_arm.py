@@ -145,14 +145,15 @@ class ServoArmDriver:
     ) -> int:
         """Group time [ms] for ``seconds`` [s] of the shared rule, rounded up; longer only
         where a servo's table is steeper than its joint's speed allows (refused when the
-        time was asked for exactly)."""
+        time was asked for exactly: then up to the servo's own speed, ``peak_velocity``)."""
         needed = 0.0
         for table, joint in zip(self.joints, self.model.joints, strict=True):
             start, target = starts.get(table.channel), pulses.get(table.channel)
             if start is not None and target is not None:
                 travel = abs(target - start) + (0.0 if exact else pad)  # µs of pulse
                 rate = table.max_rate(start, target)
-                needed = max(needed, travel * rate / (joint.max_velocity * speed))
+                vmax = joint.peak_velocity if exact else joint.max_velocity
+                needed = max(needed, travel * rate / (vmax * speed))
         if exact and needed > seconds + 1e-3:
             raise InputError(
                 f"duration {seconds:.3f} s is too short for the servo tables: this move "
