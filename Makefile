@@ -32,8 +32,10 @@ lint: $(DEVSTAMP)
 	$(BIN)/ruff format --check src tests benchmarks examples docs/_hooks
 	$(BIN)/mypy
 
+# The suite on every core (pytest-xdist), the ten slowest tests listed at the end;
+# ARMKIT_PROFILE=ci (.ci/run) runs the full fuzz and property budgets (tests/budget.py).
 test: lint
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -n auto --dist worksteal --durations=10
 
 # The documentation site (mkdocs.yml, docs/): --strict fails on any broken link or reference.
 docs: $(DOCSTAMP)

@@ -30,11 +30,6 @@ from armkit.model import SECTIONS, load_model, shipped_models
 from armkit.script import Source, check_source
 
 
-@pytest.fixture(autouse=True)
-def _config_dir(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path / "config"))
-
-
 def _armkit(*argv: str) -> tuple[int, str]:
     out = io.StringIO()
     with redirect_stdout(out), redirect_stderr(out):

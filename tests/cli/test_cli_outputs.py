@@ -18,12 +18,6 @@ CIRCLE = ["draw", "circle", "--center", "200", "0", "50", "--radius", "20"]
 needs_proc = pytest.mark.skipif(not PROC.is_dir(), reason="no /proc here")
 
 
-@pytest.fixture(autouse=True)
-def config(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path / "config"))
-    return tmp_path / "config"
-
-
 def _files(folder: Path) -> dict[str, bytes]:
     """Every file under ``folder`` (the simulated arms' and objects' state) and its bytes."""
     return {str(p.relative_to(folder)): p.read_bytes() for p in folder.rglob("*") if p.is_file()}
@@ -73,16 +67,16 @@ def test_a_motion_with_an_unwritable_output_moves_nothing(
     arm: list[str],
     words: list[str],
     option: str,
-    config: Path,
+    config_dir: Path,
     capsys: pytest.CaptureFixture[str],
 ) -> None:
     assert main([*arm, "move", "210", "10", "90"]) == 0  # a pose (and state files) to keep
-    where, before = _where(arm, capsys), _files(config)
+    where, before = _where(arm, capsys), _files(config_dir)
     err = _refused([*arm, *words], capsys)
     path = words[-1]
     assert f"{option}: cannot write {path}: the folder /proc does not take new files" in err
     assert err.rstrip().endswith("; choose a file in a folder you can write to")
-    assert _files(config) == before
+    assert _files(config_dir) == before
     assert _where(arm, capsys) == where
 
 
@@ -99,11 +93,11 @@ def test_a_motion_with_an_unwritable_output_moves_nothing(
     ],
 )
 def test_other_commands_refuse_an_unwritable_output_before_working(
-    argv: list[str], config: Path, capsys: pytest.CaptureFixture[str]
+    argv: list[str], config_dir: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     err = _refused(argv, capsys)
     assert f"cannot write {argv[-1]}: the folder /proc does not take new files" in err
-    assert not config.exists() or _files(config) == {}
+    assert not config_dir.exists() or _files(config_dir) == {}
     assert capsys.readouterr().out == ""
 
 
@@ -120,16 +114,16 @@ def test_urdf_into_a_directory_is_refused_and_writes_nothing(
 
 
 def test_play_into_a_directory_or_missing_folder_plays_nothing(
-    tmp_path: Path, config: Path, capsys: pytest.CaptureFixture[str]
+    tmp_path: Path, config_dir: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     scene = ["--scene", "xylophone"]
     assert main([*scene, "move", "210", "10", "90"]) == 0
-    where, before = _where(scene, capsys), _files(config)
+    where, before = _where(scene, capsys), _files(config_dir)
     (tmp_path / "x.wav").mkdir()
     assert "it is a directory" in _refused([*scene, "play", str(TUNE), "--wav", str(tmp_path / "x.wav")], capsys)  # fmt: skip
     missing = tmp_path / "no" / "x.wav"
     assert "does not exist" in _refused([*scene, "play", str(TUNE), "--wav", str(missing)], capsys)
-    assert _files(config) == before and _where(scene, capsys) == where
+    assert _files(config_dir) == before and _where(scene, capsys) == where
 
 
 @needs_proc

@@ -1,4 +1,4 @@
-"""Fixtures for the regression tests of issue 10: a private config directory and
+"""Fixtures for the regression tests of issue 10: a private config directory (the root conftest) and
 a way to run the CLI in-process and see exactly what it printed."""
 
 from __future__ import annotations
@@ -12,11 +12,9 @@ from armkit.cli import main
 
 
 @pytest.fixture(autouse=True)
-def config(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    d = tmp_path / "config"
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(d))
+def _in_tmp_path(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Run in the test's own folder (files written to the working directory land there)."""
     monkeypatch.chdir(tmp_path)
-    return d
 
 
 @dataclass

@@ -73,24 +73,24 @@ def test_help_of_commands_with_coordinates(cli, argv: list[str]) -> None:  # typ
     ],
 )  # fmt: skip
 def test_refusals_are_one_line_in_the_users_units_and_move_nothing(
-    cli, config: Path, argv: list[str], words: str
+    cli, config_dir: Path, argv: list[str], words: str
 ) -> None:  # type: ignore[no-untyped-def]
     got = cli(*argv)
     assert got.one_line_refusal, got.err
     assert words in got.err
     for leak in ("np.float64", "array(", "0.002", "cannot convert"):
         assert leak not in got.err
-    assert not (config / STATE).exists()
-    assert not list(config.glob("owi535/*.json"))  # no state written (a lock file may be)
+    assert not (config_dir / STATE).exists()
+    assert not list(config_dir.glob("owi535/*.json"))  # no state written (a lock file may be)
 
 
-def test_refused_draw_leaves_the_arm_where_it_was(cli, config: Path) -> None:  # type: ignore[no-untyped-def]
+def test_refused_draw_leaves_the_arm_where_it_was(cli, config_dir: Path) -> None:  # type: ignore[no-untyped-def]
     assert cli("move", "200", "0", "100").code == 0
-    before = (config / STATE).read_text()
+    before = (config_dir / STATE).read_text()
     circle = ["draw", "circle", "--center", "170", "0", "50", "--radius", "40", "--pitch", "-90"]
     got = cli(*circle, "--record", "/nonexistent/dir/c.csv")
     assert got.one_line_refusal and "/nonexistent/dir does not exist" in got.err
-    assert (config / STATE).read_text() == before
+    assert (config_dir / STATE).read_text() == before
 
 
 @pytest.mark.parametrize(

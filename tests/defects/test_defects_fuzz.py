@@ -2,7 +2,8 @@
 model files through ``armkit.cli.main``, in-process. For every one: no traceback;
 a refusal is a non-zero exit with exactly one ``armkit: error:`` line on stderr;
 and a refused command leaves every simulated arm where it was (its state files
-unchanged). Fixed seed (derandomized), bounded."""
+unchanged). Fixed seed (derandomized), bounded: 2,000 command lines and 500 model files
+under ``ARMKIT_PROFILE=ci`` (.ci/run), 400 and 100 in ``make test`` (tests/budget.py)."""
 
 from __future__ import annotations
 
@@ -18,9 +19,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from armkit.cli import main
+from budget import cases
 
-CLI_CASES = 2000
-MODEL_CASES = 500
+CLI_CASES = cases(full=2000, quick=400)
+MODEL_CASES = cases(full=500, quick=100)
 FUZZ = dict(
     derandomize=True,  # the fixed seed: the same cases on every run
     database=None,

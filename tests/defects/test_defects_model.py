@@ -87,7 +87,7 @@ def test_a_file_not_in_utf8_names_the_file(tmp_path: Path) -> None:
 
 def test_a_name_cannot_write_outside_the_config_dir(
     tmp_path: Path,
-    config: Path,
+    config_dir: Path,
     cli,  # type: ignore[no-untyped-def]
 ) -> None:
     path = variant(tmp_path, "openmanipulator_x", 'name = "openmanipulator_x"', 'name = "x/../../evil/out"')  # fmt: skip

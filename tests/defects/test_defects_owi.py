@@ -207,7 +207,7 @@ def test_a_watchdog_stop_ends_the_move_with_an_error(owi: ArmModel) -> None:
 CHILD = Path(__file__).with_name("owi_suspend_child.py")
 
 
-def test_ctrl_z_stops_the_motors_before_suspending(tmp_path: Path, config: Path) -> None:
+def test_ctrl_z_stops_the_motors_before_suspending(tmp_path: Path, config_dir: Path) -> None:
     import subprocess
     import sys
     import time
@@ -241,7 +241,7 @@ def test_ctrl_z_stops_the_motors_before_suspending(tmp_path: Path, config: Path)
     assert on_disk.pending is None and on_disk.uncertain and on_disk.motor_s == motor_s
 
 
-def test_short_moves_are_made_or_refused_with_the_smallest_step(cli, config: Path) -> None:  # type: ignore[no-untyped-def]
+def test_short_moves_are_made_or_refused_with_the_smallest_step(cli, config_dir: Path) -> None:  # type: ignore[no-untyped-def]
     got = cli("--arm", "owi535", "joints", "3", "0", "0", "0")
     assert got.code == 0 and "base 3.00" in got.out
     assert cli("--arm", "owi535", "move", "250", "0", "60").code == 0

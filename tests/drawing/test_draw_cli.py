@@ -36,15 +36,6 @@ SVG = st.sampled_from(
 )
 
 
-@pytest.fixture(autouse=True)
-def config(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    """A fresh config directory: the simulated arm's state file goes there."""
-    d = tmp_path / "config"
-    d.mkdir()
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(d))
-    return d
-
-
 def _one_line_or_ok(code: int, err: str) -> None:
     assert code in (0, 2)
     lines = err.strip().splitlines()
@@ -77,8 +68,8 @@ def test_fuzzed_svg_is_planned_or_refused_in_one_line(
     _one_line_or_ok(code, capsys.readouterr().err)
 
 
-def _state(config: Path) -> dict[str, bytes]:
-    return {p.name: p.read_bytes() for p in config.glob("sim_*.json")}
+def _state(config_dir: Path) -> dict[str, bytes]:
+    return {p.name: p.read_bytes() for p in config_dir.glob("sim_*.json")}
 
 
 @pytest.mark.parametrize(
@@ -93,7 +84,7 @@ def _state(config: Path) -> dict[str, bytes]:
     ],
 )
 def test_bad_input_moves_nothing(
-    args: list[str], says: str, tmp_path: Path, config: Path, capsys: pytest.CaptureFixture[str]
+    args: list[str], says: str, tmp_path: Path, config_dir: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     assert main(["move", "200", "0", "100"]) == 0  # a state file to compare
     (tmp_path / "BAD.svg").write_text("<svg><path d='M 0 0 L 10 Q'/></svg>")
@@ -104,12 +95,12 @@ def test_bad_input_moves_nothing(
         str(tmp_path / names.get(a, a)) if a in ("BAD", "BAD.gcode", "GOOD") else a for a in args
     ]
     argv = [str(tmp_path / a) if a.startswith("no/") else a for a in argv]
-    before = _state(config)
+    before = _state(config_dir)
     capsys.readouterr()
     assert main(["--scene", "drawing", "draw", *argv]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and says in err[0]
-    assert _state(config) == before
+    assert _state(config_dir) == before
 
 
 def test_a_circle_in_a_wall_plane() -> None:

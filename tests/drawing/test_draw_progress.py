@@ -19,13 +19,6 @@ TWO_STROKES = (
 )
 
 
-@pytest.fixture(autouse=True)
-def config(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    d = tmp_path / "config"
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(d))
-    return d
-
-
 def test_the_plan_comes_first_then_the_strokes_drawn(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

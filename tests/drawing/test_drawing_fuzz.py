@@ -12,9 +12,10 @@ from hypothesis import HealthCheck, given, seed, settings
 from hypothesis import strategies as st
 
 from armkit.drawing import DrawingError, Fit, PaperSize, plan_drawing, read_gcode, read_svg
+from budget import cases
 
 FUZZ = settings(
-    max_examples=300,
+    max_examples=cases(full=300, quick=100),
     deadline=None,
     suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow],
 )

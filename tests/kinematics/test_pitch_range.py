@@ -13,8 +13,9 @@ from armkit import UnreachableError
 from armkit.kinematics import fk, ik, ik_batch, pitch_of
 from armkit.kinematics._chain import chain_of
 from armkit.model import ArmModel, load_model
+from budget import cases
 
-N = 10_000
+N = cases(full=10_000, quick=2_500)  # OpenManipulator-X targets
 
 
 def _solve(m: ArmModel, p: np.ndarray, pitch: float) -> np.ndarray | None:

@@ -36,12 +36,12 @@ def _angles(text: str) -> list[float]:
 
 
 def test_move_then_where_in_a_new_invocation(
-    capsys: pytest.CaptureFixture[str], _config_dir: Path
+    capsys: pytest.CaptureFixture[str], config_dir: Path
 ) -> None:
     assert main(["move", "200", "0", "100", "--pitch", "-45"]) == 0
     moved = capsys.readouterr().out
     assert math.dist(_xyz(moved), (200, 0, 100)) < NEAR_MM and "pitch -45.0 deg" in moved
-    assert (_config_dir / "sim_openmanipulator_x.json").exists()
+    assert (config_dir / "sim_openmanipulator_x.json").exists()
     # a new process reads the ticks the servos hold: the target to the nearest tick (the
     # XM430's resolution), printed to 0.1 mm
     omx = load_model("openmanipulator_x")
@@ -77,12 +77,12 @@ def test_joints_and_grip(capsys: pytest.CaptureFixture[str]) -> None:
     ],
 )
 def test_bad_input_is_one_line_and_moves_nothing(
-    argv: list[str], message: str, capsys: pytest.CaptureFixture[str], _config_dir: Path
+    argv: list[str], message: str, capsys: pytest.CaptureFixture[str], config_dir: Path
 ) -> None:
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert message in err and err.count("\n") == 1
-    assert not (_config_dir / "sim_openmanipulator_x.json").exists()
+    assert not (config_dir / "sim_openmanipulator_x.json").exists()
 
 
 def test_draw_circle_records_the_true_path(

@@ -4,7 +4,6 @@ driven by the real driver through the simulated pyusb device."""
 from __future__ import annotations
 
 from collections.abc import Iterator
-from pathlib import Path
 
 import pytest
 
@@ -17,13 +16,6 @@ from armkit.sim.owi_sim import OwiSim, build_sim
 @pytest.fixture
 def owi() -> ArmModel:
     return load_model("owi535")
-
-
-@pytest.fixture(autouse=True)
-def config_dir(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    d = tmp_path / "config"
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(d))
-    return d
 
 
 @pytest.fixture

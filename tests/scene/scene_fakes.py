@@ -71,12 +71,31 @@ class FakeWorld:
             self.step()
 
 
+class VirtualClock:
+    """Time that passes only when somebody sleeps: the fake world moves at once, so what
+    waits for it (a task's pause for the gripper, 0.5 s on real hardware) need not wait
+    in real time."""
+
+    def __init__(self) -> None:
+        self.t = 0.0
+        self.slept: list[float] = []
+
+    def now(self) -> float:
+        return self.t
+
+    def sleep(self, seconds: float) -> None:
+        self.slept.append(seconds)
+        self.t += max(0.0, seconds)
+
+
 class FakeDriver:
-    """An armkit Driver on the fake world; counts the commands it was sent."""
+    """An armkit Driver on the fake world; counts the commands it was sent. Its clock
+    is virtual (``VirtualClock``): the tasks' waits cost no real time."""
 
     def __init__(self, world: FakeWorld) -> None:
         self.world = world
         self.commands = 0
+        self.clock = VirtualClock()
 
     @property
     def joint_names(self) -> tuple[str, ...]:

@@ -18,6 +18,7 @@ from armkit.scene._distance import (
     segment_segment_distance,
 )
 from armkit.scene._rotations import rot_axis
+from budget import cases
 
 ARMS = ["openmanipulator_x", "lynx6", "owi535", "al5d", "puma560"]
 
@@ -51,7 +52,7 @@ def test_segment_segment_distance_against_sampling() -> None:
     """Random segments, points (zero length), parallel and collinear pairs: the closed form
     is never above the sampled minimum and within the sampling's resolution of it."""
     rng = np.random.default_rng(5)
-    P = rng.uniform(-0.2, 0.2, (400, 4, 3))
+    P = rng.uniform(-0.2, 0.2, (200 + cases(full=200, quick=50), 4, 3))  # 200: the cases below
     P[:40, 1] = P[:40, 0]  # p a point
     P[40:80, 3] = P[40:80, 2]  # q a point
     P[80:100, 1], P[80:100, 3] = P[80:100, 0], P[80:100, 2]  # both points

@@ -12,6 +12,7 @@ from script_arms import counting_arm
 
 from armkit import ArmkitError
 from armkit.script import ScriptCheckError, Source, check_source, run_source
+from budget import cases
 
 SEEDS = [
     "pose above = xyz 180 0 80 pitch -90\npose rest = joints 0 -60 20 40\nmove above\n"
@@ -79,7 +80,7 @@ def _exercise(text: str) -> None:
 
 
 FUZZ = settings(
-    max_examples=80,
+    max_examples=cases(full=80, quick=25),
     derandomize=True,  # a fixed sequence of examples: the same run every time
     deadline=None,
     suppress_health_check=[HealthCheck.too_slow],

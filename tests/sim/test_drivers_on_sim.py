@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import typing
 from collections.abc import Callable
-from pathlib import Path
 
 import pytest
 
@@ -19,11 +18,6 @@ REAL_OPENERS: dict[str, Callable[..., object]] = {
     "maestro": servo.open_maestro,
     "dynamixel": dynamixel.open_driver,
 }
-
-
-@pytest.fixture(autouse=True)
-def _config_dir(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path / "config"))
 
 
 def hardware_class(driver: str) -> type:

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -24,11 +23,6 @@ from armkit.sim import World
 
 CASES = [("owi535", "sim"), ("openmanipulator_x", "sim"), ("lynx6", "sim"), ("al5d", "sim")]
 CASES += [("planar2", "sim"), ("puma560", "sim"), ("lynx6", "maestro")]
-
-
-@pytest.fixture(autouse=True)
-def _config_dir(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path / "config"))
 
 
 @pytest.fixture(params=CASES, ids=[f"{a}-{d}" for a, d in CASES])

@@ -19,12 +19,6 @@ from armkit.drivers.timed import load_state, state_path
 from armkit.model import load_model
 
 
-@pytest.fixture(autouse=True)
-def config(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path / "config"))
-    return tmp_path / "config"
-
-
 def _where(capsys: pytest.CaptureFixture[str], *arm: str) -> list[float]:
     assert main([*arm, "where"]) == 0
     line = capsys.readouterr().out.split("joints ")[1].split("\n")[0].split()
@@ -32,7 +26,7 @@ def _where(capsys: pytest.CaptureFixture[str], *arm: str) -> list[float]:
 
 
 def test_two_model_files_with_one_name_keep_two_poses(
-    tmp_path: Path, config: Path, capsys: pytest.CaptureFixture[str]
+    tmp_path: Path, config_dir: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     shipped = load_model("planar2").source
     assert shipped is not None
@@ -41,7 +35,7 @@ def test_two_model_files_with_one_name_keep_two_poses(
         path.parent.mkdir()
         path.write_text(shipped.read_text())  # both say name = "planar2"
     assert sim_state_file(load_model(a)) != sim_state_file(load_model(b))
-    assert sim_state_file(load_model("planar2")) == config / "sim_planar2.json"
+    assert sim_state_file(load_model("planar2")) == config_dir / "sim_planar2.json"
     assert main(["--arm", str(a), "joints", "20", "30"]) == 0
     assert _where(capsys, "--arm", str(a)) == pytest.approx([20, 30], abs=0.1)
     assert _where(capsys, "--arm", str(b)) == pytest.approx([0, 0], abs=0.1)
@@ -50,10 +44,10 @@ def test_two_model_files_with_one_name_keep_two_poses(
     assert saved["model_file"] == str(a) and saved["q_deg"] == pytest.approx([20, 30], abs=0.1)
 
 
-def test_a_second_process_on_the_same_simulated_arm_is_refused(config: Path) -> None:
+def test_a_second_process_on_the_same_simulated_arm_is_refused(config_dir: Path) -> None:
     state = sim_state_file(load_model("openmanipulator_x"))
     with exclusive(state, "a test holding the arm"):
-        env = {**os.environ, "ARMKIT_CONFIG_DIR": str(config)}
+        env = {**os.environ, "ARMKIT_CONFIG_DIR": str(config_dir)}
         code = "import sys; from armkit.cli import main; sys.exit(main(['where']))"
         out = subprocess.run(
             [sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=120
@@ -73,7 +67,7 @@ def test_the_state_file_is_held_while_open_and_released_at_close() -> None:
     open_driver(model, "sim", keep=True).close()  # free again
 
 
-def test_the_owi_truth_is_kept_apart_from_the_drivers_estimate(config: Path) -> None:
+def test_the_owi_truth_is_kept_apart_from_the_drivers_estimate(config_dir: Path) -> None:
     owi = load_model("owi535")
     assert main(["--arm", "owi535", "joints", "40", "20", "0", "0"]) == 0
     truth = json.loads(sim_state_file(owi).read_text())
@@ -88,15 +82,15 @@ def test_the_owi_truth_is_kept_apart_from_the_drivers_estimate(config: Path) -> 
     driver.close()
 
 
-def test_a_refused_command_writes_no_state(config: Path) -> None:
+def test_a_refused_command_writes_no_state(config_dir: Path) -> None:
     assert main(["joints", "0", "0", "0", "200"]) == 2
     assert main(["--arm", "owi535", "joints", "0", "0", "0", "200"]) == 2
-    assert not config.exists() or not any(p.suffix == ".json" for p in config.rglob("*"))
+    assert not config_dir.exists() or not any(p.suffix == ".json" for p in config_dir.rglob("*"))
 
 
-def test_a_state_file_for_another_arm_is_refused(config: Path) -> None:
+def test_a_state_file_for_another_arm_is_refused(config_dir: Path) -> None:
     omx = load_model("openmanipulator_x")
-    config.mkdir()
+    config_dir.mkdir()
     sim_state_file(omx).write_text(json.dumps({"arm": "lynx6", "q_deg": [0] * 4, "grip_mm": 1}))
     with pytest.raises(Exception, match="not for this openmanipulator_x arm"):
         open_driver(omx, "sim", keep=True)

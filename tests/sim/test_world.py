@@ -16,11 +16,6 @@ from armkit.sim import SimArm, World, world_of
 OMX = load_model("openmanipulator_x")
 
 
-@pytest.fixture(autouse=True)
-def _config_dir(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path / "config"))
-
-
 def test_virtual_time_is_exact_and_the_arms_step_on_a_1khz_grid() -> None:
     with Arm(OMX, "sim") as arm:
         world = arm.world

@@ -3,8 +3,6 @@ arm advances the virtual clock at once, with the same truth and recording as ste
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 import pytest
 
@@ -14,11 +12,6 @@ from armkit.script import Source, run_source
 from armkit.sim import World
 
 OMX = load_model("openmanipulator_x")
-
-
-@pytest.fixture(autouse=True)
-def _config_dir(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path / "config"))
 
 
 class Counter:

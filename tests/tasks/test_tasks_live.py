@@ -8,6 +8,7 @@ nothing; the CLI keeps the objects between processes."""
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
 
@@ -72,11 +73,11 @@ def test_the_same_tasks_on_the_lynx6() -> None:
     _assert_as_planned(arm, plan)
 
 
-def test_the_owi_drifts_and_says_so() -> None:
+def test_the_owi_drifts_and_says_so(closes: Callable[[Arm], Arm]) -> None:
     """Without calibration (the model file's nominal timing, the unit up to 15 % off)
     the drift is there: the jaws miss on the first grasp."""
     world = World()
-    arm = Arm("owi535", "sim", world=world)
+    arm = closes(Arm("owi535", "sim", world=world))
     scene = replace(TABLE, cubes=(Cube("box", 0.025, np.array([0.20, -0.06, 0.0])),))
     with pytest.warns(UserWarning), pytest.raises(TaskFailed) as failed:
         tasks.move_item(arm, scene, "box", "B", pitch=-45)
@@ -98,9 +99,11 @@ def _calibrated_owi(model: ArmModel) -> Arm:
     return arm
 
 
-def test_the_calibrated_owi_moves_the_item_within_its_tolerance() -> None:
+def test_the_calibrated_owi_moves_the_item_within_its_tolerance(
+    closes: Callable[[Arm], Arm],
+) -> None:
     model = load_model("owi535")
-    arm = _calibrated_owi(model)
+    arm = closes(_calibrated_owi(model))
     plan = tasks.move_item(arm, TABLE, "box", "B", pitch=-45)
     physics = tasks.attached(arm)
     assert physics is not None and physics.holding is None
@@ -112,13 +115,15 @@ def test_the_calibrated_owi_moves_the_item_within_its_tolerance() -> None:
     assert distance > 1e-3  # open loop: not the servo arms' 1 mm
 
 
-def test_the_owi_with_001s_three_waypoints_down_drifts_too_far() -> None:
+def test_the_owi_with_001s_three_waypoints_down_drifts_too_far(
+    closes: Callable[[Arm], Arm],
+) -> None:
     """The correction is needed: calibrated, but coming down in 001's three short
     moves (each run adding slip and coast), the box ends outside the tolerance."""
     model = load_model("owi535")
     cfg = dict(model.drivers["owi535"], task_waypoints=3)
     three = replace(model, drivers={**model.drivers, "owi535": cfg})
-    arm = _calibrated_owi(three)
+    arm = closes(_calibrated_owi(three))
     with pytest.raises(TaskFailed, match="from where planned") as failed:
         tasks.move_item(arm, TABLE, "box", "B", pitch=-45)
     assert failed.value.step.startswith("put box at B")

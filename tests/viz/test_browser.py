@@ -55,8 +55,8 @@ class Page:
 @pytest.fixture
 def page(tmp_path: Any) -> Iterator[Page]:
     exe = chromium_or_skip()
-    arm = armkit.Arm("openmanipulator_x")
     with (
+        armkit.Arm("openmanipulator_x") as arm,
         View(DriverSource(arm.model, arm.driver), scene=BOARD, port=0) as view,
         Chromium(WIDTH, HEIGHT, executable=exe) as browser,
     ):

@@ -9,12 +9,6 @@ import pytest
 from armkit.cli import main
 
 
-@pytest.fixture(autouse=True)
-def config(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path / "config"))
-    return tmp_path / "config"
-
-
 @pytest.mark.parametrize(
     ("args", "words"),
     [
@@ -36,14 +30,18 @@ def config(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     ],
 )
 def test_refusals_are_one_line_and_touch_nothing(
-    args: list[str], words: str, tmp_path: Path, config: Path, capsys: pytest.CaptureFixture[str]
+    args: list[str],
+    words: str,
+    tmp_path: Path,
+    config_dir: Path,
+    capsys: pytest.CaptureFixture[str],
 ) -> None:
     code = main(["view", *(a.format(tmp=tmp_path) for a in args)])
     err = capsys.readouterr().err
     assert code == 2
     assert err.startswith("armkit: error: ") and words in err and err.count("\n") == 1
     assert not any(p.suffix in (".png", ".gif", ".arm") for p in tmp_path.rglob("*"))
-    assert not config.exists()  # no simulated arm was opened
+    assert not config_dir.exists()  # no simulated arm was opened
 
 
 def test_gif_of_a_joint_path(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -74,7 +72,7 @@ def test_gif_of_a_joint_path(tmp_path: Path, capsys: pytest.CaptureFixture[str])
     assert "frames" in capsys.readouterr().out
 
 
-def test_view_serves_the_page_on_loopback_until_ctrl_c(config: Path) -> None:
+def test_view_serves_the_page_on_loopback_until_ctrl_c(config_dir: Path) -> None:
     import os
     import signal
     import subprocess
@@ -89,9 +87,9 @@ def test_view_serves_the_page_on_loopback_until_ctrl_c(config: Path) -> None:
         "--port",
         "0",
         "--write",
-        str(config.parent / "page.arm"),
+        str(config_dir.parent / "page.arm"),
     ]
-    env = dict(os.environ, ARMKIT_CONFIG_DIR=str(config))
+    env = dict(os.environ, ARMKIT_CONFIG_DIR=str(config_dir))
     proc = subprocess.Popen(
         cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env
     )
@@ -110,12 +108,12 @@ def test_view_serves_the_page_on_loopback_until_ctrl_c(config: Path) -> None:
             proc.wait()
     assert proc.returncode == 0
     assert "stopped" in out
-    assert f"wrote 0 poses to {config.parent / 'page.arm'}" in out
-    assert main(["check", str(config.parent / "page.arm")]) == 0
+    assert f"wrote 0 poses to {config_dir.parent / 'page.arm'}" in out
+    assert main(["check", str(config_dir.parent / "page.arm")]) == 0
 
 
 def test_a_target_is_a_marker_and_the_kept_arm_stays(
-    config: Path, capsys: pytest.CaptureFixture[str]
+    config_dir: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     """'view --target' is documented as a marker, and it moved the kept simulated arm to the
     target (a later task then started with the gripper 16 mm above a cube)."""
@@ -128,7 +126,7 @@ def test_a_target_is_a_marker_and_the_kept_arm_stays(
     before = capsys.readouterr().out
     cmd = [sys.executable, "-c", "from armkit.cli import main; raise SystemExit(main())"]
     cmd += ["--scene", "board_001", "view", "--port", "0", "--target", "220", "0", "16"]
-    env = dict(os.environ, ARMKIT_CONFIG_DIR=str(config))
+    env = dict(os.environ, ARMKIT_CONFIG_DIR=str(config_dir))
     proc = subprocess.Popen(
         [*cmd, "--pitch", "-90"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
         env=env,

@@ -20,14 +20,13 @@ ROOT = Path(__file__).parents[2]
 
 
 @pytest.fixture(autouse=True)
-def config(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path / "config"))
+def _in_tmp_path(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Run in the test's own folder (files written to the working directory land there)."""
     monkeypatch.chdir(tmp_path)
-    return tmp_path / "config"
 
 
 def test_the_demo_shows_every_arm_and_scene_and_leaves_nothing_behind(
-    tmp_path: Path, config: Path, capsys: pytest.CaptureFixture[str]
+    tmp_path: Path, config_dir: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     assert main(["demo", "-o", "stack.png"]) == 0
     out = capsys.readouterr().out
@@ -40,7 +39,7 @@ def test_the_demo_shows_every_arm_and_scene_and_leaves_nothing_behind(
         assert scene.split("_")[-1] in out
     assert "red 15.5, green 40.5, blue 65.5" in out  # stacked, each one cube higher
     assert "placed object on bin" in out
-    assert not config.exists()  # nothing kept: every arm was in memory
+    assert not config_dir.exists()  # nothing kept: every arm was in memory
     from PIL import Image
 
     with Image.open(tmp_path / "stack.png") as img:
@@ -69,7 +68,7 @@ def test_every_suggested_command_works(
             assert (tmp_path / word).stat().st_size > 1000
 
 
-def test_the_suggested_follow_serves_until_ctrl_c(config: Path) -> None:
+def test_the_suggested_follow_serves_until_ctrl_c(config_dir: Path) -> None:
     cmd = [sys.executable, "-c", "from armkit.cli import main; raise SystemExit(main())"]
     cmd += [*shlex.split(FOLLOW)[1:], "--port", "0"]
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)

@@ -21,12 +21,6 @@ OMX = armkit.load_model("openmanipulator_x")
 ARMKIT = [sys.executable, "-c", "from armkit.cli import main; raise SystemExit(main())"]
 
 
-@pytest.fixture(autouse=True)
-def config(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path / "config"))
-    return tmp_path / "config"
-
-
 def test_a_snapshot_survives_the_channel() -> None:
     T = np.eye(4)
     T[:3, 3] = (0.2, -0.05, 0.03)
@@ -40,12 +34,12 @@ def test_a_snapshot_survives_the_channel() -> None:
         decode(encode(state), 5)
 
 
-def test_nobody_following_means_nothing_is_published(config: Path) -> None:
+def test_nobody_following_means_nothing_is_published(config_dir: Path) -> None:
     assert main(["joints", "30", "0", "0", "0"]) == 0
     assert not live_path(sim_state_file(OMX)).exists()
 
 
-def test_the_follower_sees_another_process_move_the_arm_as_it_moves(config: Path) -> None:
+def test_the_follower_sees_another_process_move_the_arm_as_it_moves(config_dir: Path) -> None:
     source = LiveSource(OMX, sim_state_file(OMX))
     np.testing.assert_array_equal(source.state().q, OMX.home)  # nothing kept yet: home
     assert follow_path(sim_state_file(OMX)).exists()
@@ -67,7 +61,7 @@ def test_the_follower_sees_another_process_move_the_arm_as_it_moves(config: Path
     assert not follow_path(sim_state_file(OMX)).exists()
 
 
-def test_gif_on_a_task_records_the_cube_carried(tmp_path: Path, config: Path) -> None:
+def test_gif_on_a_task_records_the_cube_carried(tmp_path: Path, config_dir: Path) -> None:
     out = tmp_path / "pick.gif"
     code = main(["--scene", "board_001", "pick", "green", "--gif", str(out), "--fps", "5"])
     assert code == 0
@@ -93,7 +87,11 @@ def test_gif_on_a_task_records_the_cube_carried(tmp_path: Path, config: Path) ->
     ],
 )
 def test_watch_refusals_move_nothing_and_write_nothing(
-    words: list[str], message: str, tmp_path: Path, config: Path, capsys: pytest.CaptureFixture[str]
+    words: list[str],
+    message: str,
+    tmp_path: Path,
+    config_dir: Path,
+    capsys: pytest.CaptureFixture[str],
 ) -> None:
     code = main([w.format(tmp=tmp_path) for w in words])
     err = capsys.readouterr().err
@@ -102,7 +100,9 @@ def test_watch_refusals_move_nothing_and_write_nothing(
     assert not list(tmp_path.rglob("*.gif"))
 
 
-def test_view_serves_the_job_in_real_time(config: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_view_serves_the_job_in_real_time(
+    config_dir: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     code = main(["joints", "20", "0", "0", "0", "--view", "--view-port", "0", "--view-wait", "0"])
     out = capsys.readouterr().out
     assert code == 0

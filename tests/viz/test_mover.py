@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 
 import numpy as np
 import pytest
@@ -12,8 +13,9 @@ from armkit.viz import DriverSource, Goal, Mover
 
 
 @pytest.fixture
-def arm() -> armkit.Arm:
-    return armkit.Arm("openmanipulator_x")  # in-memory simulator: no state file
+def arm() -> Iterator[armkit.Arm]:
+    with armkit.Arm("openmanipulator_x") as arm:  # in-memory simulator: no state file
+        yield arm
 
 
 def test_mover_reaches_the_latest_goal(arm: armkit.Arm) -> None:

@@ -20,12 +20,6 @@ from armkit.cli import main
 from armkit.viz import serve_address
 
 
-@pytest.fixture(autouse=True)
-def config(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path / "config"))
-    return tmp_path / "config"
-
-
 @pytest.fixture
 def busy() -> Iterator[int]:
     """A port on 127.0.0.1 that another program listens on."""
@@ -45,16 +39,16 @@ def busy() -> Iterator[int]:
     ],
 )
 def test_a_host_that_is_no_address_here_is_refused_in_one_line(
-    host: str, words: str, config: Path, capsys: pytest.CaptureFixture[str]
+    host: str, words: str, config_dir: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     assert main(["view", "--host", host, "--port", "0"]) == 2
     err = capsys.readouterr().err
     assert err.startswith("armkit: error: ") and words in err and err.count("\n") == 1
-    assert not config.exists()  # no simulated arm was opened
+    assert not config_dir.exists()  # no simulated arm was opened
 
 
 def test_a_busy_port_the_user_chose_is_refused(
-    busy: int, config: Path, capsys: pytest.CaptureFixture[str]
+    busy: int, config_dir: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     assert main(["view", "--port", str(busy)]) == 2
     err = capsys.readouterr().err
@@ -62,7 +56,7 @@ def test_a_busy_port_the_user_chose_is_refused(
         f"armkit: error: --port {busy} is busy on 127.0.0.1 (another program serves there); "
         "choose another port, or 0 for any free one\n"
     )
-    assert not config.exists()
+    assert not config_dir.exists()
 
 
 def test_a_busy_default_port_gives_way_to_the_next_free_one_and_says_so(busy: int) -> None:
@@ -73,9 +67,9 @@ def test_a_busy_default_port_gives_way_to_the_next_free_one_and_says_so(busy: in
         serve_address("127.0.0.1", 70000, flag="--view-port")
 
 
-def test_ctrl_c_stops_the_page_without_a_traceback(config: Path) -> None:
+def test_ctrl_c_stops_the_page_without_a_traceback(config_dir: Path) -> None:
     code = "from armkit.cli import main; raise SystemExit(main())"
-    env = dict(os.environ, ARMKIT_CONFIG_DIR=str(config))
+    env = dict(os.environ, ARMKIT_CONFIG_DIR=str(config_dir))
     proc = subprocess.Popen(
         [sys.executable, "-c", code, "view", "--port", "0"],
         stdout=subprocess.PIPE,

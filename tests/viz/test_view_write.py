@@ -15,12 +15,6 @@ from armkit.viz import DriverSource
 from armkit.viz.web import Teach, View
 
 
-@pytest.fixture(autouse=True)
-def config(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path / "config"))
-    return tmp_path / "config"
-
-
 def _deg(a: np.ndarray, b: np.ndarray) -> float:
     return float(np.max(np.abs(np.degrees(a - b))))
 

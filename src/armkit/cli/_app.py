@@ -67,6 +67,21 @@ examples:
 """
 
 
+def parser_of_process() -> argparse.ArgumentParser:
+    """The parser ``main`` uses, built once per process (building it imports every command
+    module and adds some 50 sub-parsers: about 40 ms, more than most commands take) and
+    again only if the registry of driver kinds it lists was replaced since. Parsing leaves
+    a parser as it was, so one parser serves every call of ``main``."""
+    kinds = driver_kinds()
+    if _BUILT.get("kinds") is not kinds:
+        _BUILT.update(kinds=kinds, parser=build_parser())
+    parser: argparse.ArgumentParser = _BUILT["parser"]
+    return parser
+
+
+_BUILT: dict[str, Any] = {}  # the parser parser_of_process built, and the kinds it lists
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The full parser with every command module's sub-commands."""
     parser = Parser(
@@ -130,7 +145,7 @@ class Given(argparse.Action):
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the CLI; user mistakes print one line on stderr and exit non-zero."""
-    parser = build_parser()
+    parser = parser_of_process()
     words = list(sys.argv[1:] if argv is None else argv)
     try:
         misplaced = _misplaced_global(parser, words)

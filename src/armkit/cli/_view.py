@@ -149,6 +149,7 @@ def run_view(args: argparse.Namespace) -> int:
     web = web_module()
     arm = _open_arm(args, model, scene)
     view = web.View(_source(arm, scene), scene=scene, **_view_options(args))
+    teach = None
     try:
         teach = web.Teach(view, arm)
         view.start()
@@ -163,6 +164,8 @@ def run_view(args: argparse.Namespace) -> int:
             _write_script(script, teach)
         return done
     finally:
+        if teach is not None:  # its mover's thread ends with the command (a screenshot too)
+            teach.close()
         view.close()
         arm.close()
 
