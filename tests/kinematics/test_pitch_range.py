@@ -85,3 +85,25 @@ def test_same_answers_as_the_search(name: str, n: int) -> None:
             branch += 1  # exactly at the edge two branches fit; 1e-4 rad inside, one
     print(f"{name}: {differ} nearer pitches, {branch} other branches at the same pitch, of {n}")
     assert differ <= n // 200 and branch <= n // 500, (differ, branch)
+
+
+@pytest.mark.parametrize("name", ["openmanipulator_x", "lynx6"])
+def test_the_float_boundary_search_is_the_lanes_one(name: str) -> None:
+    """``_boundary_fast`` (one branch in floats) against ``boundary_pitch`` on lanes, at
+    random plane points, both signs of r, and random wanted pitches (issue 29.3)."""
+    from armkit.kinematics._pitch_range import boundary_pitch
+
+    m = load_model(name)
+    chain = chain_of(m)
+    assert chain.family is not None and chain.boundary is not None
+    rng = np.random.default_rng(29)
+    r = rng.uniform(-0.5, 0.5, 3000)
+    z = rng.uniform(-0.3, 0.5, 3000)
+    want = rng.uniform(-math.pi, math.pi, 3000)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        gap, pitch = boundary_pitch(chain, chain.family, r, z, np.abs(r), want)
+    for i in range(3000):
+        g, p = chain.boundary(float(r[i]), float(z[i]), abs(float(r[i])), float(want[i]))
+        assert (g == gap[i]) or abs(g - gap[i]) < 1e-12
+        if math.isfinite(g):
+            assert abs(math.remainder(p - pitch[i], 2 * math.pi)) < 1e-9
