@@ -5,6 +5,7 @@ then 0.1 deg steps within reach, then bisection to 1e-4 rad."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -107,3 +108,23 @@ def test_the_float_boundary_search_is_the_lanes_one(name: str) -> None:
         assert (g == gap[i]) or abs(g - gap[i]) < 1e-12
         if math.isfinite(g):
             assert abs(math.remainder(p - pitch[i], 2 * math.pi)) < 1e-9
+
+
+def test_an_arm_whose_last_link_has_no_length(tmp_path: Path) -> None:
+    """The OpenManipulator-X with its tool point on the wrist axis (a fuzzed model file
+    found it): the boundary search has no circle; the arm still loads and solves."""
+    text = (Path(__file__).parents[2] / "src/armkit/model/arms/openmanipulator_x.toml").read_text()
+    path = tmp_path / "omx0.toml"
+    path.write_text(text.replace("length_mm = 126.0", "length_mm = 0.0"))
+    m = load_model(path)
+    assert chain_of(m).boundary is None
+    q = np.random.default_rng(5).uniform(m.lower, m.upper, (300, m.dof))
+    P = fk(m, q)[:, :3, 3]
+    out = ik_batch(m, P)
+    for i in range(300):
+        try:
+            res = ik(m, P[i])
+        except UnreachableError:
+            assert not out.ok[i]
+            continue
+        assert np.abs(fk(m, res.q)[:3, 3] - P[i]).max() < 1e-9

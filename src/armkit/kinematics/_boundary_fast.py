@@ -22,11 +22,16 @@ Boundary = Callable[[float, float, float, float], tuple[float, float]]
 _TWO_PI = 2.0 * math.pi
 
 
-def boundary_solver(fam: PlanarFamily, lower: Q, upper: Q, ranges: tuple[Range, ...]) -> Boundary:
+def boundary_solver(
+    fam: PlanarFamily, lower: Q, upper: Q, ranges: tuple[Range, ...]
+) -> Boundary | None:
     """boundary(r, z, rho, want) -> (gap, pitch [rad]): ``boundary_pitch`` for one branch
-    (plane radius r (signed), height z, horizontal distance rho [m]; want [rad])."""
+    (plane radius r (signed), height z, horizontal distance rho [m]; want [rad]); None
+    where the last link has no length (the tool point on the wrist axis: no circle)."""
     (c1x, c1z), ((v1x, v1z), (v2x, v2z), (v3x, v3z)) = fam.c1, fam.links
     l1, l2, l3 = fam.l1, fam.l2, math.hypot(v3x, v3z)
+    if l3 < 1e-12:
+        return None
     (j1, j2, j3), (s1, s2, s3) = fam.planar, fam.sigma
     k = fam.phi0 - math.atan2(v3z, v3x)
     cK, sK, ck, sk = math.cos(k), math.sin(k), math.cos(k) / l3, math.sin(k) / l3

@@ -71,7 +71,8 @@ class Chain:
             (``_closed_fast``); None off the family.
         free: on a family arm with 3 planar joints, the closed form without a pitch (it
             chooses one; with 2 the pitch follows from the position), else None.
-        boundary: with ``free``, its fallback's boundary search in floats (``_boundary_fast``).
+        boundary: with ``free``, its fallback's boundary search in floats (``_boundary_fast``;
+            None where the last link has no length).
         shift: on a family arm whose base axis is off the world origin (a URDF's root a
             little beside it), that axis's (x, y) [m]: the family, ``home_pitch`` and the
             closed-form solvers work in the frame moved there (``based``), else None.

@@ -30,7 +30,8 @@ def limited(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
     if isinstance(ways, str):
         return []
     want, rho, gap, pitch = preferred(chain, seed), math.hypot(x, y), math.inf, 0.0
-    assert chain.boundary is not None
+    if chain.boundary is None:  # no last link: no boundary circle to search
+        return []
     for r, q0 in ways:
         if base_fits(chain, fam, q0, FLOATS):
             g, at = chain.boundary(r, z, rho, want)

@@ -123,6 +123,8 @@ def boundary_pitch(
     ``FLOATS`` (the scalar solver's fallback, ``_closed_scalar.limited``)."""
     tx, tz = r - fam.c1[0], z - fam.c1[1]
     (v3x, v3z), l3 = fam.links[2], math.hypot(*fam.links[2])
+    if l3 < 1e-12:  # no last link: no boundary circle (as ``_boundary_fast``)
+        return math.inf + 0.0 * tx, 0.0 * tx
     k = fam.phi0 - math.atan2(v3z, v3x)  # the approach's angle in the plane less link 3's
     ck, sk, ranges = math.cos(k) / l3, math.sin(k) / l3, chain.ranges
 
