@@ -12,6 +12,13 @@ moves between consecutive strokes (not from or back to a home position). The
 pen-down lengths of both, from two independent SVG flattenings, should agree.
 "file order" is the travel of the strokes as the file lists them.
 
+The planning-time table (``--sizes 1000 3000 10000 30000``): big drawings made
+by benchmarks/big_svg.py, each planned whole by armkit (``plan_draw`` on the
+drawing scene with the OpenManipulator-X: read, merged, ordered, IK of every
+point, every stroke and pen-up move checked for clearance) and by vpype
+(``read linemerge linesort``), runs interleaved, ``--repeats`` each; wall time
+mean, median and max, and both pen-up travels. ``--only-sizes`` prints only it.
+
 The second table draws the same files fitted onto the A5 sheet of the shipped
 ``drawing`` scene with the simulated OpenManipulator-X and Lynx6 (the pen
 picked up from its cradle and put back), and measures what the simulated pen drew
@@ -27,7 +34,9 @@ armkit. This file is both the driver (armkit's interpreter) and the worker
 from __future__ import annotations
 
 import argparse
+import itertools
 import json
+import os
 import subprocess
 import sys
 import tempfile
@@ -64,6 +73,23 @@ def worker(files: list[str], out_path: str) -> None:
     Path(out_path).write_text(json.dumps(out))
 
 
+def time_worker(path: str, out_path: str) -> None:
+    """vpype ``read linemerge linesort`` on one file: its wall time [s] and pen-up [mm]."""
+    import vpype_cli
+
+    t0 = time.perf_counter()
+    doc = vpype_cli.execute(f"read -m '{path}' linemerge linesort")
+    secs = time.perf_counter() - t0
+    lines = [np.array([[p.real, p.imag] for p in line]) * MM_PER_PX
+             for layer in doc.layers.values() for line in layer]  # fmt: skip
+    Path(out_path).write_text(json.dumps({"seconds": secs, "pen_up": _travel(lines)}))
+
+
+def _travel(lines: list) -> float:  # type: ignore[type-arg]
+    """Pen-up travel between consecutive lines (the same measure for both)."""
+    return float(sum(np.hypot(*(b[0] - a[-1])) for a, b in itertools.pairwise(lines)))
+
+
 def ensure_venv() -> Path:
     """vpype's interpreter; creates the venv and installs vpype on first use."""
     python = VENV / "bin" / "python"
@@ -79,6 +105,66 @@ def run_vpype(python: Path, files: list[str]) -> dict:  # type: ignore[type-arg]
         out = Path(tmp) / "out.json"
         subprocess.run([str(python), __file__, "--worker", out, *files], check=True)
         return json.loads(out.read_text())  # type: ignore[no-any-return]
+
+
+def _vpype_time(python: Path, path: Path) -> tuple[float, float]:
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "out.json"
+        subprocess.run([str(python), __file__, "--time-worker", out, str(path)], check=True)
+        got = json.loads(out.read_text())
+        return float(got["seconds"]), float(got["pen_up"])
+
+
+def _armkit_time(path: Path) -> tuple[float, float, int]:
+    """armkit planning ``path`` whole (as ``armkit draw svg --dry-run``): [s], pen-up [mm], strokes."""
+    from armkit import Arm
+    from armkit.drawing import plan_draw
+    from armkit.scene import load_scene
+    from armkit.sim import World
+
+    scene = load_scene("drawing")
+    with Arm("openmanipulator_x", "sim", world=World()) as arm:
+        t0 = time.perf_counter()
+        job = plan_draw(arm, scene, path)
+        secs = time.perf_counter() - t0
+    strokes = [s * 1e3 for s in job.plan.strokes]
+    return secs, _travel(strokes), len(strokes)
+
+
+def scale_table(sizes: list[int], repeats: int) -> None:
+    """Planning time and pen-up travel against the number of strokes, vpype beside."""
+    from big_svg import big_svg
+
+    from armkit.cli._table import table
+
+    python = ensure_venv()
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        warm = Path(tmp) / "warm.svg"
+        warm.write_text(big_svg(50))
+        _armkit_time(warm)  # imports (svgelements, ...) outside the timing, as vpype's
+        for n in sizes:
+            f = Path(tmp) / f"big{n}.svg"
+            f.write_text(big_svg(n))
+            ours, theirs = [], []
+            for _ in range(repeats):  # interleaved
+                ours.append(_armkit_time(f))
+                theirs.append(_vpype_time(python, f))
+            a, v = np.array([o[0] for o in ours]), np.array([t[0] for t in theirs])
+            up, vup = ours[0][1], theirs[0][1]
+            rows.append([n, ours[0][2], f"{a.mean():.2f}", f"{np.median(a):.2f}", f"{a.max():.2f}",
+                         f"{v.mean():.2f}", f"{np.median(v):.2f}", f"{v.max():.2f}",
+                         f"{np.median(a) / np.median(v):.2f}", f"{up:.0f}", f"{vup:.0f}",
+                         f"{up / vup:.2f}"])  # fmt: skip
+    print(f"\nplanning a drawing of N strokes (benchmarks/big_svg.py), {repeats} runs each, "
+          "interleaved; wall s; pen-up mm; targets: time <= vpype's, pen-up <= 0.85 x vpype's")  # fmt: skip
+    heads = ["N", "strokes planned", "armkit mean", "median", "max", "vpype mean", "median",
+             "max", "time ratio", "armkit pen-up", "vpype pen-up", "pen-up ratio"]  # fmt: skip
+    print(table(heads, rows))
+    if len(sizes) > 1:
+        med = [float(r[3]) for r in rows]
+        k = np.polyfit(np.log(sizes), np.log(med), 1)[0]
+        print(f"armkit planning time grows as N^{k:.2f} over N = {sizes[0]}..{sizes[-1]}")
 
 
 def armkit_row(path: str) -> dict:  # type: ignore[type-arg]
@@ -132,10 +218,20 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--files", nargs="+", default=FILES, help="SVG files")
     parser.add_argument("--no-vpype", action="store_true", help="only the simulated drawings")
+    parser.add_argument("--sizes", type=int, nargs="*", default=[1000, 3000, 10000, 30000],
+                        help="strokes of the planning-time table (none: no table)")  # fmt: skip
+    parser.add_argument("--repeats", type=int, default=3, help="runs per size and tool")
+    parser.add_argument("--only-sizes", action="store_true", help="only the planning-time table")
     args = parser.parse_args()
     sys.path.insert(0, str(HERE.parent / "src"))
+    sys.path.insert(0, str(HERE))
     from armkit.cli._table import table
 
+    print(f"load average {' '.join(f'{v:.2f}' for v in os.getloadavg())} ({os.cpu_count()} cores)")
+    if args.sizes:
+        scale_table(args.sizes, args.repeats)
+    if args.only_sizes:
+        return 0
     files = [str(Path(f).resolve()) for f in args.files]
     if not args.no_vpype:
         vpype_table(files)
@@ -143,6 +239,7 @@ def main() -> int:
              "pen up mm", "lifts", "simulated s", "wall s"]  # fmt: skip
     print("\nsimulated drawings on the drawing scene's A5 sheet (pen speed 30 mm/s)")
     print(table(heads, sim_rows(files)))
+    print(f"load average {' '.join(f'{v:.2f}' for v in os.getloadavg())} ({os.cpu_count()} cores)")
     return 0
 
 
@@ -190,7 +287,9 @@ def vpype_table(files: list[str]) -> None:
 
 
 if __name__ == "__main__":
-    if len(sys.argv) >= 3 and sys.argv[1] == "--worker":
+    if len(sys.argv) >= 3 and sys.argv[1] == "--time-worker":
+        time_worker(sys.argv[3], sys.argv[2])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "--worker":
         worker(sys.argv[3:], sys.argv[2])
     else:
         sys.exit(main())

@@ -17,7 +17,8 @@ from collections.abc import Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from ._tour import improve
+from ._grid import EXACT
+from ._tour import Near, improve
 
 F64 = NDArray[np.float64]
 IntArray = NDArray[np.intp]
@@ -32,6 +33,7 @@ def order_strokes(strokes: Sequence[F64], start: F64 | None = None, passes: int 
         return []
     out = best_out = list(strokes)
     best = np.inf
+    near = None
     for rounds in range(ROUNDS):  # a re-entered loop has new ends: search again
         heads = np.array([s[0] for s in out])
         tails = np.array([s[-1] for s in out])
@@ -39,8 +41,9 @@ def order_strokes(strokes: Sequence[F64], start: F64 | None = None, passes: int 
             order, flip = greedy_order(heads, tails, start)
         else:
             order, flip = np.arange(n), np.zeros(n, dtype=bool)
-        if n > 1:
-            order, flip = improve(heads, tails, order, flip, start, passes)
+        if n > 1:  # the near ends of the first round serve the next ones (re-entered loops)
+            near = Near.of(heads, tails) if near is None or n <= EXACT else near
+            order, flip = improve(heads, tails, order, flip, start, passes, near)
         out = reloop(
             [out[i][::-1] if f else out[i] for i, f in zip(order, flip, strict=True)], start
         )

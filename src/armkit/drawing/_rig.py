@@ -18,6 +18,7 @@ from ..motion import JointPath, PathError, plan_path
 from ..scene import Collision, Scene, Sheet, check_clear, joint_sweep
 from ._errors import DrawingError
 from ._reach import Run, densify
+from ._rig_batch import strokes_at_once
 from ._segments_job import JointMove, PathMove, Segment, end_q, stack
 
 F64 = NDArray[np.float64]
@@ -53,7 +54,14 @@ class Rig:
 
 
 def plan_strokes(rig: Rig, runs: list[Run], q0: F64) -> list[Segment]:
-    """Transit and stroke for every run, in order, from joints ``q0`` [rad]."""
+    """Transit and stroke for every run, in order, from joints ``q0`` [rad]: in
+    batches where they answer (``strokes_at_once``), else ``plan_strokes_loop``."""
+    fast = strokes_at_once(rig, runs, q0)
+    return fast if fast is not None else plan_strokes_loop(rig, runs, q0)
+
+
+def plan_strokes_loop(rig: Rig, runs: list[Run], q0: F64) -> list[Segment]:
+    """``plan_strokes`` one stroke at a time (the reference; it says why a plan fails)."""
     segments: list[Segment] = []
     for k, run in enumerate(runs, 1):
         above = run.world[0] + rig.sheet.normal * rig.pen_up

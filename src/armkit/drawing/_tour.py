@@ -29,22 +29,35 @@ Bools = NDArray[np.bool_]
 NEIGHBOURS = 10
 ALL_PAIRS = 150  # up to this many strokes every end is a candidate of every other
 OR_LENGTHS = (1, 2, 3)
+MIN_GAIN = 0.002  # a pass pair gaining less than this share of the travel is the last
 
 
 def improve(
-    heads: F64, tails: F64, order: IntArray, flip: Bools, start: F64 | None, passes: int
+    heads: F64,
+    tails: F64,
+    order: IntArray,
+    flip: Bools,
+    start: F64 | None,
+    passes: int,
+    near: Near | None = None,
 ) -> tuple[IntArray, Bools]:
-    """2-opt and Or-opt passes, alternating, until neither gains or ``passes`` run out."""
-    n = len(order)
-    near = _Near.of(np.vstack([heads, tails]), n)
+    """2-opt and Or-opt passes, alternating, until a pair of them gains less than
+    ``MIN_GAIN`` of the pen-up travel or ``passes`` run out (so the work grows as
+    N log N: a bounded number of passes, each sorting its candidates). ``near``:
+    the candidate pairs of ends (``Near.of``), found once for several calls."""
+    near = near if near is not None else Near.of(heads, tails)
     order, flip = order.copy(), flip.copy()
+    before = np.inf
     for _ in range(passes):
         gained = False
         for step in (_two_opt_pass, _or_opt_pass):
             A, B = _tour_points(heads, tails, order, flip, start)
             gained |= step(order, flip, A, B, _ends(order, flip, near, A, B))
-        if not gained:
+        A, B = _tour_points(heads, tails, order, flip, start)
+        length = float(_dist(B[:-1], A[1:]).sum())
+        if not gained or length > before * (1.0 - MIN_GAIN):
             break
+        before = length
     return order, flip
 
 
@@ -65,7 +78,7 @@ def _dist(p: F64, q: F64) -> F64:
 
 
 @dataclass(frozen=True)
-class _Near:
+class Near:
     """Pairs of near ends of different strokes: e, f (end ids: k < n head of k,
     else tail of k - n) and their distance d [m]."""
 
@@ -74,7 +87,9 @@ class _Near:
     d: F64
 
     @classmethod
-    def of(cls, points: F64, n: int) -> _Near:
+    def of(cls, heads: F64, tails: F64) -> Near:
+        """The near ends of strokes with these heads and tails (N, 2) [m]."""
+        points, n = np.vstack([heads, tails]), len(heads)
         k = 2 * n - 1 if n <= ALL_PAIRS else NEIGHBOURS
         near = nearest_k(points, k)
         e = np.repeat(np.arange(2 * n), near.shape[1])
@@ -85,7 +100,7 @@ class _Near:
 
 
 def _ends(
-    order: IntArray, flip: Bools, near: _Near, A: F64, B: F64
+    order: IntArray, flip: Bools, near: Near, A: F64, B: F64
 ) -> tuple[IntArray, Bools, IntArray, Bools]:
     """Near pairs of ends as (position of e, e is an exit, position of f, f is an exit),
     only those closer than e's present pen-up move (no gain is possible otherwise)."""
@@ -132,11 +147,42 @@ def _or_opt_pass(order: IntArray, flip: Bools, A: F64, B: F64, ends: tuple) -> b
     forward = _dist(B[q], A[p]) + _dist(B[e], A[q + 1])
     backward = _dist(B[q], B[e]) + _dist(A[p], A[q + 1])
     gain = removal + _dist(B[q], A[q + 1]) - np.where(r, backward, forward)
-    lo, hi = np.minimum(p - 1, q), np.maximum(e, q)
-    chosen = _disjoint(lo, hi, gain, n, payload=np.column_stack([p, q, size, r]))
-    for pk, qk, lk, rk in chosen:
-        _move(order, flip, pk, qk, lk, bool(rk))
+    chosen = _independent(p, q, size, r, gain, n)
+    if chosen:
+        _apply_moves(order, flip, chosen)
     return bool(chosen)
+
+
+def _independent(p: IntArray, q: IntArray, size: IntArray, r: Bools, gain: F64, n: int) -> list:  # type: ignore[type-arg]
+    """The improving Or-opt moves, best first, each touching positions (the moved
+    strokes, their neighbours p-1 and e+1, and q, q+1) no other chosen move touches:
+    their gains add up, as no stroke any of them reads is moved or turned by another."""
+    touched = np.zeros(n + 2, dtype=bool)
+    chosen = []
+    good = np.flatnonzero(gain > 1e-12)
+    for k in good[np.argsort(-gain[good], kind="stable")].tolist():
+        a, b, at = int(p[k]), int(p[k] + size[k] - 1), int(q[k])
+        if touched[a - 1 : b + 2].any() or touched[at] or touched[at + 1]:
+            continue
+        touched[a - 1 : b + 2] = True
+        touched[at] = touched[at + 1] = True
+        chosen.append((a, at, int(size[k]), bool(r[k])))
+    return chosen
+
+
+def _apply_moves(order: IntArray, flip: Bools, moves: list) -> None:  # type: ignore[type-arg]
+    """Or-opt moves (p, q, L, reversed) applied at once: each run of L strokes at
+    positions p.. (1-based) goes between positions q and q + 1, by sorting keys."""
+    key = np.arange(1, len(order) + 1, dtype=np.float64)
+    turned = flip.copy()
+    for p, q, size, rev in moves:
+        ranks = np.arange(1, size + 1) / (size + 1)
+        key[p - 1 : p - 1 + size] = q + (ranks[::-1] if rev else ranks)
+        if rev:
+            turned[p - 1 : p - 1 + size] = ~turned[p - 1 : p - 1 + size]
+    new = np.argsort(key, kind="stable")
+    order[:] = order[new]
+    flip[:] = turned[new]
 
 
 def _or_candidates(ends: tuple, n: int) -> tuple[IntArray, IntArray, IntArray, Bools]:  # type: ignore[type-arg]
@@ -169,8 +215,9 @@ def _or_candidates(ends: tuple, n: int) -> tuple[IntArray, IntArray, IntArray, B
     )
 
 
-def _move(order: IntArray, flip: Bools, p: int, q: int, L: int, rev: bool) -> None:
-    """Move positions p..p+L-1 after position q (1-based positions), reversed if ``rev``."""
+def move(order: IntArray, flip: Bools, p: int, q: int, L: int, rev: bool) -> None:
+    """Move positions p..p+L-1 after position q (1-based positions), reversed if
+    ``rev``, in place (one move; the reference of ``_apply_moves``)."""
     seg, fseg = order[p - 1 : p - 1 + L].copy(), flip[p - 1 : p - 1 + L].copy()
     if rev:
         seg, fseg = seg[::-1], ~fseg[::-1]

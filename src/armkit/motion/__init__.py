@@ -10,6 +10,9 @@ from .._clock import clock_of as clock_of
 from .._polyline import distance_to_polyline as distance_to_polyline
 from ._approach import approach as approach
 from ._approach import retreat as retreat
+from ._chained import batchable as batchable
+from ._chained import chained_ik as chained_ik
+from ._chained import reachable_at as reachable_at
 from ._paths import arc as arc
 from ._paths import circle as circle
 from ._paths import corners as corners
@@ -19,6 +22,7 @@ from ._paths import polyline as polyline
 from ._paths import rectangle as rectangle
 from ._plan import JointPath as JointPath
 from ._plan import PathError as PathError
+from ._plan import deviation as deviation
 from ._plan import plan_path as plan_path
 from ._profiles import Quintic as Quintic
 from ._profiles import Trapezoid as Trapezoid

@@ -134,8 +134,7 @@ def _check_between(model: ArmModel, p: F64, q: F64, tolerance: float, free: bool
     no pitch was given (the solver chose one per point)."""
     if p.shape[0] < 2:
         return
-    mid = fk(model, (q[:-1] + q[1:]) / 2.0)[:, :3, 3]
-    off = _distance_to_segments(mid, p[:-1], p[1:])
+    off = deviation(model, p, q)
     bad = np.flatnonzero(off > tolerance)
     if bad.size:
         i = int(bad[0])
@@ -157,6 +156,13 @@ def _check_between(model: ArmModel, p: F64, q: F64, tolerance: float, free: bool
             reason="discontinuous",
             index=i,
         )
+
+
+def deviation(model: ArmModel, p: F64, q: F64) -> F64:
+    """How far [m] the tool strays, halfway in joint space between samples, from each
+    piece of the path ``p`` (N, 3) [m] followed with joints ``q`` (N, dof): shape (N - 1,)."""
+    mid = fk(model, (q[:-1] + q[1:]) / 2.0)[:, :3, 3]
+    return _distance_to_segments(mid, p[:-1], p[1:])
 
 
 def _distance_to_segments(x: F64, a: F64, b: F64) -> F64:

@@ -13,6 +13,7 @@ from ._clearance import Collision as Collision
 from ._clearance import Held as Held
 from ._clearance import check_clear as check_clear
 from ._clearance import joint_sweep as joint_sweep
+from ._clearance import joint_sweeps as joint_sweeps
 from ._container import Container as Container
 from ._cube import Cube as Cube
 from ._cube import cube_colour as cube_colour

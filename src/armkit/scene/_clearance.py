@@ -253,3 +253,15 @@ def joint_sweep(q_from: ArrayLike, targets: ArrayLike, step: float = SWEEP_STEP)
         out.append(prev + (q - prev) * (np.arange(1, n + 1) / n)[:, None])
         prev = q
     return np.vstack(out)
+
+
+def joint_sweeps(q_from: F64, q_to: F64, step: float = SWEEP_STEP) -> F64:
+    """The poses of K separate joint moves, row k from ``q_from[k]`` to ``q_to[k]``
+    (K, dof) [rad], each as ``joint_sweep(q_from[k], q_to[k])`` gives them, stacked
+    (its target in, its start out), shape (N, dof)."""
+    d = q_to - q_from
+    n = np.maximum(1, np.ceil(np.max(np.abs(d), axis=1) / step)).astype(np.intp)
+    move = np.repeat(np.arange(len(d)), n)
+    j = np.arange(len(move)) - np.repeat(np.cumsum(n) - n, n) + 1
+    out: F64 = q_from[move] + d[move] * (j / n[move])[:, None]
+    return out
