@@ -14,7 +14,7 @@ from armkit import InputError, UnreachableError, fk, ik, ik_batch, load_model
 from armkit.interchange import urdf_of
 from armkit.kinematics import closed_form
 from armkit.kinematics._chain import chain_of
-from armkit.kinematics._wrist import solve_wrist_batch
+from armkit.kinematics._wrist_batch import solve_wrist_batch
 from armkit.model import ArmModel
 
 PUMA = Path(__file__).parents[2] / "src/armkit/model/arms/puma560.toml"

@@ -21,7 +21,7 @@ from ._numeric import solve_many, solve_one
 from ._pitch_range import free_batch, preferred
 from ._result import IKBatchResult, IKResult
 from ._target import Target
-from ._wrist import solve_wrist_batch
+from ._wrist_batch import solve_wrist_batch
 
 F64 = NDArray[np.float64]
 MethodName = Literal["auto", "analytic", "lm", "ccd", "jacobian", "random"]
