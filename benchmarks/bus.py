@@ -32,6 +32,7 @@ Times are the best of ``--repeats`` interleaved runs of ``--cycles`` cycles
 from __future__ import annotations
 
 import argparse
+import os
 import time
 from collections.abc import Callable
 from typing import Any
@@ -239,6 +240,7 @@ def print_table(
 
 
 def main() -> None:
+    print(f"load average {' '.join(f'{v:.2f}' for v in os.getloadavg())} ({os.cpu_count()} cores)")
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cycles", type=int, default=500)
     parser.add_argument("--repeats", type=int, default=7)

@@ -17,6 +17,7 @@ Run: .venv/bin/python benchmarks/check_run.py [N scripts per arm, default 500]
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 import tempfile
 import time
@@ -103,6 +104,7 @@ def table(tallies: list[Tally]) -> str:
 
 
 def main() -> int:
+    print(f"load average {' '.join(f'{v:.2f}' for v in os.getloadavg())} ({os.cpu_count()} cores)")
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("n", nargs="?", type=int, default=500, help="scripts per arm")
     parser.add_argument("--arm", choices=ARMS, action="append", help="only this arm")

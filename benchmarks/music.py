@@ -25,6 +25,7 @@ Run: .venv/bin/python benchmarks/music.py
 
 from __future__ import annotations
 
+import os
 import time
 from pathlib import Path
 
@@ -140,6 +141,7 @@ def intervals() -> None:
 
 
 def main() -> None:
+    print(f"load average {' '.join(f'{v:.2f}' for v in os.getloadavg())} ({os.cpu_count()} cores)")
     print(
         f"{'arm':18s} {'tune':18s} {'tempo':>5s} {'notes':>5s} {'refused':>7s} "
         f"{'rms ms':>6s} {'max ms':>6s} {'missed':>6s} {'extra':>5s} {'on bar ms':>9s} "

@@ -71,6 +71,7 @@ def drift(model: ArmModel, seed: int, targets: list[F64], kind: str, workdir: Pa
 
 
 def main() -> None:
+    print(f"load average {' '.join(f'{v:.2f}' for v in os.getloadavg())} ({os.cpu_count()} cores)")
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seeds", type=int, default=5, help="simulated units (default 5)")
     parser.add_argument("--moves", type=int, default=20, help="moves per unit (default 20)")

@@ -19,6 +19,7 @@ Run: .venv/bin/python benchmarks/paths.py
 from __future__ import annotations
 
 import math
+import os
 import time
 from collections.abc import Callable
 
@@ -96,6 +97,7 @@ def floor(model: ArmModel, ideal: F64, pitch: float) -> float:
 
 
 def main() -> None:
+    print(f"load average {' '.join(f'{v:.2f}' for v in os.getloadavg())} ({os.cpu_count()} cores)")
     cols = ("rms mm", "max mm", "time s", "x naive", "floor")
     head = f"{'arm':<18} {'shape':<11} {'mode':<12} " + " ".join(f"{c:>7}" for c in cols)
     print(head)

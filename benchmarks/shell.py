@@ -73,6 +73,7 @@ class TimedDriver:
 
 
 def main() -> None:
+    print(f"load average {' '.join(f'{v:.2f}' for v in os.getloadavg())} ({os.cpu_count()} cores)")
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=200, help="timings per command")
     args = parser.parse_args()

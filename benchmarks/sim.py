@@ -109,6 +109,7 @@ def realtime_lag(draw: bool, seconds: float = 3.0) -> F64:
 
 
 def main() -> None:
+    print(f"load average {' '.join(f'{v:.2f}' for v in os.getloadavg())} ({os.cpu_count()} cores)")
     os.environ.setdefault("ARMKIT_CONFIG_DIR", tempfile.mkdtemp(prefix="armkit-bench-"))
     print("simulated seconds per real second, each arm's own driver on its simulated device")
     head = f"{'arm':<18} {'idle':>8} {'drawing':>8} {'drawn s':>8}"

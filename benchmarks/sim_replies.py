@@ -68,6 +68,7 @@ def measure(requests: int = REQUESTS) -> tuple[np.ndarray, int, str, float]:
 
 
 def main() -> None:
+    print(f"load average {' '.join(f'{v:.2f}' for v in os.getloadavg())} ({os.cpu_count()} cores)")
     os.environ.setdefault("ARMKIT_CONFIG_DIR", os.path.join(os.getcwd(), ".bench-config"))
     trips, timeouts, summary, timeout_ms = measure()
     p50, p999 = np.percentile(trips * 1000.0, [50, 99.9])

@@ -53,9 +53,14 @@ SWING = """
 import sys, time
 import numpy as np
 import armkit
-from armkit.connect import open_driver
+from armkit.connect import open_driver, sim_state_file, world_of
+from armkit.viz.live import publish_live
 model = armkit.load_model("openmanipulator_x")
-with armkit.Arm(model, open_driver(model, keep=True)) as arm:
+driver = open_driver(model, keep=True)
+world = world_of(driver)
+for truth in world.arms():  # published live as the CLI's kept arm is (cli/_kept.py)
+    publish_live(world, truth, sim_state_file(model))
+with armkit.Arm(model, driver) as arm:
     end = time.monotonic() + float(sys.argv[1])
     i = 0
     while time.monotonic() < end:
@@ -152,6 +157,10 @@ def _measure(what: str, source: StateSource, rate: float, swing: Callable[[float
         frames = browser.frames[first_frame:]
     lag = np.array(_lags(frames, sent, start)) * 1000.0
     moving = [t for t in shown if t >= start]
+    if len(moving) < 2 or moving[-1] <= moving[0]:
+        raise SystemExit(
+            f"{what} at {rate:g} Hz: the view saw {len(moving)} updates while the arm moved"
+        )
     span = moving[-1] - moving[0]  # while the arm moved (the other process starts first)
     return Row(
         what,
@@ -183,6 +192,7 @@ def main() -> None:
         "--follow-rates", type=float, nargs="+", default=[30.0, 45.0], help="[Hz], --follow"
     )
     args = parser.parse_args()
+    print(f"load average {' '.join(f'{v:.2f}' for v in os.getloadavg())} ({os.cpu_count()} cores)")
     print("armkit view following the simulated OpenManipulator-X moving in real time")
     print(f"{args.seconds:.0f} s of motion per row; lag = page receives - state read [ms]")
     print("(other process: - state published by the process that moves the arm)\n")
