@@ -65,7 +65,7 @@ def board_task(arm_name: str, shift: float = 0.0, seed: int = 0) -> tuple[bool, 
     assert tasks.attached(arm) is truth
     t0 = world.now()
     try:
-        tasks.run_checked(arm, plan, poses=False)
+        tasks.run_verified(arm, plan, poses=False)
         ok = True
     except ArmkitError:
         ok = False

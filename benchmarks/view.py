@@ -40,7 +40,7 @@ import zstandard
 
 import armkit
 from armkit.connect import sim_state_file
-from armkit.viz import DriverSource, Goal, LiveSource, Mover, StateSource
+from armkit.viz import ArmSource, Goal, LiveSource, Mover, StateSource
 from armkit.viz.web import Chromium, View
 from armkit.viz.web._picture import connected_client, wait_for_camera
 
@@ -105,7 +105,7 @@ def measure(rate: float, seconds: float) -> Row:
             i += 1
         mover.close()
 
-    return _measure("same process", DriverSource(arm.model, arm.driver), rate, swing)
+    return _measure("same process", ArmSource(arm), rate, swing)
 
 
 def measure_follow(rate: float, seconds: float) -> Row:

@@ -22,7 +22,7 @@ from armkit.scene import load_scene
 
 scene = load_scene("search_002")
 with Arm("lynx6", "sim") as arm:
-    result = tasks.search(arm, scene, start=math.radians(30), stop=math.radians(120), into="bin")
+    result = tasks.search(arm, scene, start=30.0, stop=120.0, into="bin")  # deg
     print("\n".join(result.lines()))
     truth = scene.cube("object").position * 1000
     print(f"the object really was at ({truth[0]:.1f}, {truth[1]:.1f}) mm")

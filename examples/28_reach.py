@@ -12,5 +12,5 @@ from armkit.scene import load_scene
 
 scene = load_scene("reach_003")
 with Arm("lynx6", "sim") as arm:
-    result = tasks.reach(arm, scene, height=0.11, near=0.06, shakes=3)
+    result = tasks.reach(arm, scene, height=110.0, near=60.0, shakes=3)  # mm
     print("\n".join(result.lines()))

@@ -12,6 +12,7 @@ from contextlib import redirect_stderr, redirect_stdout
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pytest
 
 from armkit import ArmkitError
@@ -54,7 +55,7 @@ def test_kinds_have_different_names_and_their_sections_are_the_model_files() -> 
 def test_every_kind_has_every_part(kind: DriverKind) -> None:
     assert kind.device and kind.title and kind.traits
     assert kind.traits <= {"timed", "hobby", "smart"} and kind.port in ("serial", "usb")
-    assert callable(kind.open) and callable(kind.simulate)
+    assert callable(kind.open) and callable(kind.simulate) and callable(kind.forecast)
     # a serial device can be served on a pseudo-terminal; a USB board cannot
     assert (kind.emulate is not None) == (kind.port == "serial")
     # a kind whose unit cannot report its position is calibrated by a person
@@ -69,6 +70,25 @@ def test_every_kind_runs_its_driver_on_its_simulated_device(kind: DriverKind) ->
     try:
         assert world_of(driver) is not None
         assert driver.read().shape == (model.dof,)
+    finally:
+        driver.close()
+
+
+@pytest.mark.parametrize("kind", driver_kinds(), ids=lambda kind: kind.name)
+def test_every_kind_forecasts_without_a_device_as_its_driver_does(kind: DriverKind) -> None:
+    # ``armkit check`` times a script with the kind's forecasts; ``Arm`` with its driver's
+    model = load_model(_shipped_arm_of(kind))
+    alone = kind.forecast(model, None)
+    driver = open_driver(model, kind.name, "emu")
+    try:
+        q0, q1 = model.home, model.home + np.radians(10.0)
+        a, b = alone.forecast(q0, q1), driver.forecast(q0, q1)
+        assert (a.seconds, a.motor_s) == pytest.approx((b.seconds, b.motor_s))
+        np.testing.assert_allclose(a.q, b.q)
+        g = model.gripper
+        closing = (g.width_max, g.width_min)
+        assert alone.forecast_grip(*closing) == pytest.approx(driver.forecast_grip(*closing))
+        assert alone.moves == driver.moves and {driver.moves} == set(kind.traits)
     finally:
         driver.close()
 

@@ -5,8 +5,6 @@ with the command that does it. The tasks' Python results are unchanged. Simulate
 
 from __future__ import annotations
 
-import math
-
 import pytest
 
 from armkit import Arm, tasks
@@ -79,9 +77,9 @@ def test_the_help_says_the_exit_statuses(capsys: pytest.CaptureFixture[str]) -> 
 
 def test_the_tasks_still_return_their_results_when_nothing_is_found() -> None:
     arm = Arm("lynx6", "sim", world=World())
-    off = {"start": math.radians(100), "stop": math.radians(120)}
+    off = {"start": 100.0, "stop": 120.0}
     result = tasks.search(arm, load_scene("search_002"), **off)
     assert not result.found and result.plan is None and len(result.readings) == 5
     assert result.lines()[-1] == "nothing found within 30 cm along the arc"
-    hand = tasks.reach(arm, load_scene("reach_003"), height=0.3)
+    hand = tasks.reach(arm, load_scene("reach_003"), height=300.0)
     assert not hand.found and hand.lines()[-1] == "no hand within 30 cm along the arc"

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 from owi_wire import sent
 
+from armkit import Arm
 from armkit._errors import UnreachableError
 from armkit.cli import main
 from armkit.drivers.timed import TimedDriver, load_state, state_path
@@ -51,7 +52,7 @@ def test_pick_place_grasps_at_a_and_releases_at_b(
     owi: ArmModel, driver: TimedDriver, sim: OwiSim
 ) -> None:
     a, b = np.array([0.15, 0.10, 0.08]), np.array([0.15, -0.10, 0.08])
-    pick_place(owi, driver, a, b, lift_m=0.04)
+    pick_place(Arm(owi, driver), a * 1000.0, b * 1000.0, lift=40.0)
     grips = [c for c in sent(sim) if c in ("020000", "010000")]
     assert grips == ["020000", "010000", "020000"]  # open, grasp, release
     assert np.linalg.norm(fk(owi, driver.read())[:3, 3] - (b + np.array([0, 0, 0.04]))) < 0.015
@@ -61,5 +62,5 @@ def test_pick_place_grasps_at_a_and_releases_at_b(
 def test_pick_place_refuses_before_moving(owi: ArmModel, driver: TimedDriver, sim: OwiSim) -> None:
     n = len(sent(sim))
     with pytest.raises(UnreachableError):
-        pick_place(owi, driver, np.array([0.15, 0.1, 0.08]), np.array([0.9, 0.0, 0.05]))
+        pick_place(Arm(owi, driver), (150.0, 100.0, 80.0), (900.0, 0.0, 50.0))
     assert len(sent(sim)) == n

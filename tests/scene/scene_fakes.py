@@ -10,6 +10,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from armkit.connect import forecaster
+from armkit.drivers import Forecast
 from armkit.model import ArmModel
 
 F64 = NDArray[np.float64]
@@ -92,6 +94,8 @@ class FakeDriver:
     """An armkit Driver on the fake world; counts the commands it was sent. Its clock
     is virtual (``VirtualClock``): the tasks' waits cost no real time."""
 
+    moves = "smart"
+
     def __init__(self, world: FakeWorld) -> None:
         self.world = world
         self.commands = 0
@@ -118,6 +122,13 @@ class FakeDriver:
     def grip(self, width: float) -> None:
         self.commands += 1
         self.world.set_grip(width)
+
+    def forecast(self, q0: F64, q1: F64, **options: Any) -> Forecast:
+        """The model's own driver's forecast (this fake moves at once)."""
+        return forecaster(self.world.sim.model).forecast(q0, q1, **options)
+
+    def forecast_grip(self, before: float | None, width: float) -> float:
+        return forecaster(self.world.sim.model).forecast_grip(before, width)
 
     def stop(self) -> None:
         pass

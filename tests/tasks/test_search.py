@@ -72,7 +72,7 @@ def test_bad_angles_move_nothing(capsys: pytest.CaptureFixture[str]) -> None:
     arm = Arm("lynx6", "sim", world=world)
     q0 = world.arm().q()
     with pytest.raises(InputError, match=r"0\.\.180 deg"):
-        tasks.search(arm, load_scene("search_002"), start=math.radians(200))
+        tasks.search(arm, load_scene("search_002"), start=200.0)
     assert np.allclose(world.arm().q(), q0)
     assert main(["--scene", "search_002", "search", "--step", "0"]) == 2
     assert "step" in capsys.readouterr().err
@@ -105,7 +105,7 @@ def test_reach_comes_near_the_hand_and_shakes(arm_name: str) -> None:
     world = World()
     arm = Arm(arm_name, "sim", world=world)
     scene = load_scene("reach_003")
-    result = tasks.reach(arm, scene, near=0.06, shakes=2)
+    result = tasks.reach(arm, scene, near=60.0, shakes=2)
     hand = scene.hand("hand")
     assert result.found and result.angle is not None and result.distance is not None
     expected = math.degrees(math.atan2(hand.position[1], hand.position[0])) + 90.0

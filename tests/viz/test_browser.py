@@ -21,7 +21,7 @@ from browser_page import chromium_or_skip, colour_near, decode, project, visible
 
 import armkit
 from armkit.scene import arm_capsules, load_scene
-from armkit.viz import DriverSource, cube_colour
+from armkit.viz import ArmSource, cube_colour
 from armkit.viz._arm_shapes import LINK_COLOUR
 from armkit.viz.web import Chromium, View
 from armkit.viz.web._picture import connected_client, wait_for_camera
@@ -57,7 +57,7 @@ def page(tmp_path: Any) -> Iterator[Page]:
     exe = chromium_or_skip()
     with (
         armkit.Arm("openmanipulator_x") as arm,
-        View(DriverSource(arm.model, arm.driver), scene=BOARD, port=0) as view,
+        View(ArmSource(arm), scene=BOARD, port=0) as view,
         Chromium(WIDTH, HEIGHT, executable=exe) as browser,
     ):
         view.start()

@@ -14,7 +14,7 @@ import pytest
 import armkit
 from armkit.cli import main
 from armkit.connect import sim_state_file
-from armkit.viz import ArmState, LiveSource, ObjectPose
+from armkit.viz import LiveSource, ObjectPose, Snapshot
 from armkit.viz._live import decode, encode, follow_path, live_path
 
 OMX = armkit.load_model("openmanipulator_x")
@@ -24,7 +24,7 @@ ARMKIT = [sys.executable, "-c", "from armkit.cli import main; raise SystemExit(m
 def test_a_snapshot_survives_the_channel() -> None:
     T = np.eye(4)
     T[:3, 3] = (0.2, -0.05, 0.03)
-    state = ArmState(1.25, np.radians([10.0, 20.0, -30.0, 40.0]), 0.031, (ObjectPose("red", T),))
+    state = Snapshot(1.25, np.radians([10.0, 20.0, -30.0, 40.0]), 0.031, (ObjectPose("red", T),))
     back = decode(encode(state), OMX.dof)
     assert back.t == 1.25 and back.grip == 0.031
     np.testing.assert_array_equal(back.q, state.q)

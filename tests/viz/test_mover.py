@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import armkit
-from armkit.viz import DriverSource, Goal, Mover
+from armkit.viz import ArmSource, Goal, Mover
 
 
 @pytest.fixture
@@ -47,7 +47,7 @@ def test_a_refused_goal_is_reported_and_nothing_moves(arm: armkit.Arm) -> None:
 
 
 def test_grip_goal_opens_the_jaws_and_the_source_reads_it(arm: armkit.Arm) -> None:
-    source = DriverSource(arm.model, arm.driver)
+    source = ArmSource(arm)
     mover = Mover(arm)
     try:
         mover.request(Goal(grip=0.03))
@@ -64,14 +64,17 @@ def test_grip_goal_opens_the_jaws_and_the_source_reads_it(arm: armkit.Arm) -> No
 
 
 class _Hardware:
-    """A driver with no simulation world behind it (real hardware, as a view sees it)."""
+    """An arm with no simulation world behind it (real hardware, as a view sees it)."""
+
+    def __init__(self, model: armkit.ArmModel) -> None:
+        self.model, self.world, self.sim = model, None, None
 
     def read(self) -> np.ndarray:
         return np.radians([1.0, 2.0, 3.0, 4.0])
 
 
-def test_on_hardware_the_source_reads_the_driver_back(arm: armkit.Arm) -> None:
-    source = DriverSource(arm.model, _Hardware())  # type: ignore[arg-type]
+def test_on_hardware_the_source_reads_the_arm_back(arm: armkit.Arm) -> None:
+    source = ArmSource(_Hardware(arm.model))  # type: ignore[arg-type]
     source.set_grip(0.025)
     state = source.state()
     np.testing.assert_array_equal(state.q, np.radians([1.0, 2.0, 3.0, 4.0]))
@@ -80,4 +83,4 @@ def test_on_hardware_the_source_reads_the_driver_back(arm: armkit.Arm) -> None:
 
 def test_a_driver_has_no_history(arm: armkit.Arm) -> None:
     with pytest.raises(ValueError, match="now"):
-        DriverSource(arm.model, arm.driver).state(1.0)
+        ArmSource(arm).state(1.0)

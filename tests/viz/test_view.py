@@ -10,7 +10,7 @@ import pytest
 
 import armkit
 from armkit.scene import ScenePhysics, load_scene
-from armkit.viz import DriverSource, WorldSource
+from armkit.viz import ArmSource, WorldSource
 from armkit.viz.web import Teach, View
 
 BOARD = load_scene("board_001")
@@ -24,7 +24,7 @@ def arm() -> Iterator[armkit.Arm]:
 
 @pytest.fixture
 def view(arm: armkit.Arm) -> Iterator[View]:
-    with View(DriverSource(arm.model, arm.driver), scene=BOARD, port=0) as view:
+    with View(ArmSource(arm), scene=BOARD, port=0) as view:
         yield view
 
 
@@ -93,7 +93,7 @@ def test_teach_moves_the_arm_and_records_poses(view: View, arm: armkit.Arm) -> N
 def test_a_bad_port_is_refused() -> None:
     arm = armkit.Arm("openmanipulator_x")
     with pytest.raises(ValueError, match="port"):
-        View(DriverSource(arm.model, arm.driver), port=70000)
+        View(ArmSource(arm), port=70000)
 
 
 def test_a_grasped_cube_moves_with_the_gripper_on_the_page() -> None:
@@ -126,7 +126,7 @@ def test_what_the_tool_draws_on_paper_is_inked() -> None:
 
     paper = Sheet("paper", np.array([0.13, -0.05, 0.0]), np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0]), 0.1, 0.1)  # fmt: skip
     scene = Scene("drawing", sheets=(paper,))
-    with armkit.Arm("openmanipulator_x") as arm, View(DriverSource(arm.model, arm.driver), scene=scene, port=0) as view:  # fmt: skip
+    with armkit.Arm("openmanipulator_x") as arm, View(ArmSource(arm), scene=scene, port=0) as view:  # fmt: skip
         arm.move_to(180, -20, 30, -90)
         view.update()
         assert not [n for n in view.renderer.names if n.startswith("/ink/")]  # in the air

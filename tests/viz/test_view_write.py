@@ -11,7 +11,7 @@ import pytest
 import armkit
 from armkit.cli import main
 from armkit.script import Source, run_source
-from armkit.viz import DriverSource
+from armkit.viz import ArmSource
 from armkit.viz.web import Teach, View
 
 
@@ -24,7 +24,7 @@ def _teach(path: Path) -> list[np.ndarray]:
     somewhere else; write the script. Returns the poses the arm was taught, in order."""
     taught: list[np.ndarray] = []
     arm = armkit.Arm("openmanipulator_x")
-    with arm, View(DriverSource(arm.model, arm.driver), port=0) as view:
+    with arm, View(ArmSource(arm), port=0) as view:
         teach = Teach(view, arm, echo=False)
         try:
             teach.move_joints(arm.model.home + np.radians([25.0, -15.0, 10.0, 20.0]))
@@ -71,7 +71,7 @@ def test_torque_off_on_the_page_lets_the_sliders_move_the_simulated_arm_by_hand(
 ) -> None:
     hand_q = np.radians([-35.0, -10.0, 25.0, 15.0])
     arm = armkit.Arm("openmanipulator_x")
-    with arm, View(DriverSource(arm.model, arm.driver), port=0) as view:
+    with arm, View(ArmSource(arm), port=0) as view:
         teach = Teach(view, arm, echo=False)
         try:
             assert not teach.push_joints(hand_q)  # torque on: no hand moves it

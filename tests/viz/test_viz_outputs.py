@@ -9,10 +9,10 @@ from pathlib import Path
 import pytest
 
 from armkit import InputError, load_model
-from armkit.viz import ArmState, plot_pose, write_gif, write_picture
+from armkit.viz import Snapshot, plot_pose, write_gif, write_picture
 
 LYNX = load_model("lynx6")
-STATE = ArmState(0.0, LYNX.home, 0.02)
+STATE = Snapshot(0.0, LYNX.home, 0.02)
 
 
 @pytest.mark.parametrize(

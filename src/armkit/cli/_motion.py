@@ -15,7 +15,6 @@ from typing import Any
 
 from .._terminal import fixed
 from ..arm import MAX_MOVE_S, Arm
-from ..drivers.timed import TimedDriver
 from ._args import angle, coordinate, number
 from ._draw_shapes import MODES as MODES
 from ._draw_shapes import add_draw
@@ -116,7 +115,7 @@ def _print_where(arm: Arm, args: argparse.Namespace) -> None:
     print(f"gripper at x {x:.1f} y {y:.1f} z {z:.1f} mm, pitch {pitch:.1f} deg")
     angles = "  ".join(f"{n} {fixed(a)}" for n, a in arm.angles().items())
     print(f"joints {angles} deg")
-    reason = arm.driver.uncertainty if isinstance(arm.driver, TimedDriver) else None
+    reason = arm.uncertainty
     if reason:
         print(
             f"uncertain: these are estimates ({reason}); to know the angles again run "

@@ -14,7 +14,6 @@ from typing import Any
 from .._files import check_output_path, config_dir
 from ..arm import Arm
 from ..connect import check_sim_port
-from ..drivers.timed import TimedDriver
 from ..model import load_model
 from ._args import check_folder
 from ._kept import open_kept
@@ -35,9 +34,8 @@ def open_arm(args: argparse.Namespace) -> Iterator[Arm]:
     scene = _scene(args)
     try:
         arm = Arm(model, open_kept(model, args, world), scene=scene)
-        if isinstance(arm.driver, TimedDriver):  # before moving from an uncertain estimate
-            rehome = f"armkit --arm {args.arm} --driver {args.driver} rehome"
-            arm.driver.warn = lambda text: print(f"armkit: warning: {text}: {rehome}", file=sys.stderr)  # fmt: skip
+        rehome = f"armkit --arm {args.arm} --driver {args.driver} rehome"
+        arm.on_uncertain(lambda text: print(f"armkit: warning: {text}: {rehome}", file=sys.stderr))
         with arm, kept_objects(args, arm, scene), watching(args, arm, scene) as physics:
             if physics is not None:  # moves are checked against the objects where they are
                 from ..tasks import held_now

@@ -6,8 +6,6 @@ import argparse
 import sys
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
-
 from .._closing import closing
 from .._errors import ArmkitError
 from .._files import config_dir
@@ -77,12 +75,12 @@ def _keys(args: argparse.Namespace) -> int:
 
 
 def _pick_place(args: argparse.Namespace) -> int:
+    from ..arm import Arm
     from ..tasks.pick_place_owi import pick_place
 
     with closing(_open(args)) as driver:
-        a = np.array([args.ax, args.ay, args.az]) / 1000.0
-        b = np.array([args.bx, args.by, args.bz]) / 1000.0
-        pick_place(driver.model, driver, a, b, lift_m=args.lift / 1000.0, say=print)
+        a, b = (args.ax, args.ay, args.az), (args.bx, args.by, args.bz)
+        pick_place(Arm(driver.model, driver), a, b, lift=args.lift, say=print)
         _summary(driver)
     return 0
 

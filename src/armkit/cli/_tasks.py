@@ -102,10 +102,10 @@ def _reach(args: argparse.Namespace) -> int:
     scene = scene_of(args)
     if not math.isfinite(args.height) or not 0.0 < args.height <= 500.0:
         raise InputError(f"--height must be 0..500 mm, got {args.height}")
-    start, stop, step = (math.radians(a) for a in REACH_ARC)
+    start, stop, step = REACH_ARC
     with watched_arm(args, scene) as arm:
         result = tasks.reach(
-            arm, scene, height=args.height / 1000.0, near=args.near / 1000.0,
+            arm, scene, height=args.height, near=args.near,
             shakes=args.shakes, start=start, stop=stop, step=step, channel=args.channel,
             port=args.adc_port,
         )  # fmt: skip
@@ -121,7 +121,7 @@ def _search(args: argparse.Namespace) -> int:
     from ._scene import scene_of
 
     scene = scene_of(args)
-    angles = {k: math.radians(getattr(args, k)) for k in ("from", "to", "step")}
+    angles = {k: getattr(args, k) for k in ("from", "to", "step")}
     with watched_arm(args, scene) as arm:
         result = tasks.search(
             arm, scene, start=angles["from"], stop=angles["to"], step=angles["step"],
@@ -143,12 +143,11 @@ def _arc(start: float, stop: float, step: float) -> str:
 def _nothing(args: argparse.Namespace, arm: Any, result: Any, scanned: str, todo: str) -> int:
     """A scan that found nothing: the task's lines but its last (its own 'nothing
     within 30 cm'), then one line on stderr: what was scanned, what to try; status 1."""
-    from ..drivers.timed import TimedDriver
 
     print("\n".join(result.lines()[:-1]))
     sys.stdout.flush()  # the result, then the line that ends it
     said = f"armkit: {scanned}, the sensor seeing {NEAR}..{FAR}; {todo}"
-    if isinstance(arm.driver, TimedDriver):  # the OWI scanned where it thinks it was
+    if arm.moves == "timed":  # the OWI scanned where it thinks it was
         said += (
             f"; the {arm.model.name}'s angles are only estimated from motor run times: re-home "
             f"it and scan again: armkit --arm {args.arm} --driver {args.driver} rehome"
@@ -199,7 +198,7 @@ def _run(args: argparse.Namespace) -> int:
             print(plan)
             return 0
         print(plan.lines()[0])
-        tasks.run_checked(
+        tasks.run_verified(
             arm, plan, say=lambda k, step: print(f"{k:4d}/{len(plan.steps)}  {step.label}")
         )
         for line in plan.lines()[len(plan.steps) + 1 :]:

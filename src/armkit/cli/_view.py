@@ -190,10 +190,10 @@ def _view_options(args: argparse.Namespace) -> dict[str, Any]:
 def _source(arm: Any, scene: Any) -> Any:
     """What the view shows: the simulated arm's world (its cubes moved by the scene's
     physics), or the real arm's driver."""
-    from ..viz import DriverSource, WorldSource
+    from ..viz import ArmSource, WorldSource
 
     if arm.world is None:
-        return DriverSource(arm.model, arm.driver)
+        return ArmSource(arm)
     physics = None
     if scene is not None:
         from ..scene import ScenePhysics

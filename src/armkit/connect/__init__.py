@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, Any
 
 from .._clock import Clock
 from .._errors import InputError
-from ..drivers import Driver
+from ..drivers import Driver, Forecaster
 from ..model import ArmModel
 from ..sim import SimArm as SimArm
 from ..sim import World as World
@@ -103,6 +103,24 @@ def open_driver(
             "drop world=, or use --port emu"
         )
     return kind.open(model, port)
+
+
+def forecaster(model: ArmModel, driver: str = "sim", port: str | None = None) -> Forecaster:
+    """What ``open_driver(model, driver, port)``'s moves will take, with no device opened
+    (``armkit.drivers.Forecaster``): ``"sim"`` forecasts the model's own driver kind.
+
+    Raises:
+        InputError: an unknown driver name.
+        ModelError: the model has no section for that driver.
+    """
+    if driver == "sim":
+        native = kinds_of(model)
+        if not native:  # a generic bus of smart servos
+            from ._rigs import generic_forecaster
+
+            return generic_forecaster(model)
+        return native[0].forecast(model, "sim")
+    return driver_kind(driver).forecast(model, None if port == "emu" else port)
 
 
 def check_sim_port(model: ArmModel, port: str | None) -> None:
@@ -210,6 +228,7 @@ __all__ = [
     "driver_names",
     "emulate",
     "emulated_kinds",
+    "forecaster",
     "kinds_of",
     "kinds_with",
     "listed",

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal, Protocol
 
-from ..drivers import Driver
+from ..drivers import Driver, Forecaster
 from ..model import ArmModel, Section
 
 if TYPE_CHECKING:
@@ -50,6 +50,14 @@ class Simulator(Protocol):
     def __call__(
         self, model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
     ) -> Driver: ...
+
+
+class Forecasting(Protocol):
+    """The kind's forecasts for ``model`` with no device (``armkit.drivers.Forecaster``):
+    what its driver's moves will take; ``unit`` names a unit whose own calibration
+    times them (None: the model file's)."""
+
+    def __call__(self, model: ArmModel, unit: str | None) -> Forecaster: ...
 
 
 class Emulated(Protocol):
@@ -93,6 +101,7 @@ class DriverKind:
         traits: what its motors are (``Trait``).
         port: how its ``--port`` is read (``PortRule``).
         open: its driver on the real device.
+        forecast: its driver's forecasts without a device (``armkit check`` times with them).
         simulate: its driver on its simulated device.
         emulate: its simulated controller served on a pseudo-terminal, or None for a
             device that is not a serial one (the OWI-535's USB board).
@@ -107,6 +116,7 @@ class DriverKind:
     traits: frozenset[Trait]
     port: PortRule
     open: Opener
+    forecast: Forecasting
     simulate: Simulator
     emulate: Emulated | None
     calibrate: Calibration | None

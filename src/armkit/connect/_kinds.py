@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .._errors import InputError
-from ..drivers import Driver
+from ..drivers import Driver, Forecaster
 from ..model import (
     DYNAMIXEL_SECTION,
     MAESTRO_SECTION,
@@ -36,6 +36,14 @@ def _open_owi535(model: ArmModel, port: str | None) -> Driver:
     from ..drivers.timed import open_driver
 
     return open_driver(model, port)
+
+
+def _forecast_owi535(model: ArmModel, unit: str | None) -> Forecaster:
+    from ..drivers.timed import TimedForecaster, default_timing, load_state, state_path
+
+    path = state_path(unit or "default")
+    timing = load_state(path).timing if path.exists() else default_timing(model)
+    return TimedForecaster(model, timing)
 
 
 def _simulate_owi535(
@@ -72,6 +80,18 @@ def _open_maestro(model: ArmModel, port: str | None) -> Driver:
     from ..drivers.servo import open_maestro
 
     return open_maestro(model, port)
+
+
+def _forecast_ssc32(model: ArmModel, unit: str | None) -> Forecaster:
+    from ..drivers.servo import servo_forecaster
+
+    return servo_forecaster(model, "ssc32")
+
+
+def _forecast_maestro(model: ArmModel, unit: str | None) -> Forecaster:
+    from ..drivers.servo import servo_forecaster
+
+    return servo_forecaster(model, "maestro")
 
 
 def _simulate_ssc32(
@@ -117,6 +137,13 @@ def _open_dynamixel(model: ArmModel, port: str | None) -> Driver:
     return open_driver(model, port)
 
 
+def _forecast_dynamixel(model: ArmModel, unit: str | None) -> Forecaster:
+    from ..drivers.dynamixel import DynamixelForecaster
+    from ..model import dynamixel_section
+
+    return DynamixelForecaster(model, dynamixel_section(model))
+
+
 def _simulate_dynamixel(
     model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
 ) -> Driver:
@@ -140,6 +167,7 @@ KINDS: tuple[DriverKind, ...] = (
         traits=frozenset({"timed"}),
         port="usb",
         open=_open_owi535,
+        forecast=_forecast_owi535,
         simulate=_simulate_owi535,
         emulate=None,
         calibrate=Calibration(_calibrate_owi535, operator=_owi535_operator),
@@ -152,6 +180,7 @@ KINDS: tuple[DriverKind, ...] = (
         traits=frozenset({"hobby"}),
         port="serial",
         open=_open_ssc32,
+        forecast=_forecast_ssc32,
         simulate=_simulate_ssc32,
         emulate=_emulate_ssc32,
         calibrate=Calibration(_calibrate_servos),
@@ -164,6 +193,7 @@ KINDS: tuple[DriverKind, ...] = (
         traits=frozenset({"hobby"}),
         port="serial",
         open=_open_maestro,
+        forecast=_forecast_maestro,
         simulate=_simulate_maestro,
         emulate=_emulate_maestro,
         calibrate=Calibration(_calibrate_servos),
@@ -176,6 +206,7 @@ KINDS: tuple[DriverKind, ...] = (
         traits=frozenset({"smart"}),
         port="serial",
         open=_open_dynamixel,
+        forecast=_forecast_dynamixel,
         simulate=_simulate_dynamixel,
         emulate=_emulate_dynamixel,
         calibrate=None,

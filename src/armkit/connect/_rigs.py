@@ -11,7 +11,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .._errors import ArmkitError
-from ..drivers.dynamixel import calibration_points
+from ..drivers import Forecaster
+from ..drivers.dynamixel import DynamixelForecaster, calibration_points
 from ..drivers.servo import load_setup
 from ..model import ArmModel, DynamixelSection, dynamixel_section
 from ..sim import SimArm, Truth, World
@@ -31,6 +32,11 @@ class Rig:
     arm: SimArm | None
     baudrate: int
     config: DynamixelSection | None = None  # the Dynamixel setup used
+
+
+def generic_forecaster(model: ArmModel) -> Forecaster:
+    """The forecasts of the Dynamixel driver on the generic bus (``generic_config``)."""
+    return DynamixelForecaster(model, generic_config(model))
 
 
 def generic_config(model: ArmModel) -> DynamixelSection:

@@ -3,7 +3,6 @@ and the CLI: ``draw(arm, scene, file, sheet=None, pen=None, ...)``."""
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
@@ -12,8 +11,6 @@ from typing import TYPE_CHECKING, Protocol
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import ArmkitError
-from ..motion import TimedStreaming, follow
 from ..scene import Scene
 from ._errors import DrawingError
 from ._fit import Fit
@@ -22,13 +19,12 @@ from ._metrics import measure
 from ._picture import check_picture_path
 from ._picture import preview as draw_preview
 from ._picture import result as draw_result
-from ._segments_job import GripMove, JointMove
+from ._segments_job import GripMove, PathMove
 from ._tracer import PenTracer
 
 if TYPE_CHECKING:
-    from ..arm import Arm
+    from ..arm import Arm, Step
 
-START_TOLERANCE = math.radians(0.5)  # the arm must be where the job was planned
 DrawProgress = Callable[["DrawJob", int], None]  # (the job, strokes drawn so far)
 
 
@@ -93,19 +89,16 @@ def draw(
 
 
 def run_job(arm: Arm, job: DrawJob, progress: DrawProgress | None = None) -> DrawJob:
-    """Carry ``job`` out on ``arm``; on a simulator, with its trace and metrics;
-    ``progress(job, n)`` after each move (n: the strokes drawn so far)."""
-    off = float(np.max(np.abs(arm.driver.read() - job.q_start)))
-    if off > START_TOLERANCE:
-        raise ArmkitError(
-            f"the arm moved {math.degrees(off):.1f} deg since the drawing was planned; plan again"
-        )
-    world, sim = arm.world, _sim_arm(arm)
+    """Carry ``job`` out on ``arm`` (``Arm.run`` of its motion); on a simulator, with its
+    trace and metrics; ``progress(job, n)`` after each move (n: the strokes drawn so far)."""
+    world, sim = arm.world, arm.sim
     tracer = PenTracer(job.tip, job.sheet, job.T_world_base, sim.name if sim else None)
     tracer.holding = job.options.held
     detach = world.attach(tracer) if world is not None else None
+    done = _Progress(job, tracer, sim, progress)
     try:
-        _moves(arm, job, tracer, sim, progress)
+        arm.run(job.motion, say=done.before)
+        done.after(len(job.segments))
     finally:
         if detach is not None:
             detach()
@@ -115,30 +108,32 @@ def run_job(arm: Arm, job: DrawJob, progress: DrawProgress | None = None) -> Dra
     return replace(job, trace=trace, metrics=measure(job.plan, trace, job.sheet))
 
 
-def _moves(
-    arm: Arm, job: DrawJob, tracer: PenTracer, sim: SimArm | None, progress: DrawProgress | None
-) -> None:
-    streamer = TimedStreaming(speed=job.options.speed)
-    strokes = 0
-    for seg in job.segments:
-        if isinstance(seg, JointMove):
-            arm.driver.move(seg.q, wait=True)
-        elif isinstance(seg, GripMove):
-            tracer.holding = tracer.holding and seg.holds
-            if sim is not None:
-                sim.grip_stop(job.pen.diameter if seg.holds else None)
-            arm.grip(seg.width * 1000.0)
-            tracer.holding = seg.holds
-        else:
-            follow(arm.driver, job.tip, seg.path, streamer, arm.clock)
-            strokes += seg.draws
-        if progress is not None:
-            progress(job, strokes)
+class _Progress:
+    """What the job does around each of its moves: the pen held or not (the tracer, the
+    simulated jaws stopped on it), the strokes counted for ``progress``."""
 
+    def __init__(
+        self, job: DrawJob, tracer: PenTracer, sim: SimArm | None, progress: DrawProgress | None
+    ) -> None:
+        self.job, self.tracer, self.sim, self.progress = job, tracer, sim, progress
+        self.strokes = 0
 
-def _sim_arm(arm: Arm) -> SimArm | None:
-    world = arm.world
-    if world is None:
-        return None
-    arms = world.arms()
-    return next((a for a in arms if a.model.name == arm.model.name), arms[0] if arms else None)
+    def before(self, k: int, step: Step) -> None:
+        """Before move ``k`` (1-based): the one before it is done."""
+        if k > 1:
+            self.after(k - 1)
+        seg = self.job.segments[k - 1]
+        if isinstance(seg, GripMove):
+            self.tracer.holding = self.tracer.holding and seg.holds
+            if self.sim is not None:
+                self.sim.grip_stop(self.job.pen.diameter if seg.holds else None)
+
+    def after(self, k: int) -> None:
+        """Move ``k`` (1-based) is done."""
+        seg = self.job.segments[k - 1]
+        if isinstance(seg, GripMove):
+            self.tracer.holding = seg.holds
+        elif isinstance(seg, PathMove):
+            self.strokes += seg.draws
+        if self.progress is not None:
+            self.progress(self.job, self.strokes)

@@ -19,9 +19,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
+from ..arm import Plan, Start, plan_steps
 from ..model import ArmModel
 from ..scene import Pen, Scene, Sheet
-from ..tasks import Start
 from ._errors import DrawingError, DrawingWarning
 from ._fit import Fit, as_fit
 from ._metrics import DrawingMetrics, PenTrace
@@ -29,7 +29,7 @@ from ._pen import pick_pen, put_pen, stand_of
 from ._plan import DrawingPlan, plan_drawing
 from ._reach import Run, nothing_reachable, reach_note, reachable_runs
 from ._rig import Rig, plan_strokes
-from ._segments_job import Segment, count, end_q
+from ._segments_job import Segment, as_steps, count, end_q
 
 if TYPE_CHECKING:
     from ..arm import Arm
@@ -85,7 +85,8 @@ class DrawJob:
         plan: the strokes on the sheet, in order, cut to reach (``plan.notes`` say what was cut).
         sheet, pen: what it draws on and with.
         segments: every move in order (joint moves, gripper commands, paths).
-        q_start: the joints when planned [rad], shape (dof,).
+        motion: the same moves as the arm's plan (``armkit.arm.Plan``), from the arm
+            as it was when planned, each timed by its driver's forecast.
         tip: the arm's model with the pen's tip as its tool point.
         T_world_base: the arm's base in the scene (4, 4).
         options: how it was planned.
@@ -96,12 +97,17 @@ class DrawJob:
     sheet: Sheet
     pen: Pen
     segments: tuple[Segment, ...]
-    q_start: F64
+    motion: Plan
     tip: ArmModel
     T_world_base: F64
     options: DrawOptions
     trace: PenTrace | None = None
     metrics: DrawingMetrics | None = None
+
+    @property
+    def q_start(self) -> F64:
+        """The joints when planned [rad], shape (dof,)."""
+        return self.motion.q_start
 
     def lines(self) -> list[str]:
         """What the job does, for people: one line each."""
@@ -140,7 +146,8 @@ def plan_draw(
     the_sheet, the_pen = find_sheet(scene, sheet), find_pen(scene, pen)
     stand = stand_of(scene, the_pen)
     rig = make_rig(arm.model, scene, the_sheet, the_pen, opts)
-    q0 = arm.q.copy() if isinstance(arm, Start) else arm.driver.read()
+    start = arm if isinstance(arm, Start) else arm.start()
+    q0 = start.q
     segments: list[Segment] = []
     if stand is not None and not opts.held:
         segments += pick_pen(rig, stand, the_pen, q0, opts.clearance)
@@ -150,7 +157,12 @@ def plan_draw(
     if stand is not None and not opts.held:
         segments += put_pen(rig, stand, the_pen, end_q(segments, q0), opts.clearance)
     plan = replace(plan, strokes=tuple(r.uv for r in runs), notes=plan.notes + note)
-    return DrawJob(plan, the_sheet, the_pen, tuple(segments), q0, rig.tip, scene.T_world_base, opts)
+    steps = plan_steps(
+        start, f"draw {Path(plan.source).name}", as_steps(segments, rig.tip, opts.speed)
+    )
+    return DrawJob(
+        plan, the_sheet, the_pen, tuple(segments), steps, rig.tip, scene.T_world_base, opts
+    )
 
 
 def plan_on_sheet(

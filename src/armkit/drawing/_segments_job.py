@@ -7,7 +7,9 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from ..motion import JointPath
+from ..arm import Step
+from ..model import ArmModel
+from ..motion import JointPath, TimedStreaming
 
 F64 = NDArray[np.float64]
 
@@ -61,6 +63,22 @@ def count(segments: tuple[Segment, ...]) -> dict[str, int]:
         "strokes": sum(isinstance(s, PathMove) and s.draws for s in segments),
         "pen-up paths": sum(isinstance(s, PathMove) and not s.draws for s in segments),
     }
+
+
+def as_steps(segments: list[Segment], tip: ArmModel, speed: float) -> list[Step]:
+    """The segments as the arm's plan steps: pen paths streamed at the tip's ``speed``
+    [m/s], solved with ``tip`` (the arm with the pen's tip as its tool point)."""
+    streamer = TimedStreaming(speed=speed)
+    out = []
+    for s in segments:
+        if isinstance(s, JointMove):
+            out.append(Step(s.label, q=s.q))
+        elif isinstance(s, GripMove):
+            out.append(Step(s.label, grip=s.width))
+        else:
+            path = s.path
+            out.append(Step(s.label, q=path.q[-1], path=path, streamer=streamer, kin=tip))
+    return out
 
 
 def stack(points: list[F64]) -> F64:

@@ -6,4 +6,9 @@ hardware or on a simulated device, by the factory: ``armkit.connect.open_driver`
 """
 
 from ._driver import Driver as Driver
+from ._driver import Forecast as Forecast
+from ._driver import Forecaster as Forecaster
 from ._driver import PathFollower as PathFollower
+from ._driver import PathForecaster as PathForecaster
+from ._driver import RunForecaster as RunForecaster
+from ._driver import TimedMotors as TimedMotors

@@ -37,11 +37,17 @@ accept and refuse exactly the same moves):
 - Time: a driver waits only through its ``clock`` attribute (an
   ``armkit._clock.Clock``: the wall clock on hardware, the world's on a
   simulated device), never ``time.sleep``, so a simulation runs in its own time.
+- ``forecast(q0, q1, ...)`` and ``forecast_grip(before, width)`` say what ``move``
+  and ``grip`` will do (how long they take, their waits included, and where the
+  driver will read the joints after), from any pose, with no byte sent: ``Arm``
+  plans every motion with them, so a plan's time is what running it takes. They
+  refuse what ``move`` refuses.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 import numpy as np
@@ -53,8 +59,60 @@ if TYPE_CHECKING:
 F64 = NDArray[np.float64]
 
 
+@dataclass(frozen=True)
+class Forecast:
+    """What one ``move`` will do, worked out before it is sent.
+
+    Attributes:
+        seconds: how long the command takes, its waits included [s].
+        q: the joint angles the driver will read after it [rad], shape (dof,).
+        motor_s: motor-seconds the batteries have given after it [s] (timed motors
+            slow down with it; other drivers pass it on unchanged).
+    """
+
+    seconds: float
+    q: F64
+    motor_s: float = 0.0
+
+
 @runtime_checkable
-class Driver(Protocol):
+class Forecaster(Protocol):
+    """What a driver will do, without a device: every ``Driver`` is one, and a driver
+    kind gives one for a model alone (``armkit.connect.forecaster``) for ``armkit check``.
+
+    Attributes:
+        moves: how its moves run, as its kind's trait (``armkit.connect.Trait``):
+            ``"smart"`` (serial-bus servos, one timed profile per move), ``"hobby"``
+            (hobby servos, one group move of constant pulse speed) or ``"timed"`` (motors
+            run one joint at a time for a time).
+    """
+
+    @property
+    def moves(self) -> str:
+        """``"smart"``, ``"hobby"`` or ``"timed"`` (see above)."""
+        ...
+
+    def forecast(
+        self,
+        q0: F64,
+        q1: F64,
+        *,
+        duration: float | None = None,
+        speed: float | None = None,
+        motor_s: float = 0.0,
+    ) -> Forecast:
+        """What ``move(q1, duration=, speed=, wait=True)`` does from ``q0`` [rad], shape
+        (dof,), with ``motor_s`` [s] used; raises what ``move`` would raise."""
+        ...
+
+    def forecast_grip(self, before: float | None, width: float) -> float:
+        """How long ``grip(width)`` [m] takes [s] from an opening of ``before`` [m] (None:
+        not known); raises what ``grip`` would raise."""
+        ...
+
+
+@runtime_checkable
+class Driver(Forecaster, Protocol):
     """Joint angles <-> a device (see the module doc for the contract)."""
 
     @property
@@ -104,6 +162,43 @@ class PathFollower(Protocol):
     def follow_path(self, model: ArmModel, q: F64, points: F64) -> object:
         """Follow joint path ``q`` [rad], (N, dof), whose tool points are ``points`` [m],
         (N, 3), solved with ``model``; everything checked before a motor starts."""
+        ...
+
+
+@runtime_checkable
+class PathForecaster(Protocol):
+    """Forecasts of a ``PathFollower``'s own way along a path (timed motors)."""
+
+    def forecast_path(
+        self, model: ArmModel, q0: F64, q: F64, points: F64, motor_s: float
+    ) -> Forecast:
+        """What ``follow_path(model, q, points)`` does from ``q0`` [rad] with ``motor_s`` [s]
+        used, the move onto its start included; raises what it would raise."""
+        ...
+
+
+@runtime_checkable
+class RunForecaster(Protocol):
+    """Forecasts of a motor's own timed run (the OWI-535's)."""
+
+    def forecast_run(
+        self, q0: F64, joint: str, direction: int, seconds: float, motor_s: float
+    ) -> Forecast:
+        """What ``turn_for(joint, direction, seconds)`` does from ``q0`` [rad]."""
+        ...
+
+
+@runtime_checkable
+class TimedMotors(RunForecaster, Protocol):
+    """A driver of motors run for a time (the OWI-535): a motor's own run and the
+    board's light."""
+
+    def turn_for(self, joint: str, direction: int, seconds: float) -> None:
+        """Run ``joint``'s motor ``seconds`` [s] in ``direction`` (+1/-1)."""
+        ...
+
+    def set_light(self, on: bool) -> None:
+        """Switch the light on or off."""
         ...
 
 

@@ -49,13 +49,13 @@ from ..model import (
     move_time,
     ramp_time,
 )
-from ._driver import pieces
+from ._driver import Forecast, pieces
+from ._dxl_forecast import MAX_PROFILE_MS
+from ._dxl_forecast import DynamixelForecaster as DynamixelForecaster
 from ._dxl_hold import describe, hold, hold_here
 from ._dxl_points import calibration_points as calibration_points
 from ._dxl_wait import stopped, wait_arrival
 from ._sent import SentProfile
-
-MAX_PROFILE_MS = 32737  # time-based Profile Velocity limit
 
 
 def open_driver(model: ArmModel, port: str | None) -> DynamixelDriver:
@@ -80,6 +80,8 @@ class DynamixelDriver:
         clock: time for waiting (real time by default).  on_close: run once by ``close()``.
     """
 
+    moves = "smart"  # see armkit.drivers.Forecaster
+
     def __init__(
         self,
         model: ArmModel,
@@ -92,12 +94,12 @@ class DynamixelDriver:
         cfg = dynamixel_section(model) if config is None else config
         self.model, self.bus, self._on_close = model, bus, on_close
         self.clock = clock or WallClock()
+        self._forecaster = DynamixelForecaster(model, cfg)
         self._extended = cfg.operating_mode == "extended"
         self.ids = list(cfg.ids)
         self.gripper_id = cfg.gripper_id
         self.servos = [*self.ids] if cfg.gripper_id is None else [*self.ids, cfg.gripper_id]
         self._ticks_per_rad = cfg.ticks_per_turn / (2.0 * math.pi)
-        self._center = cfg.center_tick
         self._grip_ticks = cfg.gripper_ticks
         self._tolerance = cfg.position_tolerance_ticks
         self._sent: SentProfile | None = None  # the last profile sent, while it holds
@@ -126,13 +128,31 @@ class DynamixelDriver:
 
     def to_ticks(self, q: NDArray[np.float64]) -> NDArray[np.int64]:
         """Joint angles [rad], shape (dof,) -> goal ticks, shape (dof,)."""
-        ticks = np.rint(self._center + np.asarray(q) * self._ticks_per_rad)
-        low, high = (-1_048_575, 1_048_575) if self._extended else (0, 4095)
-        return np.clip(ticks, low, high).astype(np.int64)
+        return self._forecaster.ticks(q)
 
     def to_angles(self, ticks: NDArray[np.int64]) -> NDArray[np.float64]:
         """Ticks, shape (dof,) -> joint angles [rad], shape (dof,)."""
-        return (np.asarray(ticks, dtype=np.float64) - self._center) / self._ticks_per_rad
+        return self._forecaster.angles(ticks)
+
+    def forecast(
+        self,
+        q0: NDArray[np.float64],
+        q1: NDArray[np.float64],
+        *,
+        duration: float | None = None,
+        speed: float | None = None,
+        motor_s: float = 0.0,
+    ) -> Forecast:
+        """What ``move(q1)`` does from ``q0`` [rad] (``DynamixelForecaster``); nothing is sent."""
+        return self._forecaster.forecast(q0, q1, duration=duration, speed=speed, motor_s=motor_s)
+
+    def forecast_grip(self, before: float | None, width: float) -> float:
+        """How long ``grip(width)`` [m] takes from ``before`` [m] [s]."""
+        return self._forecaster.forecast_grip(before, width)
+
+    def forecaster(self) -> DynamixelForecaster:
+        """This arm's forecasts as a value (its model and tick calibration)."""
+        return self._forecaster
 
     def move(
         self,

@@ -34,5 +34,6 @@ from ._stream import NaiveStepping as NaiveStepping
 from ._stream import Streamer as Streamer
 from ._stream import TimedStreaming as TimedStreaming
 from ._stream import follow as follow
+from ._stream import forecast_follow as forecast_follow
 from ._timing import TimedPath as TimedPath
 from ._timing import time_path as time_path

@@ -27,7 +27,7 @@ from numpy.typing import NDArray
 
 from .._clock import Clock
 from .._errors import DeviceError, InputError
-from ..drivers import Driver, PathFollower
+from ..drivers import Driver, Forecast, Forecaster, PathFollower, PathForecaster
 from ..model import ArmModel
 from ._paths import corners
 from ._plan import JointPath
@@ -44,6 +44,13 @@ class Streamer(Protocol):
         """Move along ``path`` and return when the arm has stopped at its last point."""
         ...
 
+    def forecast(
+        self, forecaster: Forecaster, model: ArmModel, path: JointPath, motor_s: float
+    ) -> Forecast:
+        """What ``run`` does on a driver that forecasts as ``forecaster``, from the path's
+        first point with ``motor_s`` [s] used."""
+        ...
+
 
 @dataclass(frozen=True)
 class NaiveStepping:
@@ -55,6 +62,12 @@ class NaiveStepping:
         """Send each waypoint with ``wait=True``."""
         for q in path.q[1:]:
             driver.move(q, speed=self.speed, wait=True)
+
+    def forecast(
+        self, forecaster: Forecaster, model: ArmModel, path: JointPath, motor_s: float
+    ) -> Forecast:
+        """Every waypoint's move, one after another."""
+        return stepped(forecaster, path.q, self.speed, motor_s)
 
 
 @dataclass(frozen=True)
@@ -76,6 +89,12 @@ class EarlyStreaming:
             driver.move(path.q[k], speed=self.speed, wait=k in stops)
             self._wait_progress(driver, path.q[k - 1], path.q[k], clock)
         driver.move(path.q[-1], speed=self.speed, wait=True)
+
+    def forecast(
+        self, forecaster: Forecaster, model: ArmModel, path: JointPath, motor_s: float
+    ) -> Forecast:
+        """At most ``NaiveStepping``'s time (the waypoints overlap; a bound, not a forecast)."""
+        return stepped(forecaster, path.q, self.speed, motor_s)
 
     def _wait_progress(self, driver: Driver, prev: F64, q: F64, clock: Clock) -> None:
         step = q - prev
@@ -110,6 +129,44 @@ class TimedStreaming:
             driver.move(timed.at(min(k * period, timed.duration)), duration=period, wait=False)
             clock.sleep(start + k * period - clock.now())
         driver.move(path.q[-1], wait=True)
+
+    def forecast(
+        self, forecaster: Forecaster, model: ArmModel, path: JointPath, motor_s: float
+    ) -> Forecast:
+        """Its periods, then the waiting move onto the last point (already there)."""
+        if not self.rate > 0:
+            raise InputError(f"rate must be > 0 Hz, got {self.rate}")
+        duration = time_path(model, path, self.speed, self.accel).duration
+        period = 1.0 / self.rate
+        ticks = int(np.ceil(duration / period - 1e-9))
+        end = forecaster.forecast(path.q[-1], path.q[-1], motor_s=motor_s)
+        return Forecast(ticks * period + end.seconds, end.q, end.motor_s)
+
+
+def stepped(forecaster: Forecaster, q: F64, speed: float, motor_s: float) -> Forecast:
+    """Waiting moves through the joint path ``q`` [rad], (N, dof), at ``speed``."""
+    seconds, at, used = 0.0, q[0].copy(), motor_s
+    for goal in q[1:]:
+        end = forecaster.forecast(at, goal, speed=speed, motor_s=used)
+        seconds, at, used = seconds + end.seconds, end.q, end.motor_s
+    return Forecast(seconds, at, used)
+
+
+def forecast_follow(
+    forecaster: Forecaster,
+    model: ArmModel,
+    q0: F64,
+    path: JointPath,
+    streamer: Streamer,
+    motor_s: float = 0.0,
+) -> Forecast:
+    """What ``follow`` does from ``q0`` [rad]: the move onto the path's start, then the
+    streamer's run; a driver that follows paths its own way, its own forecast of that."""
+    if isinstance(forecaster, PathForecaster):
+        return forecaster.forecast_path(model, q0, path.q, path.points, motor_s)
+    onto = forecaster.forecast(q0, path.q[0], motor_s=motor_s)
+    run = streamer.forecast(forecaster, model, path, onto.motor_s)
+    return Forecast(onto.seconds + run.seconds, run.q, run.motor_s)
 
 
 def follow(

@@ -25,7 +25,7 @@ from ._latency import save_latency as save_latency
 from ._layout import Bars as Bars
 from ._layout import DrumLike as DrumLike
 from ._layout import RangeError as RangeError
-from ._layout import Target as Target
+from ._layout import StrikeSpot as StrikeSpot
 from ._layout import best_transpose as best_transpose
 from ._layout import map_notes as map_notes
 from ._listen import Listener as Listener

@@ -66,7 +66,7 @@ class RangeError(ArmkitError, ValueError):
 
 
 @dataclass(frozen=True)
-class Target:
+class StrikeSpot:
     """Where one note is struck.
 
     Attributes:
@@ -85,8 +85,8 @@ class Target:
         return self.instrument, self.note.pitch
 
 
-def map_notes(score: Score, layout: Sequence[Instrument]) -> tuple[Target, ...]:
-    """One Target per note: pitched notes on the first xylophone that has the bar,
+def map_notes(score: Score, layout: Sequence[Instrument]) -> tuple[StrikeSpot, ...]:
+    """One StrikeSpot per note: pitched notes on the first xylophone that has the bar,
     drum notes on the drum with that General MIDI number.
 
     Raises:
@@ -100,7 +100,7 @@ def map_notes(score: Score, layout: Sequence[Instrument]) -> tuple[Target, ...]:
             missing.append(note)
             continue
         point = found.bar_top(note.pitch) if isinstance(found, Bars) else _drum_top(found)
-        targets.append(Target(note, found.name, np.asarray(point, dtype=np.float64).reshape(3)))
+        targets.append(StrikeSpot(note, found.name, np.asarray(point, dtype=np.float64).reshape(3)))
     if missing:
         raise _range_error(score, layout, tuple(missing))
     return tuple(targets)

@@ -13,7 +13,7 @@ from numpy.typing import NDArray
 from .._errors import ArmkitError
 from .._terminal import count
 from ..model import ArmModel
-from ._layout import Target
+from ._layout import StrikeSpot
 from ._onsets import Contact
 from ._predict import JointProfile
 from ._score import MIN_TEMPO, Note
@@ -49,7 +49,7 @@ class Strike:
     """One planned strike: ``target``; ``time`` [s] of the contact; ``hover`` height [m];
     the ``poses``; predicted tip ``speed`` at contact [m/s]; the bar's ``latency`` [s]."""
 
-    target: Target
+    target: StrikeSpot
     time: float
     hover: float
     poses: StrikePoses

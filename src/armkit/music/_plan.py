@@ -20,7 +20,7 @@ from numpy.typing import ArrayLike, NDArray
 from .._errors import InputError, UnreachableError
 from .._inputs import array, joints, shown, tolerance
 from ..model import ArmModel
-from ._layout import Bars, DrumLike, Instrument, Target, map_notes
+from ._layout import Bars, DrumLike, Instrument, StrikeSpot, map_notes
 from ._listen import Surface, height_over, surfaces
 from ._loop import Servos, lagged_contact
 from ._onsets import LatencyTable
@@ -204,7 +204,7 @@ def _plan_note(
     arm: ArmModel,
     servos: Servos,
     p: StrikeParams,
-    target: Target,
+    target: StrikeSpot,
     point: F64,
     lag: float,
     cursor: _Cursor,
@@ -232,7 +232,7 @@ def _option(
     arm: ArmModel,
     servos: Servos,
     p: StrikeParams,
-    target: Target,
+    target: StrikeSpot,
     top: float,
     lag: float,
     cursor: _Cursor,
@@ -264,7 +264,7 @@ def _schedule(
     arm: ArmModel,
     servos: Servos,
     p: StrikeParams,
-    target: Target,
+    target: StrikeSpot,
     lag: float,
     cursor: _Cursor,
     o: _Option,
@@ -299,7 +299,7 @@ def _schedule(
 
 
 def _rebound(
-    servos: Servos, p: StrikeParams, at: float, target: Target, o: _Option, cursor: _Cursor
+    servos: Servos, p: StrikeParams, at: float, target: StrikeSpot, o: _Option, cursor: _Cursor
 ) -> None:
     """Append the rebound of ``o``'s stroke, sent at ``at`` [s], back to its hover (a
     timed move: see ``timed_predictor``), and move the cursor to its end."""
@@ -320,7 +320,7 @@ def _behind_loop(
     down: JointProfile,
     top: float,
     lag: float,
-    target: Target,
+    target: StrikeSpot,
 ) -> float:
     """The stroke's start [s] at which the head, behind the servos' first-order loop
     (``Servos.loop``, the commands so far, the travel and the stroke), touches the top

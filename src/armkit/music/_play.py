@@ -17,26 +17,30 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from numpy.typing import ArrayLike
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError, UnreachableError
 from .._inputs import is_number, shown
+from ..arm import Plan, Start, Step, plan_steps
 from ..model import ArmModel
+from ..scene import move_refusal
 from ._chords import check_chords, one_line
 from ._layout import Instrument, RangeError, map_notes
 from ._listen import Listener
 from ._load import load_score
 from ._onsets import Contact, LatencyTable, OnsetStats, onset_stats
-from ._performance import Performance, check_performance
+from ._performance import Move, Performance, check_performance
 from ._plan import plan_performance
 from ._score import Score, tempo_factor
-from ._servos import SERVO_LAG, is_hobby, model_servos, predictors, servo_kind
+from ._servos import SERVO_LAG, predictors, servo_kind
 from ._strike import StrikeParams
 
 if TYPE_CHECKING:
     from ..arm import Arm
     from ..scene import Scene
 
+F64 = NDArray[np.float64]
 MALLET = "mallet"  # the scene's pen that is the mallet (its tip_offset lengthens the tool)
 TAIL_S = 0.3  # time listened after the last command ends [s]
 
@@ -98,7 +102,7 @@ def play(
         ScoreError, RangeError, PerformanceError, UnreachableError, InputError: the
             piece cannot be played as asked; nothing has moved.
     """
-    table = latency or LatencyTable(default=SERVO_LAG[servo_kind(arm)])
+    table = latency or LatencyTable(default=SERVO_LAG[servo_kind(arm.start())])
     performance = prepare(
         arm, scene, file, on, tempo, transpose, table, params, hover=hover, chords=chords
     )
@@ -125,10 +129,10 @@ def prepare(
     check_tempo(tempo)
     check_transpose(transpose)
     instruments(scene, on)
-    kind = servo_kind(arm)
+    start = arm.start()
     return plan_play(
         arm.model, scene, file, on, tempo, transpose,
-        servos=kind, start=arm.driver.read(), latency=latency, params=params, hover=hover,
+        servos=servo_kind(start), start=start.q, latency=latency, params=params, hover=hover,
         chords=chords,
     )  # fmt: skip
 
@@ -155,7 +159,7 @@ def plan_play(
 
     Args:
         model: the arm's model (the scene's mallet lengthens its tool).
-        servos: ``"dynamixel"`` or ``"hobby"`` (default: by the model's drivers).
+        servos: ``"dynamixel"`` or ``"hobby"`` (default: the model's own driver's).
         start: the arm's joints when the piece starts [rad] (default: home).
         script: errors say a tempo and a transposition as a script writes them
             (``tempo 46%``, ``transpose 12``) rather than ``--tempo 0.46``.
@@ -168,16 +172,18 @@ def plan_play(
     factor = check_tempo(tempo, script=script)
     score, layout = score_on(scene, file, on, transpose, chords=chords, script=script)
     mallet = mallet_model(model, scene)
-    predictor, rebound, lag, lead = predictors(servos or model_servos(model), mallet)
+    kind = servos or servo_kind(Start(model, model.home))
+    predictor, rebound, lag, lead = predictors(kind, mallet)
     perf = plan_performance(
         score, layout, mallet, predictor,
         params=strike_params(params or StrikeParams(rebound_delay=lag - lead), hover),
         latency=latency or LatencyTable(default=lag), start=start,
         T_world_base=scene.T_world_base, tempo=factor, rebound=rebound,
-        loop=lag if (servos or model_servos(model)) == "hobby" else 0.0,
+        loop=lag if kind == "hobby" else 0.0,
     )  # fmt: skip
-    check_performance(perf, lambda p: collision(p, scene) is None, script=script)
-    hit = collision(perf, scene)
+    q0 = model.home if start is None else np.asarray(start, dtype=np.float64)
+    check_performance(perf, lambda p: collision(p, scene, q0) is None, script=script)
+    hit = collision(perf, scene, q0)
     if hit is not None:
         raise hit
     return perf
@@ -276,55 +282,66 @@ def mallet_model(model: ArmModel, scene: Scene) -> ArmModel:
     return model.with_tool_length(model.tool_length + extra) if extra else model
 
 
-def check_moves(perf: Performance, scene: Scene) -> None:
-    """UnreachableError naming the note if a pose of the piece puts a link into the
-    table or a scene object (the mallet's own stroke through the bar excepted)."""
-    hit = collision(perf, scene)
-    if hit is not None:
-        raise hit
-
-
-def collision(perf: Performance, scene: Scene) -> UnreachableError | None:
-    """``check_moves``'s refusal, or None."""
-    from ..scene import check_clear
-
+def collision(perf: Performance, scene: Scene, q0: F64) -> UnreachableError | None:
+    """Why the piece is refused on clearance, naming the note, or None: a pose of it, or
+    the way to it from the one before (from ``q0`` [rad] for the first), putting a link
+    into the table or a scene object (``scene.move_refusal``, the rule of every move;
+    instruments are no obstacle: the mallet strikes through their tops)."""
+    before = q0
     for move in perf.moves:
-        hit = check_clear(perf.model, move.q, scene)
+        hit = move_refusal(perf.model, before, move.q[None, :], scene)
         if hit is not None:
             note = perf.strikes[move.strike].target.note
             return UnreachableError(
-                f"{note.name} at {note.onset:.3f} s: the {move.kind} pose puts "
-                f"{hit.describe()}; move the instrument or raise it",
-                reason="collision",
+                f"{note.name} at {note.onset:.3f} s, the {move.kind} pose: {hit}; or move "
+                "the instrument",
+                reason=hit.reason,
             )
+        before = move.q
     return None
 
 
+def performance_plan(start: Start, perf: Performance, scene: Scene) -> Plan:
+    """``perf`` as a plan from ``start`` (checked as ``plan_play`` checks it): every move
+    sent at its time without waiting, the servos' own ramps doing the rest (hobby servos
+    and rebounds: each move lasting its predicted time; else at its speed)."""
+    hit = collision(perf, scene, start.q)
+    if hit is not None:
+        raise hit
+    hobby = servo_kind(start) == "hobby"
+    ends = [m.t for m in perf.moves[1:]] + [perf.moves[-1].t + perf.moves[-1].profile.duration]
+    steps = [_step(perf, m, hobby, end - m.t) for m, end in zip(perf.moves, ends, strict=True)]
+    return plan_steps(start, f"play {perf.source or 'the piece'}", steps)
+
+
+def _step(perf: Performance, move: Move, hobby: bool, seconds: float) -> Step:
+    """``move`` sent at its time, lasting ``seconds`` [s] until the next is sent."""
+    name = perf.strikes[move.strike].target.note.name
+    timed = move.timed or hobby
+    return Step(
+        f"{name}: {move.kind}", q=move.q, at=move.t,
+        duration=move.profile.duration if timed else None,
+        speed=None if timed else move.speed, seconds=seconds,
+    )  # fmt: skip
+
+
 def perform(arm: Arm, scene: Scene, perf: Performance) -> Played:
-    """Send every move of ``perf`` at its time; in the simulator, listen."""
-    world = arm.world
+    """Send every move of ``perf`` at its time (``Arm.run``); in the simulator, listen."""
+    plan = performance_plan(arm.start(), perf, scene)
+    world, clock = arm.world, arm.clock
     listener = Listener(perf.model, scene.instruments, scene.T_world_base)
     detach = world.attach(listener) if world is not None else None
-    clock, servo = arm.clock, is_hobby(arm)
-    begin = clock.now()
+    began: list[float] = []
     try:
-        for move in perf.moves:
-            clock.sleep(max(0.0, begin + move.t - clock.now()))
-            if servo or move.timed:
-                arm.driver.move(move.q, duration=move.profile.duration, wait=False)
-            else:
-                arm.driver.move(move.q, speed=move.speed, wait=False)
+        arm.run(plan, say=lambda k, _: began.append(clock.now()) if k == 1 else None)
         last = max(m.t + m.profile.duration for m in perf.moves)
-        clock.sleep(max(0.0, begin + last + TAIL_S - clock.now()))
-    except BaseException:
-        arm.driver.stop()
-        raise
+        clock.sleep(max(0.0, began[0] + last + TAIL_S - clock.now()))
     finally:
         if detach is not None:
             detach()
     if world is None:
         return Played(perf)
-    heard = tuple(_shifted(c, begin) for c in listener.contacts)
+    heard = tuple(_shifted(c, began[0]) for c in listener.contacts)
     return Played(perf, heard, tuple(listener.dwell), onset_stats(perf.contacts(), heard))
 
 

@@ -50,19 +50,18 @@ class ArmNow:
         """``arm`` as it is: its joints, the cube it holds, its scene's objects (live on a
         simulated arm, else as the script's tasks left them: ``carried``), real or
         simulated, and a timed arm's own timing; ``grip``: the opening a script set [m]."""
-        from ..drivers.timed import TimedDriver
         from ..tasks import objects_now
 
         def live(scene: Scene) -> Scene:
             return objects_now(arm, scene if carried is None else carried)
 
-        timed = arm.driver if isinstance(arm.driver, TimedDriver) else None
+        start = arm.start()
         return cls(
-            q=np.asarray(arm.driver.read(), dtype=np.float64),
+            q=start.q,
             grip=grip,
             held=arm.held,
             live=live,
             hardware=arm.world is None,
-            timing=None if timed is None else timed.timing,
-            motor_s=0.0 if timed is None else timed.state.motor_s,
+            timing=getattr(start.timer, "timing", None),  # a timed arm's (TimedDriver)
+            motor_s=start.motor_s,
         )

@@ -24,6 +24,7 @@ The function is called as ``function(arm, scene, **arguments)`` with
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, Literal
@@ -31,6 +32,7 @@ from typing import Any, Literal
 import numpy as np
 
 from .._errors import ScriptError
+from .._inputs import is_number
 from . import _job_checks as checks
 from ._units import Dim
 
@@ -264,21 +266,27 @@ def job_check(command: str) -> Callable[..., object] | None:
     return JOBS[command].check
 
 
-def as_called(args: dict[str, object]) -> dict[str, object]:
-    """The arguments as the job's function (and its check) takes them: a ``where``
-    point [m], shape (3,), as (x, y, z) [mm]; the rest as they are."""
-    return {k: _in_mm(v) for k, v in args.items()}
+def as_called(command: str, args: dict[str, object]) -> dict[str, object]:
+    """The arguments as ``command``'s function (and its check) takes them, in mm and deg:
+    a ``where`` point [m], shape (3,), as (x, y, z) [mm], an angle [rad] in degrees; the
+    rest as they are."""
+    angles = {p.name for p in JOBS[command].params if p.kind == "angle"}
+    return {k: _in_deg(v) if k in angles else _in_mm(v) for k, v in args.items()}
 
 
 def called_with(command: str, args: dict[str, object], held: str | None) -> dict[str, object]:
     """The keyword arguments ``command``'s function gets: ``as_called``, and for ``place``
     the cube the script's ``pick`` took, ``held`` (ScriptError if none was)."""
-    called = as_called(args)
+    called = as_called(command, args)
     if command != "place":
         return called
     if held is None:
         raise ScriptError(NOTHING_PICKED)
     return {"cube": held, **called}
+
+
+def _in_deg(value: object) -> object:
+    return math.degrees(value) if isinstance(value, float | int) and is_number(value) else value
 
 
 def _in_mm(value: object) -> object:

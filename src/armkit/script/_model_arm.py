@@ -28,7 +28,7 @@ from numpy.typing import NDArray
 from .._errors import UnreachableError
 from .._terminal import count
 from ..drivers.timed import (
-    Forecast,
+    TurnForecast,
     default_timing,
     forecast_move,
     forecast_run,
@@ -322,7 +322,7 @@ class ModelArm:
             abs(width - (self.model.gripper.width_max if before is None else before)) / GRIP_SPEED
         )
 
-    def _forecast(self, ahead: Forecast) -> None:
+    def _forecast(self, ahead: TurnForecast) -> None:
         """Step to where a timed arm's driver will estimate it after ``ahead``'s runs."""
         self.state = replace(self.state, motor_s=ahead.motor_s)
         self._step(ahead.q, ahead.seconds)

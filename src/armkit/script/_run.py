@@ -12,7 +12,7 @@ from typing import TypeVar
 
 import numpy as np
 
-from .._errors import DeviceError, ScriptError
+from .._errors import ScriptError
 from ..arm import Arm
 from ..kinematics import fk
 from ..motion import TimedStreaming, line
@@ -50,7 +50,7 @@ class ArmBackend:
             self.on_step(stmt, frames)
 
     def here(self) -> JointPose | None:
-        return JointPose(np.asarray(self.arm.driver.read(), dtype=np.float64))
+        return JointPose(self.arm.read())
 
     def move(self, target: Target | None, straight: bool) -> None:
         if target is None:
@@ -93,12 +93,10 @@ class ArmBackend:
             self.fraction = _known(value, "the speed")
 
     def light(self, on: bool) -> None:
-        _driver_call(self.arm, "set_light", "a light")(on)
+        self.arm.set_light(on)
 
     def run_motor(self, joint: str, direction: int, seconds: float | None) -> None:
-        _driver_call(self.arm, "turn_for", "timed motors")(
-            joint, direction, _known(seconds, "the time")
-        )
+        self.arm.run_motor(joint, direction, _known(seconds, "the time"))
 
     def job(self, command: str, args: dict[str, object]) -> None:
         done = job_function(command)(
@@ -156,7 +154,7 @@ class ArmBackend:
             if self.grip_width is None
             else self.arm.model.with_grip_width(self.grip_width)
         )
-        start = np.asarray(fk(kin, self.arm.driver.read())[:3, 3], dtype=np.float64)
+        start = np.asarray(fk(kin, self.arm.read())[:3, 3], dtype=np.float64)
         if isinstance(target, Point):
             goal, pitch = target.xyz, target.pitch
         else:
@@ -172,13 +170,6 @@ def _known(value: T | None, what: str) -> T:
     if value is None:  # the check resolves every value before anything runs
         raise ScriptError(f"{what} is not known when this statement runs")
     return value
-
-
-def _driver_call(arm: Arm, name: str, what: str) -> Callable[..., None]:
-    func = getattr(arm.driver, name, None)
-    if not callable(func):
-        raise DeviceError(f"the {type(arm.driver).__name__} driver has no {what}")
-    return func  # type: ignore[no-any-return]
 
 
 def run_source(

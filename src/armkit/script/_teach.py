@@ -38,8 +38,7 @@ def joints_line(q: F64) -> str:
 def pose_now(arm: Arm) -> F64:
     """The arm's joint angles [rad], shape (dof,), clipped into the limits (a servo
     resting a hair past its limit still replays)."""
-    q = np.asarray(arm.driver.read(), dtype=np.float64)
-    return np.clip(q, arm.model.lower, arm.model.upper)
+    return np.clip(arm.read(), arm.model.lower, arm.model.upper)
 
 
 @dataclass
@@ -132,9 +131,8 @@ class Jog:
     def _turn(self, j: int, direction: int) -> str | None:
         name = self.arm.model.joint_names[j]
         try:
-            turn_for = getattr(self.arm.driver, "turn_for", None)
-            if self.arm.model.gripper.kind == "timed" and callable(turn_for):
-                turn_for(name, direction, OWI_STEP_S)
+            if self.arm.moves == "timed":
+                self.arm.run_motor(name, direction, OWI_STEP_S)
             else:
                 self.arm.turn_by(name, direction * self.step)
         except (ArmkitError, ValueError) as exc:
@@ -150,11 +148,10 @@ class Jog:
         return None
 
     def _light(self, on: bool) -> str | None:
-        set_light = getattr(self.arm.driver, "set_light", None)
-        if not callable(set_light):
+        if not self.arm.has_light:
             return f"{self.arm.model.name} has no light"
         self._flush()
-        set_light(on)
+        self.arm.set_light(on)
         self.lines.append("light on" if on else "light off")
         return None
 
@@ -175,12 +172,10 @@ def torque(arm: Arm, on: bool) -> None:
     """Torque on (``on``) or off on every servo of ``arm`` where its driver allows it
     (the Dynamixel's Torque Enable register): off, the arm can be moved by hand and
     ``read()`` still gives its true angles. ArmkitError, nothing sent, where it cannot."""
-    driver = arm.driver
-    method = getattr(driver, "stiffen" if on else "relax", None)
-    # ``stiffen`` (torque on where the servo is) exists only where positions can be read
-    # while limp; hobby servos can ``relax`` (no pulses) but never report where they are
-    if callable(method) and callable(getattr(driver, "stiffen", None)):
-        method()
+    # torque on where the servo is exists only where positions can be read while limp;
+    # hobby servos can ``relax`` (no pulses) but never report where they are
+    if arm.can_go_limp:
+        arm.stiffen() if on else arm.relax()
         return
     raise ArmkitError(f"limp: {arm.model.name}: {_why_no_limp(arm)}; teach it with jog instead")
 
@@ -191,8 +186,9 @@ def _why_no_limp(arm: Arm) -> str:
             "its DC motors have no torque off and no encoders (armkit only estimates "
             "its angles from time), so a pose moved by hand could not be read back"
         )
-    bus = str(getattr(getattr(arm.driver, "bus", None), "name", ""))
-    on = "".join(f" on the {kind.title}" for kind in kinds_with("hobby") if kind.name == bus)
+    on = "".join(
+        f" on the {kind.title}" for kind in kinds_with("hobby") if kind.name == arm.controller
+    )
     return (
         f"its hobby servos{on} report no position and take no torque-off command, "
         "so a pose moved by hand could not be read back"

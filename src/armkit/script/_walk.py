@@ -156,7 +156,7 @@ class Walker:
             model, here = self.resolver.model, self.backend.here()
             arm["arm"] = Start(model, model.home if here is None else here.q)
         try:
-            check(scene, **as_called(args), **arm)
+            check(scene, **as_called(s.command, args), **arm)
         except JobArgProblem as exc:
             at = [a.loc for name in exc.names for a in s.args if a.name == name]
             raise Fail(at[0] if at else s.loc, str(exc)) from None

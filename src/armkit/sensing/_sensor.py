@@ -34,12 +34,6 @@ class DistanceSensor:
         return distance(self.read())
 
 
-def ssc32_of(arm: Arm) -> Any:
-    """The SSC-32 device behind ``arm``'s driver, or None."""
-    device = getattr(getattr(arm.driver, "bus", None), "device", None)
-    return device if callable(getattr(device, "read_analog", None)) else None
-
-
 @contextlib.contextmanager
 def open_sensor(
     arm: Arm, channel: int = 0, port: str | None = None, lock: Any = None
@@ -51,7 +45,7 @@ def open_sensor(
     Raises:
         DeviceError: no SSC-32 and no port on real hardware, or the board is silent.
     """
-    ssc32 = ssc32_of(arm)
+    ssc32 = arm.analog_inputs()
     if ssc32 is not None:
         yield DistanceSensor(
             lambda: float(ssc32.read_analog(channel)), f"SSC-32 V{'ABCD'[channel]}"
@@ -59,14 +53,13 @@ def open_sensor(
         return
     emulator = None
     if port is None:
-        world = arm.world
-        sims = [] if world is None else [a for a in world.arms() if a.model.name == arm.model.name]
-        if not sims:
+        sim = arm.sim
+        if sim is None:
             raise DeviceError(
                 f"the {arm.model.name} has no SSC-32: give the port of the ADC board "
                 "the distance sensor is wired to"
             )
-        emulator = AdcEmulator(sims[0].analog, lock)
+        emulator = AdcEmulator(sim.analog, lock)
         port = emulator.port
     board = AdcBoard(port)
     try:

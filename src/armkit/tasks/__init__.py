@@ -3,6 +3,8 @@
 check -- before anything moves; ``dry_run=True`` returns the plan only, and a ``Start`` (a
 model and its joints) in place of the arm plans without one."""
 
+from ..arm import GRIP_S as GRIP_S
+from ..arm import Start as Start
 from ._calibration import Calibration as Calibration
 from ._calibration import CalibrationError as CalibrationError
 from ._calibration import default_calibration_file as default_calibration_file
@@ -20,18 +22,16 @@ from ._live import attached as attached
 from ._live import held_now as held_now
 from ._live import objects_now as objects_now
 from ._live import obstacles_now as obstacles_now
-from ._live import run_checked as run_checked
+from ._live import run_plan as run_plan
+from ._live import run_verified as run_verified
 from ._plan import Plan as Plan
 from ._plan import Step as Step
 from ._plan import TaskError as TaskError
 from ._reach import ReachResult as ReachResult
 from ._reach import reach as reach
-from ._run import GRIP_S as GRIP_S
-from ._run import run_plan as run_plan
 from ._search import SearchResult as SearchResult
 from ._search import check_angles as check_angles
 from ._search import only_container as only_container
 from ._search import search as search
-from ._start import Start as Start
-from ._targets import Target as Target
+from ._targets import Destination as Destination
 from ._targets import resolve as resolve

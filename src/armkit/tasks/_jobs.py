@@ -16,17 +16,17 @@ import numpy as np
 
 from .._errors import InputError
 from .._inputs import is_number, shown
+from ..arm import Start, plan_steps
 from ..kinematics import fk
 from ..scene import Cube, Scene
 from ._calibration import Calibration, calibration_for
 from ._choose import carry, pick_any, place_any, rotate
-from ._live import live_scene, run_checked
+from ._live import live_scene, run_verified
 from ._plan import Plan, TaskError
 from ._points import move_point
 from ._precision import precision_of
-from ._start import Start
 from ._state import Context, Options, State
-from ._targets import Target, resolve, taken_by
+from ._targets import Destination, resolve, taken_by
 
 if TYPE_CHECKING:
     from ..arm import Arm
@@ -67,20 +67,23 @@ def plan_task(
     waypoints = precision_of(arm.model).waypoints  # the OWI: fewer, longer runs down
     options = Options(clearance=clearance / 1000.0, waypoints=waypoints, calibration=cal)
     ctx = Context(arm.model, options, task)
-    start = time.perf_counter()
-    q0 = arm.q.copy() if isinstance(arm, Start) else arm.driver.read()
-    st = State(q0, scene, None, None)
+    began = time.perf_counter()
+    start = arm if isinstance(arm, Start) else arm.start()
+    st = State(start.q, scene, None, None)
+    first = start.then(scene=scene, held=None)
     if held is not None:
         picked = pick_any(ctx, st, held, None)
         st = replace(st, held=picked.held, scene=picked.scene, opening=arm.model.gripper.width_min)
+        first = first.then(held=st.held, scene=st.scene, grip=st.opening, jaws=None)
     st = body(ctx, st)
     after = (
         st.scene
         if st.held is None
         else replace(st.scene, cubes=(*st.scene.cubes, _carried(ctx, st)))
     )
-    took = time.perf_counter() - start
-    return Plan(task, arm.model.name, st.steps, q0, scene, after, took, st.held)
+    end = first.then(held=st.held, scene=st.scene)
+    took = time.perf_counter() - began
+    return plan_steps(first, task, st.steps, end=end, after=after, planning_time=took)
 
 
 def _carried(ctx: Context, st: State) -> Cube:
@@ -91,7 +94,7 @@ def _carried(ctx: Context, st: State) -> Cube:
     return st.held.cube.moved(T)
 
 
-def _free(scene: Scene, target: Target, moving: str | None, task: str) -> Target:
+def _free(scene: Scene, target: Destination, moving: str | None, task: str) -> Destination:
     """``target`` if no other cube stands there; TaskError naming the one that does."""
     if moving is not None and target.label == f"on {moving}":
         raise TaskError(f"{task}: {moving} cannot go on itself; choose another place", step=task)
@@ -127,7 +130,7 @@ def _check_clearance(clearance: float) -> None:
 def _done(arm: Arm | Start, plan: Plan, dry_run: bool) -> Plan:
     """The plan, after running it on ``arm`` unless ``dry_run`` (a ``Start`` only plans)."""
     if not dry_run and not isinstance(arm, Start):
-        run_checked(arm, plan)
+        run_verified(arm, plan)
     return plan
 
 

@@ -17,7 +17,6 @@ from ..scene import Scene
 from ..sensing import DistanceSensor
 from ._live import live_scene
 from ._plan import TaskError
-from ._run import settle
 from ._scan import Scan, locate, plan_scan, scan_sensor
 from ._search import check_angles
 
@@ -59,27 +58,29 @@ def reach(
     arm: Arm,
     scene: Scene,
     *,
-    height: float = 0.11,
-    near: float = 0.06,
+    height: float = 110.0,
+    near: float = 60.0,
     shakes: int = 3,
-    amplitude: float = 0.015,
-    start: float = math.radians(30.0),
-    stop: float = math.radians(120.0),
-    step: float = math.radians(5.0),
+    amplitude: float = 15.0,
+    start: float = 30.0,
+    stop: float = 120.0,
+    step: float = 5.0,
     channel: int = 0,
     port: str | None = None,
     seed: int = 3,
 ) -> ReachResult:
-    """003: scan at ``height`` [m] for a hand, approach until the sensor reads ``near``
-    [m] (0.04..0.30), shake ``shakes`` times by ``amplitude`` [m] up and down, go home.
+    """003: scan at ``height`` [mm] (0..500) for a hand along the arc from ``start`` to
+    ``stop`` every ``step`` [deg] (002's servo angles, as ``search``), approach until the
+    sensor reads ``near`` [mm] (40..300), shake ``shakes`` times by ``amplitude`` [mm] up
+    and down, go home.
 
     Raises:
         TaskError: the scan is unreachable or would collide (nothing moves), or the
             hand is out of reach (the arm stops where it got to and says how far).
         ValueError: a bad argument.
     """
-    check_angles(start, stop, step)
-    _check(near, shakes, amplitude)
+    start, stop, step = check_angles(start, stop, step)
+    height, near, amplitude = _check(height, near, shakes, amplitude)
     scene = live_scene(arm, scene, False, "reach")
     scan = plan_scan(arm, scene, start, stop, step, height)
     with scan_sensor(arm, scan, channel, port, seed) as sensor:
@@ -95,18 +96,21 @@ def reach(
     return ReachResult(True, angle, d, steps, shakes, via)
 
 
-def _check(near: float, shakes: int, amplitude: float) -> None:
-    numbers = is_number(near) and is_number(amplitude)
+def _check(height: float, near: float, shakes: int, amplitude: float) -> tuple[float, float, float]:
+    """The reach's distances [mm] checked, in metres (InputError otherwise)."""
+    numbers = all(is_number(v) and math.isfinite(v) for v in (height, near, amplitude))
     if not (numbers and isinstance(shakes, int | np.integer) and not isinstance(shakes, bool)):
         raise InputError(
-            f"reach needs near and amplitude numbers [m] and shakes a whole number; got near "
-            f"{shown(near)}, shakes {shown(shakes)}, amplitude {shown(amplitude)}"
+            f"reach needs height, near and amplitude numbers [mm] and shakes a whole number; "
+            f"got height {shown(height)}, near {shown(near)}, shakes {shown(shakes)}, "
+            f"amplitude {shown(amplitude)}"
         )
-    if not (0.04 <= near <= 0.30 and 0 <= shakes <= 20 and 0 < amplitude <= 0.05):
+    if not (0 < height <= 500 and 40 <= near <= 300 and 0 <= shakes <= 20 and 0 < amplitude <= 50):
         raise InputError(
-            f"reach needs near 40..300 mm, shakes 0..20, amplitude 0..50 mm; got near "
-            f"{near * 1000:g} mm, shakes {shakes}, amplitude {amplitude * 1000:g} mm"
+            f"reach needs height 0..500 mm, near 40..300 mm, shakes 0..20, amplitude 0..50 mm; "
+            f"got height {height:g} mm, near {near:g} mm, shakes {shakes}, amplitude {amplitude:g} mm"
         )
+    return height / 1000.0, near / 1000.0, amplitude / 1000.0
 
 
 def _approach(
@@ -118,14 +122,14 @@ def _approach(
     while d > near + 1e-3:
         radius += min(APPROACH_STEP, d - near)
         try:
-            q = scan.joints(angle, arm.driver.read(), radius)
+            q = scan.joints(angle, arm.read(), radius)
         except TaskError:
             raise TaskError(
                 f"reach: the hand is {d * 1000:.0f} mm away and the arm can come no nearer",
                 step=f"approach step {steps + 1}",
             ) from None
         arm.move_joints(np.degrees(q).tolist())
-        settle(arm)
+        arm.settle()
         steps += 1
         now = sensor.distance()
         if now is None:
@@ -136,7 +140,7 @@ def _approach(
 
 def _shake(arm: Arm, scan: Scan, angle: float, radius: float, shakes: int, amp: float) -> None:
     """Up ``amp`` [m], down ``amp``, ``shakes`` times, then level again."""
-    seed = arm.driver.read()
+    seed = arm.read()
     poses = [scan.joints(angle, seed, radius, dz) for dz in (amp, -amp, 0.0)]
     for _ in range(shakes):
         for q in poses:

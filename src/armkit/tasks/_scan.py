@@ -20,7 +20,6 @@ from ..scene import Scene
 from ..sensing import RANGE, DistanceSensor, SensorMount, install_sensor, open_sensor, volts
 from ._live import attached
 from ._plan import TaskError
-from ._run import settle
 from ._state import Context, Options, State, moves, solve
 
 if TYPE_CHECKING:
@@ -67,9 +66,9 @@ class Scan:
         """Turn to each of ``angles`` [rad] and read the sensor: [(angle, volts)]."""
         out = []
         for a in angles:
-            q = self.joints(float(a), arm.driver.read())
+            q = self.joints(float(a), arm.read())
             arm.move_joints(np.degrees(q).tolist())
-            settle(arm)  # the reading is taken standing still
+            arm.settle()  # the reading is taken standing still
             out.append((float(a), sensor.read()))
         self.readings.extend(out)
         return out
@@ -77,7 +76,7 @@ class Scan:
     def object_at(self, arm: Arm, angle: float, distance: float, size: float) -> F64:
         """The bottom centre [m] (3,) of a cube of ``size`` [m] whose near face the beam
         meets ``distance`` [m] out at ``angle`` [rad]."""
-        q = self.joints(angle, arm.driver.read())
+        q = self.joints(angle, arm.read())
         origin, d = self.mount.beam(self.scene.T_world_base @ fk(self.kin, q))
         level = np.array([d[0], d[1], 0.0]) / max(float(np.hypot(d[0], d[1])), 1e-9)
         centre = origin + distance * d + level * size / 2.0
@@ -147,9 +146,7 @@ def plan_scan(
             points = np.array([scan.point(float(a)) for a in angles])
             labels = [f"scan at {math.degrees(a):.0f} deg" for a in angles]
             try:
-                moves(
-                    ctx, State(arm.driver.read(), scene, None, None), points, pitch, labels, kin=kin
-                )
+                moves(ctx, State(arm.read(), scene, None, None), points, pitch, labels, kin=kin)
             except TaskError as exc:
                 first = first or exc
                 continue

@@ -14,11 +14,14 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
+from .._inputs import is_number, shown
 from .._terminal import count
-from ..scene import Container, Cube, Scene
+from ..kinematics import fk
+from ..model import ArmModel
+from ..scene import Container, Cube, Scene, settle
 from ._choose import pick_any
 from ._jobs import plan_task
-from ._live import TaskFailed, attached, live_scene, run_checked
+from ._live import TaskFailed, attached, live_scene, run_verified
 from ._plan import Plan, TaskError, cube_text
 from ._scan import locate, plan_scan, scan_sensor
 from ._state import Context, State, down, grip
@@ -77,15 +80,15 @@ def search(
     arm: Arm,
     scene: Scene,
     *,
-    start: float = math.radians(30.0),
-    stop: float = math.radians(120.0),
-    step: float = math.radians(5.0),
+    start: float = 30.0,
+    stop: float = 120.0,
+    step: float = 5.0,
     into: str | None = None,
     channel: int = 0,
     port: str | None = None,
     seed: int = 2,
 ) -> SearchResult:
-    """002: scan from ``start`` to ``stop`` every ``step`` [rad] (002's servo angles),
+    """002: scan from ``start`` to ``stop`` every ``step`` [deg] (002's servo angles),
     then back in 1 deg steps round the best reading, pick what is there up and drop it
     in the container ``into`` (None: the scene's only container), rest, servos off.
 
@@ -97,7 +100,7 @@ def search(
             for the scan; the arm stops after it for the pick).
         ValueError: bad angles or container.
     """
-    check_angles(start, stop, step)
+    start, stop, step = check_angles(start, stop, step)
     scene = live_scene(arm, scene, False, "search")
     bin_name = into or only_container(scene)
     scene.container(bin_name)
@@ -110,21 +113,28 @@ def search(
     angle, dist = found
     position = scan.object_at(arm, angle, dist, _size(arm))
     plan = _fetch(arm, scene, position, bin_name)
-    run_checked(arm, plan, poses=False, allow=("dropped", "tipped"))
+    run_verified(arm, plan, poses=False, allow=("dropped", "tipped"))
     _check_inside(arm, plan, scene.container(bin_name))
     readings = tuple(scan.readings)
     return SearchResult(True, angle, dist, position, readings, plan, _rest(arm), via)
 
 
-def check_angles(start: float, stop: float, step: float) -> None:
+def check_angles(start: float, stop: float, step: float) -> tuple[float, float, float]:
+    """A scan's arc from ``start`` to ``stop`` every ``step`` [deg] (002's servo angles),
+    checked (InputError otherwise), in radians."""
     values = (start, stop, step)
-    inside = all(0.0 <= a <= math.pi for a in (start, stop))
-    if not all(math.isfinite(v) for v in values) or not inside or not 0 < step <= abs(stop - start):
+    numbers = all(is_number(v) and math.isfinite(v) for v in values)
+    if (
+        not numbers
+        or not all(0.0 <= a <= 180.0 for a in (start, stop))
+        or not 0 < step <= abs(stop - start)
+    ):
         raise InputError(
             f"search scans from and to 0..180 deg (002's base servo, 90 straight ahead) with "
-            f"0 < step <= |to - from|; got from {math.degrees(start):g} to "
-            f"{math.degrees(stop):g} step {math.degrees(step):g} deg"
+            f"0 < step <= |to - from|; got from {shown(start)} to {shown(stop)} step "
+            f"{shown(step)} deg"
         )
+    return math.radians(start), math.radians(stop), math.radians(step)
 
 
 def only_container(scene: Scene) -> str:
@@ -175,10 +185,19 @@ def _drop(ctx: Context, st: State, box: Container, size: float) -> State:
         except TaskError as exc:
             first = first or exc
             continue
-        opening = ctx.model.gripper.width_max
-        return grip(ctx, st, opening, f"drop it in {box.name}")
+        st = grip(ctx, st, ctx.model.gripper.width_max, f"drop it in {box.name}")
+        return _let_go(st, kin)
     assert first is not None
     raise first
+
+
+def _let_go(st: State, kin: ArmModel) -> State:
+    """The held cube let go where the jaws hold it: it settles (``scene.settle``) and is
+    held no more."""
+    assert st.held is not None
+    T = st.scene.T_world_base @ fk(kin, st.q) @ st.held.T_tool_object
+    rest = settle(st.scene, st.held.cube, T)
+    return replace(st, held=None, scene=replace(st.scene, cubes=(*st.scene.cubes, rest.cube)))
 
 
 def _check_inside(arm: Arm, plan: Plan, box: Container) -> None:
@@ -199,8 +218,4 @@ def _check_inside(arm: Arm, plan: Plan, box: Container) -> None:
 def _rest(arm: Arm) -> bool:
     """Back to the model's home, then the motors off if the driver can (002's uM-PWM1)."""
     arm.home()
-    relax = getattr(arm.driver, "relax", None)
-    if callable(relax):
-        relax()
-        return True
-    return False
+    return arm.relax()

@@ -66,7 +66,7 @@ class Context:
 
 def grip(ctx: Context, st: State, width: float, label: str) -> State:
     """Command the gripper to ``width`` [m] (nothing is checked: the jaws move only)."""
-    step = Step(label, grip=width, holding=_name(st.held))
+    step = Step(label, grip=width, holding=_name(st.held), settle=True)
     return replace(st, opening=width, steps=(*st.steps, step))
 
 

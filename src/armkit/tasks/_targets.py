@@ -18,7 +18,7 @@ _SOCKET = re.compile(r"^\s*([\w-]+)\s*\[\s*(\d+)\s*,\s*(\d+)\s*\]\s*$")
 
 
 @dataclass(frozen=True)
-class Target:
+class Destination:
     """Where the lowest face's centre of a cube goes (scene frame) [m], (3,), how
     to say it (``"in board[0, 1]"``), and the pitch the scene asks for [rad] or None."""
 
@@ -27,7 +27,7 @@ class Target:
     pitch: float | None = None
 
 
-def resolve(scene: Scene, to: str | Sequence[float]) -> Target:
+def resolve(scene: Scene, to: str | Sequence[float]) -> Destination:
     """A target from a name in the scene (a place, ``board[row, col]``, a cube to
     stack on, a container) or from ``(x, y, z)`` [mm] in the scene frame.
 
@@ -38,21 +38,21 @@ def resolve(scene: Scene, to: str | Sequence[float]) -> Target:
         p = np.asarray(to, dtype=np.float64)
         if p.shape != (3,) or not np.all(np.isfinite(p)) or np.any(np.abs(p) > 10_000):
             raise InputError(f"a target point is 3 finite coordinates in mm, got {to!r}")
-        return Target(p / 1000.0, "at ({:.1f}, {:.1f}, {:.1f}) mm".format(*p))
+        return Destination(p / 1000.0, "at ({:.1f}, {:.1f}, {:.1f}) mm".format(*p))
     socket = _SOCKET.match(to)
     if socket:
         board = scene.board(socket.group(1))
         row, col = int(socket.group(2)), int(socket.group(3))
-        return Target(board.socket(row, col), f"in {board.name}[{row}, {col}]")
+        return Destination(board.socket(row, col), f"in {board.name}[{row}, {col}]")
     for place in scene.places:
         if place.name == to:
-            return Target(place.position, f"at {to}", place.pitch)
+            return Destination(place.position, f"at {to}", place.pitch)
     for cube in scene.cubes:
         if cube.name == to:
-            return Target(cube.position + np.array([0.0, 0.0, cube.size]), f"on {to}")
+            return Destination(cube.position + np.array([0.0, 0.0, cube.size]), f"on {to}")
     for box in scene.containers:
         if box.name == to:
-            return Target(np.array([*box.position[:2], box.floor_z]), f"in {to}")
+            return Destination(np.array([*box.position[:2], box.floor_z]), f"in {to}")
     for board in scene.boards:
         if board.name == to:
             raise InputError(
@@ -65,7 +65,7 @@ def resolve(scene: Scene, to: str | Sequence[float]) -> Target:
     )
 
 
-def taken_by(scene: Scene, target: Target, moving: str | None) -> str | None:
+def taken_by(scene: Scene, target: Destination, moving: str | None) -> str | None:
     """The cube (other than ``moving``) that stands where ``target`` puts a cube's bottom
     (its own bottom within 1 mm of that height, overlapping it), or None if it is free."""
     size = next((c.size for c in scene.cubes if c.name == moving), 0.0)

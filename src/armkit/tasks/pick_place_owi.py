@@ -6,43 +6,37 @@ arm off the table."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
-
-import numpy as np
-from numpy.typing import ArrayLike
+from collections.abc import Callable, Sequence
 
 from .._errors import InputError
+from .._inputs import is_number, shown
 from ..arm import Arm
-from ..drivers.timed import TimedDriver
-from ..model import ArmModel
 from ..scene import Scene
 from ._jobs import move_item
-from ._run import run_plan
+from ._live import run_plan
 
-LIFT_M = 0.04  # how high above A and B the gripper travels [m]
+LIFT_MM = 40.0  # how high above A and B the gripper travels [mm]
 
 
 def pick_place(
-    model: ArmModel,
-    driver: TimedDriver,
-    a_m: ArrayLike,
-    b_m: ArrayLike,
+    arm: Arm,
+    a: Sequence[float],
+    b: Sequence[float],
     *,
-    lift_m: float = LIFT_M,
+    lift: float = LIFT_MM,
     say: Callable[[str], None] | None = None,
 ) -> None:
-    """Pick up the item whose grip point is ``a_m`` and put it down at ``b_m`` [m], (3,).
+    """Pick up the item whose grip point is ``a`` and put it down at ``b``, (x, y, z)
+    [mm], travelling ``lift`` [mm] (30..500) above them; ``say`` tells each step.
 
     Raises:
         TaskError: (an ``UnreachableError``) a step is out of reach or puts the arm
             in the table; it names the step and nothing moves.
     """
-    a = np.asarray(a_m, dtype=float) * 1000.0
-    b = np.asarray(b_m, dtype=float) * 1000.0
-    arm = Arm(model, driver)
-    lift = lift_m * 1000.0
-    if not 30.0 <= lift <= 500.0:
-        raise InputError(f"lift must be 30..500 mm (001: at least 30 above A and B), got {lift:g}")
+    if not (is_number(lift) and 30.0 <= lift <= 500.0):
+        raise InputError(
+            f"lift must be 30..500 mm (001: at least 30 above A and B), got {shown(lift)}"
+        )
     plan = move_item(
         arm, Scene("table"), tuple(a), tuple(b), lift=lift, clearance=lift, dry_run=True
     )

@@ -37,9 +37,9 @@ from ._mover import Goal as Goal
 from ._mover import Mover as Mover
 from ._pose import plot_pose as plot_pose
 from ._scene_shapes import scene_primitives as scene_primitives
-from ._state import ArmState as ArmState
-from ._state import DriverSource as DriverSource
+from ._state import ArmSource as ArmSource
 from ._state import ObjectPose as ObjectPose
+from ._state import Snapshot as Snapshot
 from ._state import StateSource as StateSource
 from ._state import WorldSource as WorldSource
 from ._state import cubes as cubes

@@ -28,7 +28,7 @@ from ..scene import Scene, ScenePhysics, cube_primitive
 from ._arm_shapes import TRAIL_COLOUR, arm_primitives, reach_of, table_primitive
 from ._ink import Ink
 from ._scene_shapes import scene_primitives
-from ._state import ArmState, Truth, cubes
+from ._state import Snapshot, Truth, cubes
 from ._target import check_target
 
 if TYPE_CHECKING:
@@ -47,7 +47,7 @@ class GifRecorder:
 
     def __init__(self, arm: Truth, fps: float, physics: ScenePhysics | None = None) -> None:
         self.arm, self.fps, self.physics = arm, fps, physics
-        self.frames: list[ArmState] = []
+        self.frames: list[Snapshot] = []
         self._next = -1.0
 
     def on_step(self, world: World, t: float) -> None:
@@ -55,7 +55,7 @@ class GifRecorder:
         if t < self._next:
             return
         self._next = t + 1.0 / self.fps - 1e-9
-        self.frames.append(ArmState(t, self.arm.q(), self.arm.grip(), cubes(self.physics)))
+        self.frames.append(Snapshot(t, self.arm.q(), self.arm.grip(), cubes(self.physics)))
         if len(self.frames) > MOST_FRAMES:
             self.frames = self.frames[::2]
             self.fps /= 2.0
@@ -81,7 +81,7 @@ def default_tour(model: ArmModel, scene: Scene | None = None) -> list[F64]:
     return [*tour, model.home]
 
 
-def record_path(arm: Arm, poses: Sequence[F64], fps: float) -> list[ArmState]:
+def record_path(arm: Arm, poses: Sequence[F64], fps: float) -> list[Snapshot]:
     """Move the simulated ``arm`` through ``poses`` [rad] (each (dof,)), resting
     ``HOLD`` s at each, recording its truth ``fps`` times per simulated second."""
     world = arm.world
@@ -103,7 +103,7 @@ def record_path(arm: Arm, poses: Sequence[F64], fps: float) -> list[ArmState]:
 
 def write_gif(
     model: ArmModel,
-    frames: Sequence[ArmState],
+    frames: Sequence[Snapshot],
     path: str | Path,
     *,
     scene: Scene | None = None,
@@ -138,7 +138,7 @@ def write_gif(
 
 def write_picture(
     model: ArmModel,
-    state: ArmState,
+    state: Snapshot,
     path: str | Path,
     *,
     scene: Scene | None = None,
@@ -155,7 +155,7 @@ def write_picture(
     return out
 
 
-def shapes_of(model: ArmModel, state: ArmState, scene: Scene | None) -> list[Primitive]:
+def shapes_of(model: ArmModel, state: Snapshot, scene: Scene | None) -> list[Primitive]:
     """The table, ``scene`` with its cubes where ``state`` has them, and the arm."""
     T = np.eye(4) if scene is None else scene.T_world_base
     shapes = {p.name: p for p in [table_primitive(model, scene), *(scene_primitives(scene) if scene else [])]}  # fmt: skip

@@ -36,7 +36,7 @@ from numpy.typing import NDArray
 from .._errors import ArmkitError, InputError
 from .._files import write_atomic
 from ..model import ArmModel
-from ._state import ArmState, ObjectPose, Truth
+from ._state import ObjectPose, Snapshot, Truth
 
 if TYPE_CHECKING:
     from ..connect import World
@@ -92,7 +92,7 @@ class LivePublisher:
     def publish(self) -> None:
         """Write the live file now; its time is the wall clock's (``time.monotonic``, the
         same in every process), so a follower knows how old what it shows is."""
-        state = ArmState(time.monotonic(), self.arm.q(), self.arm.grip(), self.objects())
+        state = Snapshot(time.monotonic(), self.arm.q(), self.arm.grip(), self.objects())
         write_atomic(self.live, encode(state), durable=False)
 
     def _watched(self) -> bool:
@@ -131,14 +131,14 @@ def publisher_of(world: World) -> LivePublisher | None:
 _PUBLISHERS: weakref.WeakKeyDictionary[World, LivePublisher] = weakref.WeakKeyDictionary()
 
 
-def encode(state: ArmState) -> str:
+def encode(state: Snapshot) -> str:
     """One snapshot as JSON (SI units)."""
     objects = [{"name": o.name, "T": o.T.ravel().tolist()} for o in state.objects]
     data = {"t": state.t, "q": state.q.tolist(), "grip": state.grip, "objects": objects}
     return json.dumps(data)
 
 
-def decode(text: str, dof: int) -> ArmState:
+def decode(text: str, dof: int) -> Snapshot:
     """A snapshot back from ``encode`` (ValueError if it is not one for ``dof`` joints)."""
     data = json.loads(text)
     q = np.array(data["q"], dtype=np.float64)
@@ -148,13 +148,13 @@ def decode(text: str, dof: int) -> ArmState:
         ObjectPose(str(o["name"]), np.array(o["T"], dtype=np.float64).reshape(4, 4))
         for o in data["objects"]
     )
-    return ArmState(float(data["t"]), q, float(data["grip"]), objects)
+    return Snapshot(float(data["t"]), q, float(data["grip"]), objects)
 
 
 @dataclass
 class _Seen:
     stamp: tuple[int, int]  # (mtime_ns, size) of the file read
-    state: ArmState
+    state: Snapshot
 
 
 class LiveSource:
@@ -178,7 +178,7 @@ class LiveSource:
         """Wall time [s] (``time.monotonic``)."""
         return time.monotonic()
 
-    def state(self, t: float | None = None) -> ArmState:
+    def state(self, t: float | None = None) -> Snapshot:
         """The newest of the live snapshot and the kept state (home if neither exists);
         its ``t`` is when the other process published it [s, ``time.monotonic``]."""
         if t is not None:
@@ -189,11 +189,11 @@ class LiveSource:
             (s for s in (live, kept) if s is not None), key=lambda s: s.stamp, default=None
         )
         if newest is None:
-            return ArmState(self.now(), self.model.home.copy(), self.model.gripper.width_max)
+            return Snapshot(self.now(), self.model.home.copy(), self.model.gripper.width_max)
         if newest.state.objects:
             self._objects = newest.state.objects
         found = newest.state
-        return ArmState(found.t, found.q, found.grip, self._objects)
+        return Snapshot(found.t, found.q, found.grip, self._objects)
 
     def close(self) -> None:
         """Stop following (the publisher stops writing within ``FOLLOWED_S``)."""
@@ -205,7 +205,7 @@ class LiveSource:
             self._touched = time.monotonic()
             write_atomic(self.follow, f"{os.getpid()}\n", durable=False)
 
-    def _read(self, path: Path, parse: Callable[[str], ArmState]) -> _Seen | None:
+    def _read(self, path: Path, parse: Callable[[str], Snapshot]) -> _Seen | None:
         try:
             st = path.stat()
             stamp = (st.st_mtime_ns, st.st_size)
@@ -217,12 +217,12 @@ class LiveSource:
         except (OSError, ValueError, KeyError, TypeError):
             return self._seen.get(path)
 
-    def _live(self, text: str) -> ArmState:
+    def _live(self, text: str) -> Snapshot:
         return decode(text, self.model.dof)
 
-    def _kept(self, text: str) -> ArmState:
+    def _kept(self, text: str) -> Snapshot:
         data = json.loads(text)
         q = np.radians(np.array(data["q_deg"], dtype=np.float64))
         if q.shape != (self.model.dof,):
             raise InputError("not this arm's state")
-        return ArmState(self.now(), q, float(data["grip_mm"]) / 1000.0)
+        return Snapshot(self.now(), q, float(data["grip_mm"]) / 1000.0)

@@ -113,7 +113,7 @@ class Mover:
     def _pace(self, q: F64) -> None:
         """Let time pass until the arm is at ``q`` [rad] or a newer goal arrives."""
         deadline = time.monotonic() + LONGEST
-        while np.max(np.abs(self.arm.driver.read() - q)) > REACHED:
+        while np.max(np.abs(self.arm.read() - q)) > REACHED:
             if time.monotonic() > deadline:
                 raise ArmkitError(f"the arm did not reach its goal within {LONGEST:.0f} s")
             with self._cond:

@@ -3,9 +3,8 @@
 A source answers "what does the arm (and the objects on the table) look like
 now": joint angles, gripper opening and object poses. ``WorldSource`` reads the
 simulation World's truth (``SimArm.q()``, ``SimArm.grip()``, and the cubes of a
-``ScenePhysics`` observer: carried when grasped); ``DriverSource`` follows an
-arm's driver: the World behind it on a simulated device
-(``armkit.sim.world_of``), the driver's read-back on real hardware;
+``ScenePhysics`` observer: carried when grasped); ``ArmSource`` follows an
+``Arm``: the World behind it on a simulated device, its read-back on real hardware;
 ``armkit.viz.LiveSource`` follows a simulated arm that another process moves.
 """
 
@@ -19,8 +18,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
-from ..connect import World, world_of
-from ..drivers import Driver
+from ..arm import Arm
+from ..connect import World
 from ..model import ArmModel
 from ..scene import ScenePhysics
 
@@ -36,7 +35,7 @@ class ObjectPose:
 
 
 @dataclass(frozen=True, eq=False)
-class ArmState:
+class Snapshot:
     """One moment of the arm and the objects it moves.
 
     Attributes:
@@ -65,7 +64,7 @@ class StateSource(Protocol):
         """The source's current time [s]."""
         ...
 
-    def state(self, t: float | None = None) -> ArmState:
+    def state(self, t: float | None = None) -> Snapshot:
         """The state at time ``t`` [s] (None: now). Live sources may answer only now."""
         ...
 
@@ -102,12 +101,12 @@ class WorldSource:
         """Simulated time [s]."""
         return self.world.now()
 
-    def state(self, t: float | None = None) -> ArmState:
+    def state(self, t: float | None = None) -> Snapshot:
         """The truth now (``t`` other than None is refused: use ``World.recording``)."""
         if t is not None:
             raise InputError("a world is read now; give t=None (its history: World.recording)")
         with self.world.lock:
-            return ArmState(self.world.now(), self.sim.q(), self.sim.grip(), cubes(self.physics))
+            return Snapshot(self.world.now(), self.sim.q(), self.sim.grip(), cubes(self.physics))
 
 
 def cubes(physics: ScenePhysics | None) -> tuple[ObjectPose, ...]:
@@ -121,28 +120,27 @@ def cubes(physics: ScenePhysics | None) -> tuple[ObjectPose, ...]:
     return tuple(ObjectPose(n, physics.cube(n).T) for n in names)
 
 
-class DriverSource:
-    """Follow a driver, at wall time.
+class ArmSource:
+    """Follow an ``Arm``, at wall time.
 
     On a simulated device this is the World's truth about the arm
     (``WorldSource``: where the servos really are, lag and a grasped object
-    included). On real hardware it is the driver's read-back
-    (``driver.read()``) and the last width given to ``set_grip`` (a driver
-    cannot read its gripper).
+    included). On real hardware it is the arm's read-back (``Arm.read()``) and
+    the last width given to ``set_grip`` (a driver cannot read its gripper).
     """
 
-    def __init__(
-        self, model: ArmModel, driver: Driver, physics: ScenePhysics | None = None
-    ) -> None:
-        self._model = model
-        self.driver = driver
-        self._grip = model.gripper.width_max
-        self._world = _world_source(model, driver, physics)
+    def __init__(self, arm: Arm, physics: ScenePhysics | None = None) -> None:
+        self.arm = arm
+        self._grip = arm.model.gripper.width_max
+        world, sim = arm.world, arm.sim
+        self._world = (
+            None if world is None or sim is None else WorldSource(world, sim.name, physics)
+        )
 
     @property
     def model(self) -> ArmModel:
         """The arm being shown."""
-        return self._model
+        return self.arm.model
 
     def now(self) -> float:
         """Wall time [s] (``time.monotonic``)."""
@@ -152,25 +150,11 @@ class DriverSource:
         """Remember a commanded gripper opening [m] for drivers that cannot read it."""
         self._grip = width
 
-    def state(self, t: float | None = None) -> ArmState:
-        """The arm now (``t`` other than None is refused: a live driver has no history)."""
+    def state(self, t: float | None = None) -> Snapshot:
+        """The arm now (``t`` other than None is refused: a live arm has no history)."""
         if t is not None:
-            raise InputError("a driver can only be read now; give t=None")
+            raise InputError("a live arm can only be read now; give t=None")
         if self._world is not None:
             truth = self._world.state()
-            return ArmState(self.now(), truth.q, truth.grip, truth.objects)
-        q = np.asarray(self.driver.read(), dtype=np.float64)
-        return ArmState(self.now(), q, self._grip)
-
-
-def _world_source(
-    model: ArmModel, driver: Driver, physics: ScenePhysics | None
-) -> WorldSource | None:
-    """The source of the simulated arm behind ``driver`` (its world's one arm of
-    ``model``), or None on real hardware."""
-    world = world_of(driver)
-    if world is None:
-        return None
-    arms = world.arms()
-    mine = [a for a in arms if a.model is model] or [a for a in arms if a.model.name == model.name]
-    return WorldSource(world, mine[0].name, physics) if len(mine) == 1 else None
+            return Snapshot(self.now(), truth.q, truth.grip, truth.objects)
+        return Snapshot(self.now(), self.arm.read(), self._grip)

@@ -9,6 +9,8 @@ port is opened.
 from ._arm import ServoArmDriver as ServoArmDriver
 from ._calibrate import run_calibration as run_calibration
 from ._config import load_setup as load_setup
+from ._forecast import ServoForecaster as ServoForecaster
+from ._forecast import servo_forecaster as servo_forecaster
 from ._open import open_maestro as open_maestro
 from ._open import open_ssc32 as open_ssc32
 from ._table import ServoCalibration as ServoCalibration

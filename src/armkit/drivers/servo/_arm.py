@@ -10,7 +10,6 @@ move longer than the controller's longest command goes as pieces along the line.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 
 import numpy as np
@@ -19,8 +18,9 @@ from numpy.typing import NDArray
 from ..._clock import Clock, WallClock
 from ..._errors import DeviceError, InputError
 from ...model import ArmModel, check_grip, check_joints, check_speed, move_time
-from .._driver import pieces
+from .._driver import Forecast, pieces
 from ._bus import ServoBus
+from ._forecast import ServoForecaster, group_ms
 from ._table import PULSE_MAX_US, PULSE_MIN_US, ServoCalibration
 
 WAIT_MARGIN_S = 1.0  # extra time allowed for a move to report done
@@ -41,6 +41,8 @@ class ServoArmDriver:
         settle_s: how long a waiting move waits after the controller reports it done, for
             the servos to catch up with their pulses [s] (they report nothing).
     """
+
+    moves = "hobby"  # see armkit.drivers.Forecaster
 
     def __init__(
         self,
@@ -143,23 +145,30 @@ class ServoArmDriver:
         exact: bool,
         speed: float,
     ) -> int:
-        """Group time [ms] for ``seconds`` [s] of the shared rule, rounded up; longer only
-        where a servo's table is steeper than its joint's speed allows (refused when the
-        time was asked for exactly: then up to the servo's own speed, ``peak_velocity``)."""
-        needed = 0.0
-        for table, joint in zip(self.joints, self.model.joints, strict=True):
-            start, target = starts.get(table.channel), pulses.get(table.channel)
-            if start is not None and target is not None:
-                travel = abs(target - start) + (0.0 if exact else pad)  # µs of pulse
-                rate = table.max_rate(start, target)
-                vmax = joint.peak_velocity if exact else joint.max_velocity
-                needed = max(needed, travel * rate / (vmax * speed))
-        if exact and needed > seconds + 1e-3:
-            raise InputError(
-                f"duration {seconds:.3f} s is too short for the servo tables: this move "
-                f"needs {needed:.3f} s on the {self.bus.name}"
-            )
-        return math.ceil(max(seconds, needed) * 1000.0 - 1e-9)
+        """Group time [ms] for ``seconds`` [s] of the shared rule (``group_ms``)."""
+        timing = (seconds, pad, exact, speed)
+        return group_ms(self.model, self.joints, pulses, starts, timing, self.bus.name)
+
+    def forecast(
+        self,
+        q0: NDArray[np.float64],
+        q1: NDArray[np.float64],
+        *,
+        duration: float | None = None,
+        speed: float | None = None,
+        motor_s: float = 0.0,
+    ) -> Forecast:
+        """What ``move(q1)`` does from ``q0`` [rad] (``ServoForecaster``); nothing is sent."""
+        return self.forecaster().forecast(q0, q1, duration=duration, speed=speed, motor_s=motor_s)
+
+    def forecast_grip(self, before: float | None, width: float) -> float:
+        """How long ``grip(width)`` [m] takes [s]: the settle time."""
+        return self.forecaster().forecast_grip(before, width)
+
+    def forecaster(self) -> ServoForecaster:
+        """This arm's forecasts as a value (its tables, its controller, its settle time)."""
+        longest = self.bus.max_time_ms / 1000.0
+        return ServoForecaster(self.model, self.joints, longest, self.bus.name, self.settle_s)
 
     def _starts(self) -> tuple[dict[int, float], float]:
         """Where each servo starts from [µs], and how uncertain that is [µs]: the last

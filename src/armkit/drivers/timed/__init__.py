@@ -16,18 +16,19 @@ from ._calibrate import run_calibration as run_calibration
 from ._config import constant_rate as constant_rate
 from ._config import default_timing as default_timing
 from ._driver import TimedDriver as TimedDriver
-from ._forecast import Forecast as Forecast
+from ._forecast import TurnForecast as TurnForecast
 from ._forecast import forecast_move as forecast_move
 from ._forecast import forecast_run as forecast_run
 from ._forecast import grip_seconds as grip_seconds
+from ._forecaster import TimedForecaster as TimedForecaster
 from ._journal import UncertainEstimateWarning as UncertainEstimateWarning
 from ._keys import run_keys as run_keys
 from ._keys import status_line as status_line
 from ._plan import MoveReport as MoveReport
 from ._plan import ShortMoveError as ShortMoveError
-from ._plan import Step as Step
+from ._plan import Turn as Turn
 from ._rehome import rehome as rehome
-from ._state import ArmState as ArmState
+from ._state import UnitState as UnitState
 from ._state import load as load_state
 from ._state import state_path as state_path
 from ._timing import JointTiming as JointTiming
@@ -38,11 +39,33 @@ from ._waypoints import path_waypoints as path_waypoints
 from ._waypoints import plan_path_runs as plan_path_runs
 
 __all__ = [
-    "PATH_TOLERANCE", "ArmState", "Clock", "Forecast", "JointTiming", "MoveReport", "PathRuns",
-    "ShortMoveError", "Step", "TimedDriver", "TimingModel", "UncertainEstimateWarning",
-    "constant_rate", "default_timing", "forecast_move", "forecast_run", "grip_seconds",
-    "load_state", "open_driver", "path_waypoints", "plan_path_runs", "rehome",
-    "run_calibration", "run_keys", "state_path", "status_line",
+    "PATH_TOLERANCE",
+    "Clock",
+    "JointTiming",
+    "MoveReport",
+    "PathRuns",
+    "ShortMoveError",
+    "TimedDriver",
+    "TimedForecaster",
+    "TimingModel",
+    "Turn",
+    "TurnForecast",
+    "UncertainEstimateWarning",
+    "UnitState",
+    "constant_rate",
+    "default_timing",
+    "forecast_move",
+    "forecast_run",
+    "grip_seconds",
+    "load_state",
+    "open_driver",
+    "path_waypoints",
+    "plan_path_runs",
+    "rehome",
+    "run_calibration",
+    "run_keys",
+    "state_path",
+    "status_line",
 ]  # fmt: skip
 
 

@@ -20,14 +20,16 @@ from ..._clock import Clock
 from ..._errors import InputError
 from ..._lock import exclusive
 from ...model import ArmModel, OwiSection, check_grip, check_joints, move_time, owi_section
+from .._driver import Forecast
 from ._config import default_timing
 from ._estimate import recovered
 from ._forecast import move_legs
+from ._forecaster import TimedForecaster
 from ._journal import warn
 from ._motors import Device, Motors
 from ._plan import MoveReport
 from ._safety import ExitGuard
-from ._state import ArmState, load
+from ._state import UnitState, load
 from ._timing import TimingModel
 from ._turns import TimedTurns
 from ._waypoints import PathRuns, plan_path_runs
@@ -39,6 +41,8 @@ class TimedDriver:
     """A :class:`~armkit.drivers.Driver` for the OWI-535 (open-loop timed motors); its own
     turns, gripper and light (``turn_to``, ``drive_to_limit``, ...) are those of the
     ``TimedTurns`` it holds, which owns the estimate and its state file."""
+
+    moves = "timed"  # see armkit.drivers.Forecaster
 
     def __init__(
         self,
@@ -74,7 +78,7 @@ class TimedDriver:
     def _open(self, model: ArmModel, device: Device, clock: Clock, unit: str) -> None:
         self.warn: Callable[[str], None] = warn
         self._warned = False
-        self._asked: tuple[F64, ArmState] | None = None  # the last goal, and the state after it
+        self._asked: tuple[F64, UnitState] | None = None  # the last goal, and the state after it
         self.motors = Motors(
             device,
             clock,
@@ -96,7 +100,7 @@ class TimedDriver:
 
     # -- the estimate (``TimedTurns``) ---------------------------------------
     @property
-    def state(self) -> ArmState:
+    def state(self) -> UnitState:
         """The unit's estimate, as last saved (replace it with :meth:`set_state`)."""
         return self._turns.state
 
@@ -114,7 +118,7 @@ class TimedDriver:
         """Estimated joint angles [rad], shape (4,)."""
         return self._turns.read()
 
-    def set_state(self, state: ArmState) -> None:
+    def set_state(self, state: UnitState) -> None:
         """Replace the unit's state (calibration, re-homing) and save it."""
         self._turns.set_state(state)
 
@@ -141,6 +145,39 @@ class TimedDriver:
         move_time(self.model, self._start(), goal, speed=speed, duration=duration)
         self.move_report(goal)
         self._asked = (goal, self.state)
+
+    def forecast(
+        self,
+        q0: F64,
+        q1: F64,
+        *,
+        duration: float | None = None,
+        speed: float | None = None,
+        motor_s: float = 0.0,
+    ) -> Forecast:
+        """What ``move(q1)`` does from the estimate ``q0`` [rad] with ``motor_s`` [s] used
+        (``TimedForecaster`` with this unit's timing); no motor starts."""
+        return self.forecaster().forecast(q0, q1, duration=duration, speed=speed, motor_s=motor_s)
+
+    def forecast_grip(self, before: float | None, width: float) -> float:
+        """How long ``grip(width)`` [m] takes from ``before`` [m] [s]."""
+        return self.forecaster().forecast_grip(before, width)
+
+    def forecast_path(
+        self, model: ArmModel, q0: F64, q: F64, points: F64, motor_s: float = 0.0
+    ) -> Forecast:
+        """What ``follow_path(model, q, points)`` does from ``q0`` [rad]."""
+        return self.forecaster().forecast_path(model, q0, q, points, motor_s)
+
+    def forecast_run(
+        self, q0: F64, joint: str, direction: int, seconds: float, motor_s: float = 0.0
+    ) -> Forecast:
+        """What ``turn_for(joint, direction, seconds)`` does from ``q0`` [rad]."""
+        return self.forecaster().forecast_run(q0, joint, direction, seconds, motor_s)
+
+    def forecaster(self) -> TimedForecaster:
+        """This unit's forecasts as a value (its model and timing model)."""
+        return TimedForecaster(self.model, self.timing)
 
     def _start(self) -> F64:
         """Where a move starts for the timing rule [rad]: the angles the last move was
@@ -263,7 +300,7 @@ class TimedDriver:
             self._lock.release()
 
 
-def _fresh_state(model: ArmModel, unit: str) -> ArmState:
-    return ArmState(
+def _fresh_state(model: ArmModel, unit: str) -> UnitState:
+    return UnitState(
         unit=unit, timing=default_timing(model), angles=tuple(float(a) for a in model.home)
     )

@@ -9,13 +9,13 @@ import time
 import numpy as np
 
 from ._motors import Run
-from ._plan import Step
-from ._state import ArmState, Pending
+from ._plan import Turn
+from ._state import Pending, UnitState
 
 MOVING = "a move was in progress"
 
 
-def pending_of(steps: list[Step]) -> Pending:
+def pending_of(steps: list[Turn]) -> Pending:
     """The record written before a run starts: directions, planned times, wall-clock start."""
     return Pending(
         {s.joint: s.direction for s in steps}, {s.joint: s.seconds for s in steps}, time.time()
@@ -23,8 +23,8 @@ def pending_of(steps: list[Step]) -> Pending:
 
 
 def after_run(
-    before: ArmState, steps: list[Step], run: Run, names: tuple[str, ...], at_limit: bool = False
-) -> ArmState:
+    before: UnitState, steps: list[Turn], run: Run, names: tuple[str, ...], at_limit: bool = False
+) -> UnitState:
     """The state after ``run``: each joint advanced by its measured motor time (or, with
     ``at_limit``, exactly at the step's target limit); uncertain if the run was cut short.
     A run whose motors never started leaves ``before`` as it was."""
@@ -48,7 +48,7 @@ def after_run(
     )
 
 
-def recovered(state: ArmState, now_unix: float) -> ArmState:
+def recovered(state: UnitState, now_unix: float) -> UnitState:
     """The state after a process died mid-move: its motors ran until ``now_unix`` (when a
     new driver sent stop), so advance them that long, clamped, and mark it uncertain."""
     if state.pending is None:

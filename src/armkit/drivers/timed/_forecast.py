@@ -19,7 +19,7 @@ from numpy.typing import NDArray
 
 from ...model import ArmModel
 from ._order import safe_order
-from ._plan import ShortMoveError, Step, plan_turns
+from ._plan import ShortMoveError, Turn, plan_turns
 from ._short import plan_legs
 from ._timing import TimingModel
 
@@ -27,7 +27,7 @@ F64 = NDArray[np.float64]
 
 
 @dataclass(frozen=True)
-class Forecast:
+class TurnForecast:
     """The runs one command will make, and the driver's estimate after them.
 
     Attributes:
@@ -37,7 +37,7 @@ class Forecast:
         notes: joints left where they are (within the 0.5 deg resolution).
     """
 
-    steps: tuple[Step, ...]
+    steps: tuple[Turn, ...]
     q: F64
     motor_s: float
     notes: tuple[str, ...] = ()
@@ -72,7 +72,7 @@ def move_legs(
 
 def forecast_move(
     timing: TimingModel, model: ArmModel, q0: F64, q1: F64, motor_s: float = 0.0
-) -> Forecast:
+) -> TurnForecast:
     """The runs of ``TimedDriver.move(q1)`` from the estimate ``q0`` [rad], shape (4,),
     with ``motor_s`` [s] used (``move_legs``), each timed from where the one before left
     the arm. Raises as ``move_legs``."""
@@ -87,12 +87,12 @@ def forecast_move(
             used += s.seconds
         steps += part.steps
         notes += part.notes
-    return Forecast(tuple(steps), pose, used, tuple(notes))
+    return TurnForecast(tuple(steps), pose, used, tuple(notes))
 
 
 def forecast_run(
     timing: TimingModel, q0: F64, j: int, direction: int, seconds: float, motor_s: float = 0.0
-) -> Forecast:
+) -> TurnForecast:
     """``TimedDriver.turn_for``: joint ``j``'s motor run ``seconds`` [s] in ``direction``
     (+1/-1) from ``q0`` [rad]; the angle as the timing model advances it, clamped.
 
@@ -106,7 +106,7 @@ def forecast_run(
         )
     q = np.array(q0, dtype=np.float64)
     q[j] = timing.advance(q, j, direction, seconds, motor_s)
-    return Forecast((Step(j, direction, seconds, float(q[j])),), q, motor_s + seconds)
+    return TurnForecast((Turn(j, direction, seconds, float(q[j])),), q, motor_s + seconds)
 
 
 def grip_seconds(timing: TimingModel, model: ArmModel, before: float | None, width: float) -> float:

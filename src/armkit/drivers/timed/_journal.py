@@ -12,7 +12,7 @@ from ..._clock import Clock
 from ..._errors import ArmkitWarning, DeviceError
 from ._motors import Motors, Run
 from ._safety import SignalGate
-from ._state import ArmState, save
+from ._state import UnitState, save
 
 Until = tuple[Callable[[], object], float]  # (wait, watchdog timeout [s])
 
@@ -21,7 +21,7 @@ class UncertainEstimateWarning(ArmkitWarning):
     """A move starts from joint angles that are only an uncertain estimate."""
 
 
-def write(path: Path, state: ArmState, durable: bool) -> None:
+def write(path: Path, state: UnitState, durable: bool) -> None:
     """Save ``state`` atomically; DeviceError (naming the file) if it cannot be written."""
     try:
         save(state, path, durable)
@@ -36,9 +36,9 @@ def journaled_run(
     motors: Motors,
     clock: Clock,
     run: Run,
-    save_state: Callable[[ArmState], None],
-    pending: ArmState,
-    done: Callable[[], ArmState],
+    save_state: Callable[[UnitState], None],
+    pending: UnitState,
+    done: Callable[[], UnitState],
     until: Until | None = None,
 ) -> None:
     """Save ``pending``, run the motors (``until``: a run that ends when ``wait()``

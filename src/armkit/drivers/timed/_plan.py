@@ -21,7 +21,7 @@ class ShortMoveError(ArmkitError):
 
 
 @dataclass(frozen=True)
-class Step:
+class Turn:
     """One joint's part of a move: turn ``direction`` for ``seconds`` to reach ``target`` [rad]."""
 
     joint: int
@@ -34,7 +34,7 @@ class Step:
 class MoveReport:
     """What a move did: the steps run, and notes on clamped or skipped joints."""
 
-    steps: list[Step] = field(default_factory=list)
+    steps: list[Turn] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
 
 
@@ -64,7 +64,7 @@ def plan_turns(
         if seconds < timing.min_move_s:
             _short(timing, names[j], (q, j, target, motor_s), seconds, skip_short, report)
             continue
-        report.steps.append(Step(j, 1 if target > q[j] else -1, seconds, target))
+        report.steps.append(Turn(j, 1 if target > q[j] else -1, seconds, target))
     return report
 
 

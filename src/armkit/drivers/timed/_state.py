@@ -39,7 +39,7 @@ class Pending:
 
 
 @dataclass(frozen=True)
-class ArmState:
+class UnitState:
     """Everything armkit knows about one unit. Angles [rad], times [s]."""
 
     unit: str
@@ -54,7 +54,7 @@ class ArmState:
     pending: Pending | None = None
     extra: dict[str, Any] = field(default_factory=dict)
 
-    def with_(self, **changes: Any) -> ArmState:
+    def with_(self, **changes: Any) -> UnitState:
         """A copy with ``changes`` applied."""
         return replace(self, **changes)
 
@@ -66,13 +66,13 @@ def state_path(unit: str) -> Path:
     return config_dir() / "owi535" / f"{unit}.json"
 
 
-def save(state: ArmState, path: Path, durable: bool = True) -> None:
+def save(state: UnitState, path: Path, durable: bool = True) -> None:
     """Write ``state`` to ``path`` atomically (temp file, fsync, rename). ``durable=False``
     skips the fsyncs (still atomic, not power-loss safe): for simulations."""
     write_atomic(path, json.dumps(to_dict(state), indent=2) + "\n", durable)
 
 
-def load(path: Path) -> ArmState:
+def load(path: Path) -> UnitState:
     """Read a state file.
 
     Raises:
@@ -87,7 +87,7 @@ def load(path: Path) -> ArmState:
         ) from None
 
 
-def to_dict(state: ArmState) -> dict[str, Any]:
+def to_dict(state: UnitState) -> dict[str, Any]:
     """JSON-ready form, angles in degrees."""
     return {
         "version": VERSION,
@@ -105,11 +105,11 @@ def to_dict(state: ArmState) -> dict[str, Any]:
     }
 
 
-def from_dict(d: dict[str, Any]) -> ArmState:
+def from_dict(d: dict[str, Any]) -> UnitState:
     """Inverse of :func:`to_dict`."""
     if d.get("version") != VERSION:
         raise InputError(f"version {d.get('version')!r}, expected {VERSION}")
-    return ArmState(
+    return UnitState(
         unit=str(d["unit"]),
         timing=timing_from_dict(d["timing"]),
         angles=tuple(math.radians(float(a)) for a in d["angles_deg"]),

@@ -24,8 +24,8 @@ from ...model import ArmModel, OwiSection
 from ._estimate import MOVING, after_run, pending_of
 from ._journal import Until, journaled_run, raise_if_watchdog, write
 from ._motors import Motors, Run
-from ._plan import MoveReport, ShortMoveError, Step, plan_turns
-from ._state import ArmState
+from ._plan import MoveReport, ShortMoveError, Turn, plan_turns
+from ._state import UnitState
 from ._timing import TimingModel
 
 F64 = NDArray[np.float64]
@@ -54,7 +54,7 @@ class TimedTurns:
         config: OwiSection,
         motors: Motors,
         path: Path,
-        state: ArmState,
+        state: UnitState,
         *,
         durable: bool = True,
     ) -> None:
@@ -105,7 +105,7 @@ class TimedTurns:
                 f"turn {joint} for {seconds * 1000:.0f} ms is under the "
                 f"{self.timing.min_move_s * 1000:.0f} ms minimum; run it longer"
             )
-        self.run_steps([Step(j, direction, seconds, math.nan)])
+        self.run_steps([Turn(j, direction, seconds, math.nan)])
 
     def drive_to_limit(
         self, joint: str, direction: int, wait: Callable[[], object] | None = None
@@ -122,7 +122,7 @@ class TimedTurns:
             1.25 * (self.timing.upper[j] - self.timing.lower[j]) / min(self.timing.joints[j].rates)
         )
         worst /= self.timing.battery(self.state.motor_s)
-        step = Step(
+        step = Turn(
             j, direction, worst, self.timing.upper[j] if direction > 0 else self.timing.lower[j]
         )
         run = Run({joint: (direction, worst)})
@@ -149,7 +149,7 @@ class TimedTurns:
         run = Run({"gripper": (1 if open_ else -1, self.timing.gripper_s)})
         before = self.state
 
-        def done() -> ArmState:
+        def done() -> UnitState:
             moved = wanted if run.complete else "unknown"
             return before.with_(gripper=moved if run.started else before.gripper)
 
@@ -161,7 +161,7 @@ class TimedTurns:
         self.motors.set_light(on)
         self._save(self.state.with_(light=on))
 
-    def set_state(self, state: ArmState) -> None:
+    def set_state(self, state: UnitState) -> None:
         """Replace the unit's state (calibration, re-homing) and save it."""
         self._save(state)
 
@@ -173,7 +173,7 @@ class TimedTurns:
             self.timing, self.joint_names, q, targets, motor_s, clamp=clamp, skip_short=skip_short
         )
 
-    def run_steps(self, steps: list[Step]) -> list[Step]:
+    def run_steps(self, steps: list[Turn]) -> list[Turn]:
         """Run planned ``steps`` together, journaled; returns them. DeviceError if the
         watchdog had to stop the run (the estimate is saved first)."""
         if not steps:
@@ -191,11 +191,15 @@ class TimedTurns:
 
     # -- internals ---------------------------------------------------------
     def _execute(
-        self, run: Run, pending: ArmState, done: Callable[[], ArmState], until: Until | None = None
+        self,
+        run: Run,
+        pending: UnitState,
+        done: Callable[[], UnitState],
+        until: Until | None = None,
     ) -> None:
         """Save ``pending``, run the motors, save ``done()`` (see ``journaled_run``)."""
         journaled_run(self.motors, self.clock, run, self._save, pending, done, until)
 
-    def _save(self, state: ArmState) -> None:
+    def _save(self, state: UnitState) -> None:
         self.state = state
         write(self.path, state, self.durable)

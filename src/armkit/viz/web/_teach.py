@@ -108,7 +108,7 @@ class Teach:
             return True
         self.mover.wait_idle()
         try:
-            getattr(self.arm.driver, "relax" if on else "stiffen")()
+            self.arm.relax() if on else self.arm.stiffen()
         except ArmkitError as exc:
             self._say(f"torque: {exc}")
             return False
@@ -185,10 +185,7 @@ class Teach:
 
     def _add_limp_box(self) -> None:
         """ "torque off (move by hand)", where the driver can (``relax``/``stiffen``)."""
-        driver = self.arm.driver
-        if not (
-            callable(getattr(driver, "relax", None)) and callable(getattr(driver, "stiffen", None))
-        ):
+        if not self.arm.can_go_limp:
             return
         box = self.view.server.gui.add_checkbox("torque off (move by hand)", False)
 
@@ -200,7 +197,7 @@ class Teach:
 
     def _add_sliders(self) -> list[Any]:
         gui, model = self.view.server.gui, self.arm.model
-        q = np.degrees(self.arm.driver.read())
+        q = np.degrees(self.arm.read())
         sliders = []
         with gui.add_folder("Joints [deg]"):
             for i, joint in enumerate(model.joints):

@@ -30,7 +30,7 @@ from .._address import serve_address
 from .._arm_shapes import TRAIL_COLOUR, arm_primitives, reach_of, table_primitive
 from .._ink import Ink
 from .._scene_shapes import scene_primitives
-from .._state import ArmState, ObjectPose, StateSource
+from .._state import ObjectPose, Snapshot, StateSource
 from .._target import TargetCheck, check_target
 from ._render import Renderer
 
@@ -54,7 +54,7 @@ class View:
     """A live 3D page of ``source``'s arm (see the module doc).
 
     Args:
-        source: what to show (``WorldSource``, ``DriverSource``, ``LiveSource``).
+        source: what to show (``WorldSource``, ``ArmSource``, ``LiveSource``).
         scene: what is on the table (its cubes move as the source's objects say);
             the table plane is always drawn.
         extra: more primitives to draw once (scene frame).
@@ -92,7 +92,7 @@ class View:
         self._trail: list[F64] = []
         self._trail_max = trail
         self._last_q: F64 | None = None
-        self._state: ArmState | None = None
+        self._state: Snapshot | None = None
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
         self._lock = threading.Lock()
@@ -110,7 +110,7 @@ class View:
         return f"http://{host}:{self.server.get_port()}/"
 
     @property
-    def state(self) -> ArmState | None:
+    def state(self) -> Snapshot | None:
         """The state last shown (None before the first update)."""
         return self._state
 
@@ -137,7 +137,7 @@ class View:
             return True
         return False
 
-    def _show(self, state: ArmState) -> bool:
+    def _show(self, state: Snapshot) -> bool:
         with self._lock:
             self._reads += 1
             moved = self._last_q is None or not np.array_equal(state.q, self._last_q)
