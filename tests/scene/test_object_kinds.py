@@ -18,8 +18,11 @@ from armkit.model import load_model
 from armkit.scene import (
     OBJECT_KINDS,
     ObjectKind,
+    Placed,
+    Rect,
     Scene,
     Solid,
+    Support,
     check_clear,
     load_scene,
     shipped_scenes,
@@ -39,6 +42,8 @@ def test_every_kind_is_in_a_shipped_scene_and_answers_the_protocol() -> None:
     for scene in scenes:
         for obj in scene.objects():
             assert all(isinstance(s, Solid) for s in obj.solids()), obj.name
+            everywhere = Rect(np.zeros(2), (1.0, 1.0), 0.0)  # a 2 m footprint
+            assert all(isinstance(s, Support) for s in obj.supports(everywhere)), obj.name
             drawn = obj.primitives(scene)
             assert all(p.name.startswith("/scene/") for p in drawn), obj.name
 
@@ -64,17 +69,23 @@ class Wall:
     def solids(self) -> tuple[Solid, ...]:
         return (Solid.upright(self.center, self.size),)
 
-    def primitives(self, scene: Scene) -> list[Primitive]:
+    def supports(self, foot: Rect) -> tuple[Support, ...]:
+        return ()
+
+    def primitives(self, scene: Placed) -> list[Primitive]:
         T = np.eye(4)
         T[:3, 3] = self.center
         return [Box(f"/scene/{self.name}", np.array(self.size), T, (128, 128, 128))]
 
 
-def load_walls(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
-    walls = [
+def load_walls(path: Path, data: dict[str, Any], scene: Placed) -> tuple[Wall, ...]:
+    return tuple(
         Wall(e.name(), e.point_mm("center_mm"), tuple(e.sizes_mm("size_mm", 3)))  # type: ignore[arg-type]
         for e in entries(path, data, "walls", ("name", "center_mm", "size_mm"))
-    ]
+    )
+
+
+def keep_walls(scene: Scene, walls: tuple[Wall, ...]) -> Scene:
     return dataclasses.replace(scene, others=(*scene.others, *walls))
 
 
@@ -90,7 +101,9 @@ size_mm = [20, 300, 200]
 @pytest.fixture
 def walls(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(
-        registry, "OBJECT_KINDS", (*registry.OBJECT_KINDS, ObjectKind("walls", load_walls))
+        registry,
+        "OBJECT_KINDS",
+        (*registry.OBJECT_KINDS, ObjectKind("walls", load_walls, keep_walls)),
     )
 
 
@@ -106,6 +119,7 @@ def test_a_kind_added_by_one_entry_is_loaded_kept_out_of_and_drawn(
     assert hit is not None and hit.object == "wall"
     assert check_clear(model, np.radians([180.0, 0.0, 0.0, 0.0]), scene) is None
     assert "/scene/wall" in {p.name for p in scene_primitives(scene)}
+    assert scene.names() == ("wall",) and scene.others[0].solids()
 
 
 def test_a_kind_not_in_the_registry_is_an_unknown_section(tmp_path: Path) -> None:

@@ -5,18 +5,15 @@ and ``[[drums]]``."""
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
 from ._fields import Entry, entries
 from ._instruments import Drum, Xylophone, note_name, note_number
-from ._support import Rect
-
-if TYPE_CHECKING:
-    from ._scene import Scene
+from ._object import Placed
+from ._rect import Rect
 
 XYLOPHONE_KEYS = (
     "name", "bars", "bar_size_mm", "row_deg", "first_bar_mm", "last_bar_mm", "lowest_note",
@@ -28,7 +25,7 @@ _DRUM_KEYS = ("name", "position_mm", "radius_mm", "top_z_mm", "note")
 MAX_BARS = 88
 
 
-def load_xylophones(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
+def load_xylophones(path: Path, data: dict[str, Any], scene: Placed) -> tuple[Xylophone, ...]:
     """``[[xylophones]]``: bar centres from ``first_bar_mm`` to ``last_bar_mm`` one
     semitone apart, or ``bars``, a list of ``{note, top_mm, size_mm, row_deg}``."""
     out = []
@@ -36,10 +33,10 @@ def load_xylophones(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
         xylophone = _by_bar(e) if e.has("bars") else _interpolated(e)
         _check_apart(e, xylophone)
         out.append(xylophone)
-    return replace(scene, instruments=(*scene.instruments, *out))
+    return tuple(out)
 
 
-def load_drums(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
+def load_drums(path: Path, data: dict[str, Any], scene: Placed) -> tuple[Drum, ...]:
     """``[[drums]]``: a round head of ``radius_mm`` at ``top_z_mm``."""
     out = []
     for e in entries(path, data, "drums", _DRUM_KEYS):
@@ -50,7 +47,7 @@ def load_drums(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
         out.append(
             Drum(e.name(), position, e.positive_mm("radius_mm"), top, e.integer("note", hi=127))
         )
-    return replace(scene, instruments=(*scene.instruments, *out))
+    return tuple(out)
 
 
 def _interpolated(e: Entry) -> Xylophone:

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -13,11 +13,9 @@ from .._errors import InputError
 from .._primitives import RGB, Box, Primitive
 from .._primitives import pose as placed
 from ._fields import Entry, entries
-from ._object import Solid
+from ._object import Placed, Solid, Support
+from ._rect import Rect
 from ._rotations import rot_z
-
-if TYPE_CHECKING:
-    from ._scene import Scene
 
 F64 = NDArray[np.float64]
 BOARD_COLOUR: RGB = (150, 110, 70)  # brown
@@ -124,7 +122,21 @@ class Board:
                 add(x - s, x + s, ys[k], ys[k + 1], floor, top)
         return tuple(out)
 
-    def primitives(self, scene: Scene) -> list[Primitive]:
+    def supports(self, foot: Rect) -> tuple[Support, ...]:
+        """The floor of the socket that holds ``foot`` whole, else the top (stable where
+        ``foot``'s centre is over the plate)."""
+        plate = Rect(self.origin[:2], (self.size[0] / 2, self.size[1] / 2), self.yaw)
+        if not plate.overlaps(foot):
+            return ()
+        where = self.socket_at(np.array([*foot.center, self.top_z]))
+        if where is not None:
+            hole = Rect(self.socket(*where)[:2], (self.socket_size / 2,) * 2, self.yaw)
+            if hole.contains_points(foot.corners()):
+                on = f"{self.name}[{where[0]}, {where[1]}]"
+                return (Support(self.socket(*where)[2], on, True),)
+        return (Support(self.top_z, self.name, plate.contains_points(foot.center[None, :])),)
+
+    def primitives(self, scene: Placed) -> list[Primitive]:
         """The plate (its top at ``top_z``) and a dark square in every socket."""
         T = placed(self.origin - np.array([0.0, 0.0, self.thickness / 2]), self.yaw)
         size = np.array([self.size[0], self.size[1], self.thickness])
@@ -138,9 +150,9 @@ class Board:
         return shapes
 
 
-def load_boards(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
+def load_boards(path: Path, data: dict[str, Any], scene: Placed) -> tuple[Board, ...]:
     """``[[boards]]``: each a grid of sockets that fits its plate."""
-    return replace(scene, boards=tuple(_board(e) for e in entries(path, data, "boards", KEYS)))
+    return tuple(_board(e) for e in entries(path, data, "boards", KEYS))
 
 
 def _board(e: Entry) -> Board:

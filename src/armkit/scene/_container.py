@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -12,10 +12,8 @@ from numpy.typing import NDArray
 from .._primitives import RGB, Box, Primitive
 from .._primitives import pose as placed
 from ._fields import Entry, entries
-from ._object import Solid
-
-if TYPE_CHECKING:
-    from ._scene import Scene
+from ._object import Placed, Solid, Support
+from ._rect import Rect
 
 F64 = NDArray[np.float64]
 CONTAINER_COLOUR: RGB = (120, 150, 175)  # grey blue
@@ -62,7 +60,18 @@ class Container:
         """The floor and the four walls."""
         return tuple(Solid.upright(self.position + c, size) for _, size, c in self._parts())
 
-    def primitives(self, scene: Scene) -> list[Primitive]:
+    def supports(self, foot: Rect) -> tuple[Support, ...]:
+        """Its floor for a footprint inside the walls, else its rim (never stable)."""
+        (L, W, _), w = self.size, self.wall
+        inner = Rect(self.position[:2], (L / 2 - w, W / 2 - w), 0)
+        outer = Rect(self.position[:2], (L / 2, W / 2), 0.0)
+        if inner.contains_points(foot.corners()):
+            return (Support(self.floor_z, self.name, True),)
+        if outer.overlaps(foot):
+            return (Support(self.rim_z, f"{self.name} rim", False),)
+        return ()
+
+    def primitives(self, scene: Placed) -> list[Primitive]:
         """The floor and the four walls."""
         return [
             Box(
@@ -75,10 +84,9 @@ class Container:
         ]
 
 
-def load_containers(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
+def load_containers(path: Path, data: dict[str, Any], scene: Placed) -> tuple[Container, ...]:
     """``[[containers]]``: each with room inside its walls."""
-    found = tuple(_container(e) for e in entries(path, data, "containers", KEYS))
-    return replace(scene, containers=found)
+    return tuple(_container(e) for e in entries(path, data, "containers", KEYS))
 
 
 def _container(e: Entry) -> Container:

@@ -2,23 +2,25 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any, Literal
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .._primitives import RGB, Box, Primitive
+from ._board import Board
 from ._fields import Entry, entries
-from ._object import Solid
+from ._object import Placed, SceneObject, Solid, Support, support_under
+from ._rect import Rect
 from ._rotations import FACES, face_up, pose, rot_z, yaw_and_face
-from ._support import footprint, support_under
-
-if TYPE_CHECKING:
-    from ._scene import Scene
 
 F64 = NDArray[np.float64]
+FLAT_TILT = math.radians(10.0)  # a cube released tilted less than this lands flat
+DROP_HEIGHT = 0.005  # [m]: released higher than this above its support = dropped
+Outcome = Literal["placed", "dropped", "tipped"]
 KEYS = ("name", "size_mm", "position_mm", "socket", "on", "yaw_deg", "up_face")
 REST_TOLERANCE = 0.5e-3  # [m] a cube's bottom must be this close to what it stands on
 # Cubes named after a colour are drawn in it; other cubes take the palette in turn.
@@ -75,47 +77,112 @@ class Cube:
         bottom = T[:3, 3] - np.array([0.0, 0.0, self.size / 2.0])
         return Cube(self.name, self.size, bottom, yaw, face)
 
+    def footprint(self) -> Rect:
+        """Its footprint on the table, snapped flat."""
+        return Rect(self.position[:2].copy(), (self.size / 2, self.size / 2), self.yaw)
+
     def solids(self) -> tuple[Solid, ...]:
         """The cube itself."""
         T = self.T
         return (Solid(T[:3, 3], T[:3, :3], np.full(3, self.size / 2)),)
 
-    def primitives(self, scene: Scene) -> list[Primitive]:
+    def supports(self, foot: Rect) -> tuple[Support, ...]:
+        """Its top, under a footprint it overlaps (stable where ``foot``'s centre is over it)."""
+        top = self.footprint()
+        if not top.overlaps(foot):
+            return ()
+        return (Support(self.top_z, self.name, top.contains_points(foot.center[None, :])),)
+
+    def primitives(self, scene: Placed) -> list[Primitive]:
         """The cube as a box in its colour (``cube_colour``)."""
         return [cube_primitive(self, scene)]
 
 
-def cube_colour(name: str, scene: Scene | None = None) -> RGB:
+def footprint(cube: Cube) -> Rect:
+    """The cube's footprint on the table, snapped flat."""
+    return cube.footprint()
+
+
+@dataclass(frozen=True)
+class Settled:
+    """Where a released cube ends: the cube at rest, ``outcome`` (placed, dropped
+    from more than 5 mm, tipped), what it rests on, and how far it fell [m]."""
+
+    cube: Cube
+    outcome: Outcome
+    on: str
+    fall: float
+
+
+def settle(scene: Placed, cube: Cube, T: F64) -> Settled:
+    """Where ``cube``, released with its centre at ``T`` (4, 4) in ``scene`` (which
+    must not contain it), comes to rest: straight down onto the highest surface
+    under it, turned to the nearest face down."""
+    _, _, tilt = yaw_and_face(T[:3, :3])
+    flat = cube.moved(T)
+    bottom = float(T[2, 3]) - cube.size / 2
+    below = support_under(scene, flat.footprint(), bottom)
+    rest = replace(flat, position=np.array([*flat.position[:2], below.z]))
+    fall = bottom - below.z
+    outcome: Outcome = "placed"
+    if tilt > FLAT_TILT or not below.stable:
+        outcome = "tipped"
+    elif fall > DROP_HEIGHT:
+        outcome = "dropped"
+    return Settled(rest, outcome, below.on, fall)
+
+
+def cube_colour(name: str, scene: Placed | None = None) -> RGB:
     """The colour a cube is drawn in: its name's colour, else the palette by its place
     in ``scene``."""
     if name in NAMED_COLOURS:
         return NAMED_COLOURS[name]
-    names = [c.name for c in scene.cubes] if scene is not None else []
+    names = [c.name for c in _cubes(scene)] if scene is not None else []
     k = names.index(name) if name in names else sum(map(ord, name))
     return PALETTE[k % len(PALETTE)]
 
 
-def cube_primitive(cube: Cube, scene: Scene | None = None, T: F64 | None = None) -> Box:
+def cube_primitive(cube: Cube, scene: Placed | None = None, T: F64 | None = None) -> Box:
     """``cube`` as a box at its pose (or at the centre pose ``T`` (4, 4) [m], held)."""
     where = cube.T if T is None else T
     return Box(f"/scene/{cube.name}", np.full(3, cube.size), where, cube_colour(cube.name, scene))
 
 
-def load_cubes(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
+def _cubes(scene: Placed) -> list[Cube]:
+    return [obj for obj in scene.objects() if isinstance(obj, Cube)]
+
+
+@dataclass(frozen=True)
+class _With:
+    """A scene and the cubes read so far (``Placed``)."""
+
+    scene: Placed
+    cubes: tuple[Cube, ...]
+
+    @property
+    def table_z(self) -> float:
+        return self.scene.table_z
+
+    def objects(self) -> tuple[SceneObject, ...]:
+        return (*self.scene.objects(), *self.cubes)
+
+
+def load_cubes(path: Path, data: dict[str, Any], placed: Placed) -> tuple[Cube, ...]:
     """``[[cubes]]`` in file order (a cube may stand ``on`` one listed before it); each
     must rest on the table, a socket floor, a board, a container or a cube."""
+    scene = _With(placed, ())
     for e in entries(path, data, "cubes", KEYS):
         cube = _cube(e, scene)
-        under = support_under(scene, footprint(cube), float(cube.position[2]))
+        under = support_under(scene, cube.footprint(), float(cube.position[2]))
         if abs(under.z - cube.position[2]) > REST_TOLERANCE:
             raise e.fail(
                 "position_mm",
                 f"the cube's bottom is at z = {cube.position[2] * 1000:.1f} mm but the surface "
                 f"under it ({under.on}) is at {under.z * 1000:.1f} mm; cubes rest on something",
             )
-        _check_apart(e, scene.cubes, cube)
-        scene = replace(scene, cubes=(*scene.cubes, cube))
-    return scene
+        _check_apart(e, tuple(_cubes(scene)), cube)
+        scene = _With(placed, (*scene.cubes, cube))
+    return scene.cubes
 
 
 def _check_apart(e: Entry, cubes: tuple[Cube, ...], cube: Cube) -> None:
@@ -136,7 +203,7 @@ def _check_apart(e: Entry, cubes: tuple[Cube, ...], cube: Cube) -> None:
             )
 
 
-def _cube(e: Entry, scene: Scene) -> Cube:
+def _cube(e: Entry, scene: Placed) -> Cube:
     where = [k for k in ("position_mm", "socket", "on") if e.has(k)]
     if len(where) != 1:
         raise e.fail("position_mm", "give exactly one of position_mm, socket, on")
@@ -149,7 +216,7 @@ def _cube(e: Entry, scene: Scene) -> Cube:
         yaw = e.deg("yaw_deg", np.degrees(board.yaw))
     else:
         below = e.text("on")
-        cubes = {c.name: c for c in scene.cubes}
+        cubes = {c.name: c for c in _cubes(scene)}
         if below not in cubes:
             raise e.fail("on", f"no cube {below!r} listed before this one")
         position = cubes[below].position + np.array([0.0, 0.0, cubes[below].size])
@@ -157,11 +224,11 @@ def _cube(e: Entry, scene: Scene) -> Cube:
     return Cube(e.name(), size, position, yaw, face)
 
 
-def _socket_floor(e: Entry, scene: Scene) -> tuple[Any, F64]:
+def _socket_floor(e: Entry, scene: Placed) -> tuple[Board, F64]:
     """The board of the cube's ``socket`` and the floor of that socket [m], shape (3,)."""
     spec = Entry(e.path, f"{e.where}.socket", e.data["socket"], ("board", "row", "col"))
     name = spec.text("board")
-    boards = {b.name: b for b in scene.boards}
+    boards = {b.name: b for b in scene.objects() if isinstance(b, Board)}
     if name not in boards:
         raise spec.fail("board", f"no board {name!r}; boards: {', '.join(boards) or 'none'}")
     board = boards[name]

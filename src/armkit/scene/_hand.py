@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -12,10 +12,8 @@ from numpy.typing import NDArray
 from .._primitives import RGB, Box, Primitive
 from .._primitives import pose as placed
 from ._fields import Entry, entries
-from ._object import Solid
-
-if TYPE_CHECKING:
-    from ._scene import Scene
+from ._object import Placed, Solid, Support
+from ._rect import Rect
 
 F64 = NDArray[np.float64]
 HAND_COLOUR: RGB = (225, 180, 150)  # skin
@@ -39,14 +37,18 @@ class Hand:
         """The hand's box: the arm reaches to it, never into it."""
         return (Solid.upright(self.position, self.size),)
 
-    def primitives(self, scene: Scene) -> list[Primitive]:
+    def supports(self, foot: Rect) -> tuple[Support, ...]:
+        """None: a hand is held out to shake."""
+        return ()
+
+    def primitives(self, scene: Placed) -> list[Primitive]:
         """The hand's box, skin coloured."""
         return [Box(f"/scene/{self.name}", np.array(self.size), placed(self.position), HAND_COLOUR)]
 
 
-def load_hands(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
+def load_hands(path: Path, data: dict[str, Any], scene: Placed) -> tuple[Hand, ...]:
     """``[[hands]]``: a centre and a size."""
-    return replace(scene, hands=tuple(_hand(e) for e in entries(path, data, "hands", KEYS)))
+    return tuple(_hand(e) for e in entries(path, data, "hands", KEYS))
 
 
 def _hand(e: Entry) -> Hand:

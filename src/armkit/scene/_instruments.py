@@ -5,7 +5,6 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
@@ -15,10 +14,8 @@ from .._inputs import array, brief, is_number, shown
 from .._primitives import RGB, Box, Cylinder, Primitive
 from .._primitives import pose as placed
 from ._fields import MAX_MM
-from ._object import Solid
-
-if TYPE_CHECKING:
-    from ._scene import Scene
+from ._object import Placed, Solid, Support
+from ._rect import Rect
 
 F64 = NDArray[np.float64]
 BAR_COLOURS: tuple[RGB, ...] = ((190, 140, 70), (150, 100, 50))  # naturals, sharps (darker)
@@ -207,7 +204,11 @@ class Xylophone:
         """None: playing strikes the bars on purpose."""
         return ()
 
-    def primitives(self, scene: Scene) -> list[Primitive]:
+    def supports(self, foot: Rect) -> tuple[Support, ...]:
+        """None: nothing is put down on a xylophone."""
+        return ()
+
+    def primitives(self, scene: Placed) -> list[Primitive]:
         """Its bars (naturals light, sharps dark), each at its place."""
         shapes: list[Primitive] = []
         for note in self.notes:
@@ -258,7 +259,11 @@ class Drum:
         """None: playing strikes the head on purpose."""
         return ()
 
-    def primitives(self, scene: Scene) -> list[Primitive]:
+    def supports(self, foot: Rect) -> tuple[Support, ...]:
+        """None: nothing is put down on a drum."""
+        return ()
+
+    def primitives(self, scene: Placed) -> list[Primitive]:
         """Its body, up to the head."""
         height = float(self.head[2] - self.position[2])
         centre = self.position + np.array([0.0, 0.0, height / 2])

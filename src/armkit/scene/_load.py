@@ -59,7 +59,7 @@ def build_scene(data: dict[str, Any], path: Path) -> Scene:
         source=path,
     )
     for kind in kinds:
-        scene = kind.load(path, data, scene)
+        scene = kind.keep(scene, kind.load(path, data, scene))
     _check_unique(scene, path)
     return scene
 

@@ -2,27 +2,28 @@
 
 A kind of object (a board, a cube, a sheet, a xylophone, ...) is one module that
 holds its dataclass, how it is read from a scene file, the solids the clearance
-check keeps the arm out of, and the primitives a view draws; the registry
-(``_kinds.OBJECT_KINDS``) lists the kinds. Clearance and the views iterate over
-``Scene.objects()`` and ask each object, instead of branching per kind.
+check keeps the arm out of, the surfaces a cube can rest on and the primitives a
+view draws; the registry (``_kinds.OBJECT_KINDS``) lists the kinds. Clearance,
+support and the views iterate over ``Scene.objects()`` and ask each object, instead
+of branching per kind. A kind's code sees the scene as ``Placed`` (the table and the
+objects on it), never the ``Scene`` class that holds the kinds.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Protocol
+from pathlib import Path
+from typing import Any, Generic, Protocol, TypeVar
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .._primitives import Primitive
-
-if TYPE_CHECKING:
-    from pathlib import Path
-
-    from ._scene import Scene
+from ._rect import Rect
 
 F64 = NDArray[np.float64]
+T = TypeVar("T")
 
 
 @dataclass(frozen=True)
@@ -44,6 +45,16 @@ class Solid:
         return cls(np.asarray(center, dtype=np.float64), np.eye(3), np.asarray(size) / 2.0)
 
 
+@dataclass(frozen=True)
+class Support:
+    """A surface under a footprint: its height [m], what it is, and whether the
+    footprint's centre is over it (stable)."""
+
+    z: float
+    on: str
+    stable: bool
+
+
 class SceneObject(Protocol):
     """An object on the table."""
 
@@ -57,26 +68,52 @@ class SceneObject(Protocol):
         instrument, a pen, a place)."""
         ...
 
-    def primitives(self, scene: Scene) -> list[Primitive]:
+    def supports(self, foot: Rect) -> tuple[Support, ...]:
+        """The surfaces it offers a cube whose footprint is ``foot`` (none: nothing
+        rests on it)."""
+        ...
+
+    def primitives(self, scene: Placed) -> list[Primitive]:
         """How a view draws it (``scene``: where it stands, for what it depends on)."""
         ...
 
 
-class Loader(Protocol):
-    """Reads one kind's section of a scene file (``data``, the whole file, from ``path``)
-    and returns ``scene`` with its objects added (SceneError naming the field)."""
+class Placed(Protocol):
+    """The scene as a kind's code reads it: the table and the objects on it."""
 
-    def __call__(self, path: Path, data: dict[str, Any], scene: Scene) -> Scene: ...
+    @property
+    def table_z(self) -> float:
+        """Height of the table's surface [m]."""
+        ...
+
+    def objects(self) -> tuple[SceneObject, ...]:
+        """Every object on the table."""
+        ...
+
+
+def support_under(scene: Placed, foot: Rect, below: float) -> Support:
+    """The highest surface under ``foot`` no higher than ``below`` + 1 mm [m] (the
+    table, else the first of the highest the objects offer)."""
+    best = Support(scene.table_z, "table", True)
+    for obj in scene.objects():
+        for found in obj.supports(foot):
+            if found.z <= below + 1e-3 and found.z > best.z:
+                best = found
+    return best
 
 
 @dataclass(frozen=True)
-class ObjectKind:
+class ObjectKind(Generic[T]):
     """One kind of object as a scene file holds it.
 
     Attributes:
         section: the file's array of tables (``[[cubes]]``).
-        load: reads that section into the scene (``Loader``).
+        load: reads that section (``load(path, data, scene)``: ``data`` the whole file,
+            ``scene`` what is read before it) and returns its objects (SceneError naming
+            the field).
+        keep: where a scene keeps them (returns the scene with them added).
     """
 
     section: str
-    load: Loader
+    load: Callable[[Path, dict[str, Any], Placed], tuple[T, ...]]
+    keep: Callable[[Any, tuple[T, ...]], Any]

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -13,10 +13,8 @@ from numpy.typing import NDArray
 from .._primitives import RGB, Cylinder, Primitive
 from .._primitives import pose as placed
 from ._fields import Entry, entries
-from ._object import Solid
-
-if TYPE_CHECKING:
-    from ._scene import Scene
+from ._object import Placed, Solid, Support
+from ._rect import Rect
 
 F64 = NDArray[np.float64]
 STAND_COLOUR: RGB = (90, 90, 100)
@@ -62,7 +60,11 @@ class Pen:
         """None: the gripper takes the pen on purpose."""
         return ()
 
-    def primitives(self, scene: Scene) -> list[Primitive]:
+    def supports(self, foot: Rect) -> tuple[Support, ...]:
+        """None: nothing rests on a pen."""
+        return ()
+
+    def primitives(self, scene: Placed) -> list[Primitive]:
         """None of its own: its stand draws it standing in it."""
         return []
 
@@ -88,9 +90,13 @@ class PenStand:
         """None: the gripper reaches into it for the pen."""
         return ()
 
-    def primitives(self, scene: Scene) -> list[Primitive]:
+    def supports(self, foot: Rect) -> tuple[Support, ...]:
+        """None: nothing rests on a pen stand."""
+        return ()
+
+    def primitives(self, scene: Placed) -> list[Primitive]:
         """The stand and the pen standing in it."""
-        pen = next((p for p in scene.pens if p.name == self.pen), None)
+        pen = next((p for p in _pens(scene) if p.name == self.pen), None)
         length = pen.length if pen is not None else 0.12
         base = placed(self.position - np.array([0.0, 0.0, 0.015]))
         tip = self.position + np.array([0.0, 0.0, length / 2 - (pen.holder_length if pen else 0.0)])
@@ -100,16 +106,19 @@ class PenStand:
         ]
 
 
-def load_pens(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
+def _pens(scene: Placed) -> list[Pen]:
+    return [obj for obj in scene.objects() if isinstance(obj, Pen)]
+
+
+def load_pens(path: Path, data: dict[str, Any], scene: Placed) -> tuple[Pen, ...]:
     """``[[pens]]``: each shorter than its holder, with tool lengths per arm."""
-    return replace(scene, pens=tuple(_pen(e) for e in entries(path, data, "pens", PEN_KEYS)))
+    return tuple(_pen(e) for e in entries(path, data, "pens", PEN_KEYS))
 
 
-def load_pen_stands(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
+def load_pen_stands(path: Path, data: dict[str, Any], scene: Placed) -> tuple[PenStand, ...]:
     """``[[pen_stands]]``: each holding a pen of ``[[pens]]``."""
-    pens = {p.name for p in scene.pens}
-    found = tuple(_pen_stand(e, pens) for e in entries(path, data, "pen_stands", STAND_KEYS))
-    return replace(scene, pen_stands=found)
+    pens = {p.name for p in _pens(scene)}
+    return tuple(_pen_stand(e, pens) for e in entries(path, data, "pen_stands", STAND_KEYS))
 
 
 def _pen(e: Entry) -> Pen:

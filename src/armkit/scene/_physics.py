@@ -18,10 +18,9 @@ from numpy.typing import NDArray
 from ..kinematics import fk
 from ..model import ArmModel
 from ._clearance import WIDTH_EPS, Held
-from ._cube import Cube
+from ._cube import Cube, settle
 from ._grasp import Grasp, grasp
 from ._scene import Scene
-from ._support import settle
 
 F64 = NDArray[np.float64]
 EventKind = Literal["grasped", "missed", "placed", "dropped", "tipped"]

@@ -13,9 +13,9 @@ from .._files import check_output_path
 from ..kinematics import fk_frames
 from ..model import ArmModel
 from ._instruments import Drum, Xylophone, note_name
+from ._rect import Rect
 from ._rotations import rot_z
 from ._scene import Scene
-from ._support import Rect
 
 PICTURE_SUFFIXES = (".png", ".svg", ".pdf")  # what top_view writes
 

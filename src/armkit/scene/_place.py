@@ -2,19 +2,17 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .._primitives import RGB, Label, Primitive
 from ._fields import Entry, entries
-from ._object import Solid
-
-if TYPE_CHECKING:
-    from ._scene import Scene
+from ._object import Placed, Solid, Support
+from ._rect import Rect
 
 F64 = NDArray[np.float64]
 PLACE_COLOUR: RGB = (60, 60, 60)
@@ -38,14 +36,18 @@ class Place:
         """None: a place is where things go."""
         return ()
 
-    def primitives(self, scene: Scene) -> list[Primitive]:
+    def supports(self, foot: Rect) -> tuple[Support, ...]:
+        """None: a place is a point."""
+        return ()
+
+    def primitives(self, scene: Placed) -> list[Primitive]:
         """Its name, at the point."""
         return [Label(f"/scene/{self.name}", self.position, self.name, PLACE_COLOUR)]
 
 
-def load_places(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
+def load_places(path: Path, data: dict[str, Any], scene: Placed) -> tuple[Place, ...]:
     """``[[places]]``: a point and, if given, the pitch to use there (-90..90 deg)."""
-    return replace(scene, places=tuple(_place(e) for e in entries(path, data, "places", KEYS)))
+    return tuple(_place(e) for e in entries(path, data, "places", KEYS))
 
 
 def _place(e: Entry) -> Place:

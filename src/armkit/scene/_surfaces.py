@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -12,10 +12,8 @@ from numpy.typing import ArrayLike, NDArray
 from .._errors import InputError
 from .._primitives import RGB, Box, Primitive
 from ._fields import Entry, entries
-from ._object import Solid
-
-if TYPE_CHECKING:
-    from ._scene import Scene
+from ._object import Placed, Solid, Support
+from ._rect import Rect
 
 F64 = NDArray[np.float64]
 SHEET_COLOUR: RGB = (250, 250, 250)
@@ -89,7 +87,11 @@ class Sheet:
         """None: drawing touches the sheet on purpose."""
         return ()
 
-    def primitives(self, scene: Scene) -> list[Primitive]:
+    def supports(self, foot: Rect) -> tuple[Support, ...]:
+        """None: a sheet is drawn on."""
+        return ()
+
+    def primitives(self, scene: Placed) -> list[Primitive]:
         """A thin white box on its plane."""
         T = np.eye(4)
         T[:3, :3] = np.column_stack([self.u, self.v, self.normal])
@@ -98,11 +100,11 @@ class Sheet:
         return [Box(f"/scene/{self.name}", size, T, SHEET_COLOUR)]
 
 
-def load_sheets(path: Path, data: dict[str, Any], scene: Scene) -> Scene:
+def load_sheets(path: Path, data: dict[str, Any], scene: Placed) -> tuple[Sheet, ...]:
     """``[[sheets]]``: a preset ``size`` (A3..A6, ``landscape = true`` to turn it) or
     ``width_mm``/``height_mm``; ``origin_mm`` a corner; ``u``, ``v`` its edge
     directions (default: along x and y, lying on the table)."""
-    return replace(scene, sheets=tuple(_sheet(e) for e in entries(path, data, "sheets", KEYS)))
+    return tuple(_sheet(e) for e in entries(path, data, "sheets", KEYS))
 
 
 def _sheet(e: Entry) -> Sheet:
