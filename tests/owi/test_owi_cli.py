@@ -44,7 +44,7 @@ def test_mistakes_are_one_line_and_move_nothing(capsys: pytest.CaptureFixture[st
     assert main(["--arm", "lynx6", "--driver", "sim", "rehome"]) == 2
     assert main([*SIM, "pick-place", "900", "0", "50", "150", "0", "80"]) == 2
     err = capsys.readouterr().err.strip().split("\n")
-    assert len(err) == 2 and "is for the OWI-535" in err[0] and "cannot reach" in err[1]
+    assert len(err) == 2 and "is for the OWI-535" in err[0] and "too far from the arm" in err[1]
     assert not state_path("sim").exists()  # nothing moved, nothing written
 
 
