@@ -1,6 +1,9 @@
 """The floors of the house, read from the code's own imports (every import statement,
 those inside functions and under TYPE_CHECKING included).
 
+Every module stands on one floor of ``FLOORS`` and imports nothing on a floor above
+its own; no modules import each other in a circle.
+
 drivers never import sim; sim never imports drivers, motion, Arm, the factory, the CLI
 or the packages above (tasks, script, viz, music, drawing); devices import neither; one
 factory (``armkit.connect``) is the only place that imports both drivers and sim; the
@@ -10,11 +13,29 @@ packages above reach the simulator through Arm and the factory.
 
 from __future__ import annotations
 
+from collections import defaultdict
 from pathlib import Path
 
 import pytest
 
 from import_reader import SRC, imported, module_name
+
+# The floors, bottom first (DESIGN.md's layers as the code has them): a module may import
+# its own floor and the ones below. Side by side on one floor, the pairs of the test below
+# say what may not import what.
+FLOORS: tuple[tuple[str, ...], ...] = (
+    ("armkit._errors", "armkit._clock", "armkit._closing", "armkit._progress",
+     "armkit._terminal", "armkit._toml_files", "armkit._inputs", "armkit._files",
+     "armkit._polyline", "armkit._lock", "armkit._primitives"),  # the shared floor
+    ("armkit.model",),
+    ("armkit.kinematics", "armkit.devices"),
+    ("armkit.drivers", "armkit.scene", "armkit.sensing", "armkit.sim", "armkit.interchange"),
+    ("armkit.motion", "armkit.connect"),
+    ("armkit._arm_inputs", "armkit.arm", "armkit"),  # ``armkit``: the package's face
+    ("armkit.music", "armkit.tasks", "armkit.drawing"),  # the jobs
+    ("armkit.script", "armkit.viz"),
+    ("armkit.cli",),
+)  # fmt: skip
 
 
 def _imports(path: Path) -> set[str]:
@@ -22,7 +43,45 @@ def _imports(path: Path) -> set[str]:
     return {m for _, m in imported(path) if m == "armkit" or m.startswith("armkit.")}
 
 
-MODULES = {module_name(p): _imports(p) for p in sorted((SRC / "armkit").rglob("*.py"))}
+PATHS = {module_name(p): p for p in sorted((SRC / "armkit").rglob("*.py"))}
+MODULES = {m: _imports(p) for m, p in PATHS.items()}
+
+
+def _module(name: str) -> str:
+    """The module an imported name is in (``armkit.arm.Arm`` -> ``armkit.arm``)."""
+    while name not in PATHS:
+        name = name.rpartition(".")[0]
+    return name
+
+
+def _edges(path: Path) -> set[str]:
+    """The modules ``path`` imports: ``from pkg import module`` imports the module (not
+    the package's face too, which the import reader also names)."""
+    by_line: dict[int, list[str]] = defaultdict(list)
+    for line, name in imported(path):
+        if name == "armkit" or name.startswith("armkit."):
+            by_line[line].append(name)
+    out = set()
+    for names in by_line.values():
+        modules = {n for n in names if n in PATHS}
+        for name in names:
+            if any(m.startswith(name + ".") for m in modules):
+                continue  # the package a module is imported from
+            out.add(_module(name))
+    return out - {module_name(path)}
+
+
+GRAPH = {m: _edges(p) for m, p in PATHS.items()}
+
+
+def _on(module: str, name: str) -> bool:
+    return module == name if name == "armkit" else _in(module, name)
+
+
+def _floor(module: str) -> int:
+    found = [k for k, floor in enumerate(FLOORS) if any(_on(module, n) for n in floor)]
+    assert found, f"{module} stands on no floor: add its package to FLOORS"
+    return found[0]
 
 
 def _in(module: str, floor: str) -> bool:
@@ -87,6 +146,8 @@ def test_the_import_reader_sees_relative_and_nested_imports() -> None:
         ("armkit.model", "armkit.interchange"),
         ("armkit.kinematics", "armkit.interchange"),
         ("armkit.scene", "armkit.interchange"),
+        ("armkit.sensing", "armkit.sim"),  # the simulated sensor lives in sim
+        ("armkit.sensing", "armkit.drivers"),
     ],
 )
 def test_a_floor_does_not_import_what_stands_above_or_beside_it(floor: str, forbidden: str) -> None:
@@ -109,3 +170,50 @@ def test_wire_codecs_live_in_devices() -> None:
     users = [m for m, deps in MODULES.items() if any(d in codecs for d in deps)]
     floors = ("armkit.devices", "armkit.drivers", "armkit.sim")  # at or above devices
     assert all(any(_in(m, f) for f in floors) for m in users), users
+
+
+def test_no_module_imports_a_floor_above_its_own() -> None:
+    up = sorted(
+        f"{m} (floor {_floor(m)}) imports {d} (floor {_floor(d)})"
+        for m, deps in GRAPH.items()
+        for d in deps
+        if _floor(d) > _floor(m)
+    )
+    assert up == []
+
+
+def _circles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """The strongly connected groups of more than one module (Tarjan's algorithm)."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    found: list[list[str]] = []
+
+    def visit(v: str) -> None:
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        for w in graph.get(v, ()):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in stack:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            group = stack[stack.index(v) :]
+            del stack[stack.index(v) :]
+            if len(group) > 1:
+                found.append(sorted(group))
+
+    for v in sorted(graph):
+        if v not in index:
+            visit(v)
+    return found
+
+
+def test_the_circle_finder_finds_a_circle() -> None:
+    assert _circles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
+    assert _circles({"a": {"b"}, "b": set()}) == []
+
+
+def test_no_modules_import_each_other_in_a_circle() -> None:
+    assert _circles(GRAPH) == []

@@ -77,7 +77,9 @@ def _job_parts(arm: str, file: str):  # type: ignore[no-untyped-def]
     rig = make_rig(model, scene, sheet, pen, opts)
     stand = stand_of(scene, pen)
     assert stand is not None
-    q = end_q(pick_pen(rig, stand, pen, model.home.copy(), opts.clearance), model.home.copy())
+    q = end_q(
+        pick_pen(rig, stand, pen, model.home.copy(), opts.clearance / 1000.0), model.home.copy()
+    )
     return rig, plan, q
 
 

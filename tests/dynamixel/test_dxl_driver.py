@@ -14,7 +14,7 @@ from armkit._errors import DeviceError, JointLimitError, ModelError
 from armkit.connect import open_driver as open_any
 from armkit.devices.dynamixel import DynamixelBus
 from armkit.drivers._driver import Driver
-from armkit.drivers.dynamixel import DynamixelDriver, open_driver
+from armkit.drivers.dynamixel import DynamixelDriver, open_dynamixel
 from armkit.model import ArmModel, load_model
 from armkit.model._limits import shortest_time
 from armkit.sim.emulators import DynamixelEmulator
@@ -183,9 +183,9 @@ def test_port_emu_is_this_driver_on_simulated_servos(model: ArmModel) -> None:
 
 def test_open_driver_needs_a_port_and_a_dynamixel_model(model: ArmModel) -> None:
     with pytest.raises(DeviceError, match="needs a port"):
-        open_driver(model, None)
+        open_dynamixel(model, None)
     with pytest.raises(ModelError, match=r"no \[drivers\.dynamixel\]"):
-        open_driver(load_model("lynx6"), "emu")
+        open_dynamixel(load_model("lynx6"), "emu")
 
 
 def test_a_move_longer_than_a_profile_must_wait(

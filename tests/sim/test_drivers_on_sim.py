@@ -13,10 +13,10 @@ from armkit.model import load_model, shipped_models
 
 # each kind's opener of real hardware, as the registry's entry calls it
 REAL_OPENERS: dict[str, Callable[..., object]] = {
-    "owi535": timed.open_driver,
+    "owi535": timed.open_owi535,
     "ssc32": servo.open_ssc32,
     "maestro": servo.open_maestro,
-    "dynamixel": dynamixel.open_driver,
+    "dynamixel": dynamixel.open_dynamixel,
 }
 
 

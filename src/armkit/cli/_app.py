@@ -100,6 +100,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     parser.add_argument(
         "--driver",
+        dest="driver_name",
         default="sim",
         metavar="NAME",
         help=f"driver: sim (default), {', '.join(kind.name for kind in driver_kinds())}",
@@ -226,9 +227,9 @@ def _check_globals(args: argparse.Namespace) -> None:
     from ..model import load_model
 
     load_model(args.arm)
-    if args.driver not in driver_names():
+    if args.driver_name not in driver_names():
         raise InputError(
-            f"unknown driver {args.driver!r} (--driver); drivers are {', '.join(driver_names())}"
+            f"unknown driver {args.driver_name!r} (--driver); drivers are {', '.join(driver_names())}"
         )
     if args.port is not None and not args.port.strip():
         raise InputError("--port is empty; give a device (/dev/ttyUSB0) or 'emu'")

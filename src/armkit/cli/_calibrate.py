@@ -52,10 +52,10 @@ def _ask(prompt: str) -> str:
 def run_calibrate(args: argparse.Namespace) -> int:
     model = load_model(args.arm)
     check_folder(config_dir(), "the config directory")  # where the calibration goes
-    calibration = _calibration(model, args.driver)
+    calibration = _calibration(model, args.driver_name)
     driver = open_kept(model, args)
     ask: Ask = _ask
-    if args.driver == "sim" and calibration.operator is not None:  # an automatic operator
+    if args.driver_name == "sim" and calibration.operator is not None:  # an automatic operator
         ask = calibration.operator(driver) or _ask
     with closing(driver):
         path = calibration.run(model, driver, ask, print)

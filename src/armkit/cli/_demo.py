@@ -59,7 +59,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 def run_demo(args: argparse.Namespace) -> int:
     """Check the outputs, then run the three parts and say what to try next."""
     output = check_output_path(args.output, "-o/--output", (".png",))
-    args.arm, args.driver, args.port = "openmanipulator_x", "sim", None  # the showcase's own
+    args.arm, args.driver_name, args.port = "openmanipulator_x", "sim", None  # the showcase's own
     world = watch_world(args)
     print("armkit demo: simulated arms, each under its real driver (no hardware)\n")
     _every_arm()

@@ -4,7 +4,6 @@ the scene's sheet with its pen (picked up from its stand and put back), in mm an
 from __future__ import annotations
 
 import argparse
-import math
 from pathlib import Path
 from typing import Any
 
@@ -113,8 +112,8 @@ def _run(args: argparse.Namespace) -> int:
             check_picture_path(out, option)
     scene = scene_of(args)
     opts = DrawOptions(
-        tolerance=args.tolerance / 1e3, margin=args.margin / 1e3, pen_up=args.pen_up / 1e3,
-        pitch=math.radians(args.pitch), speed=args.speed / 1e3, held=args.held,
+        tolerance=args.tolerance, margin=args.margin, pen_up=args.pen_up,
+        pitch=args.pitch, speed=args.speed, held=args.held,
     )  # fmt: skip
     report = _Report(args.dry_run)
     with watched_arm(args, scene) as arm, report:

@@ -159,7 +159,7 @@ def _draw(args: argparse.Namespace) -> int:
     points = _shape_points(args)
     streamer = _streamer(args, points)
     if args.record:
-        if args.driver != "sim" and args.port != "emu":
+        if args.driver_name != "sim" and args.port != "emu":
             raise InputError("--record needs a simulated arm (--driver sim, or --port emu)")
         check_output_path(args.record, "--record")
     with open_arm(args) as arm:

@@ -16,8 +16,8 @@ def open_kept(model: ArmModel, args: argparse.Namespace, world: Any = None) -> A
     can follow it (it writes only while somebody does)."""
     from ..connect import kept_state_file, open_driver, world_of
 
-    driver = open_driver(model, args.driver, args.port, world=world, keep=True)
-    state = kept_state_file(model, args.port, True) if args.driver == "sim" else None
+    driver = open_driver(model, args.driver_name, args.port, world=world, keep=True)
+    state = kept_state_file(model, args.port, True) if args.driver_name == "sim" else None
     opened = world_of(driver)
     if state is not None and opened is not None:
         from ..viz.live import publish_live

@@ -119,5 +119,5 @@ def _print_where(arm: Arm, args: argparse.Namespace) -> None:
     if reason:
         print(
             f"uncertain: these are estimates ({reason}); to know the angles again run "
-            f"'armkit --arm {args.arm} --driver {args.driver} rehome'"
+            f"'armkit --arm {args.arm} --driver {args.driver_name} rehome'"
         )

@@ -27,14 +27,14 @@ def open_arm(args: argparse.Namespace) -> Iterator[Arm]:
     watched as --view/--gif say (``armkit.cli._watch``)."""
     model = load_model(args.arm)
     check_folder(config_dir(), "the config directory")
-    if args.driver == "sim" and args.port not in (None, "emu"):
+    if args.driver_name == "sim" and args.port not in (None, "emu"):
         check_sim_port(model, args.port)
         check_output_path(args.port, "--port (the simulated arm's state file)")
     world = watch_world(args)
     scene = _scene(args)
     try:
         arm = Arm(model, open_kept(model, args, world), scene=scene)
-        rehome = f"armkit --arm {args.arm} --driver {args.driver} rehome"
+        rehome = f"armkit --arm {args.arm} --driver {args.driver_name} rehome"
         arm.on_uncertain(lambda text: print(f"armkit: warning: {text}: {rehome}", file=sys.stderr))
         with arm, kept_objects(args, arm, scene), watching(args, arm, scene) as physics:
             if physics is not None:  # moves are checked against the objects where they are

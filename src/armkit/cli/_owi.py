@@ -63,7 +63,9 @@ def _open(args: argparse.Namespace) -> TimedDriver:
     driver = open_kept(model, args)
     if not isinstance(driver, TimedDriver):
         driver.close()
-        raise ArmkitError(f"'{args.command}' needs --driver owi535 or sim, not {args.driver!r}")
+        raise ArmkitError(
+            f"'{args.command}' needs --driver owi535 or sim, not {args.driver_name!r}"
+        )
     return driver
 
 

@@ -61,7 +61,7 @@ def _kept(args: argparse.Namespace, model: Any, scene: Any) -> tuple[Any, str | 
     from ..scene import load_physics, scene_state_file
     from ..sim import kept_key
 
-    if args.driver != "sim" or args.port == "emu":
+    if args.driver_name != "sim" or args.port == "emu":
         return scene, None
     path = scene_state_file(scene, kept_key(model, args.port))
     if not path.exists():

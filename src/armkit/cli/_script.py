@@ -24,7 +24,7 @@ if TYPE_CHECKING:
     from ..arm import Arm
     from ..script import Frame, Header, SceneInfo, Setup, Source, Statement
 
-DEFAULTS = {"arm": "openmanipulator_x", "driver": "sim"}
+DEFAULTS = {"arm": "openmanipulator_x", "driver_name": "sim"}  # the options a script may choose
 UNITS_NOTE = (
     "Scripts are in mm, degrees and seconds unless a unit is written (cm, m, in, rad, ms, "
     "min, %, mm/s). The grammar: 'armkit shell' then 'help', or the documentation's Scripts page (docs/scripts.md)."
@@ -112,7 +112,7 @@ def _check(args: argparse.Namespace) -> int:
     arm = _choose(args, "arm", setup.arm, source)
     scene = _scene(args)
     model = load_model(arm) if arm != (setup.arm.value if setup.arm else None) else None
-    hardware = _choose(args, "driver", setup.driver, source) != "sim"
+    hardware = _choose(args, "driver_name", setup.driver_line, source) != "sim"
     result = check_source(source, model=model, scene=scene, now=ArmNow(hardware=hardware))
     _report(result)
     result.raise_if_failed()
@@ -177,8 +177,10 @@ def _read(name: str) -> tuple[Source, Setup]:
 
 
 def _choose(args: argparse.Namespace, what: str, header: Header | None, source: Source) -> str:
-    """The script's choice where the option was left at its default, else the option."""
+    """The script's choice where the option (``what``: ``arm`` or ``driver_name``, the
+    option ``--driver``) was left at its default, else the option."""
     option: str = getattr(args, what)
+    word = what.removesuffix("_name")
     if header is None:
         return option
     value = header.value
@@ -188,8 +190,8 @@ def _choose(args: argparse.Namespace, what: str, header: Header | None, source: 
     if option in (DEFAULTS[what], value, Path(value).stem):
         return value
     raise InputError(
-        f"{source.name}:{header.loc.line}: the script chooses {what} {header.value} but "
-        f"--{what} says {option}; drop the option or change the script"
+        f"{source.name}:{header.loc.line}: the script chooses {word} {header.value} but "
+        f"--{word} says {option}; drop the option or change the script"
     )
 
 
@@ -199,9 +201,10 @@ def _open(
     ns = argparse.Namespace(**vars(args))
     if setup is not None and source is not None:
         ns.arm = _choose(args, "arm", setup.arm, source)
-        ns.driver = _choose(args, "driver", setup.driver, source)
-        if setup.driver is not None and setup.driver.port is not None and args.port is None:
-            ns.port = setup.driver.port
+        ns.driver_name = _choose(args, "driver_name", setup.driver_line, source)
+        line = setup.driver_line
+        if line is not None and line.port is not None and args.port is None:
+            ns.port = line.port
         if setup.scene is not None and getattr(args, "scene", None) is None:
             ns.scene = _scene_file(setup.scene, source)  # the arm's moves, kept objects
     return open_arm(ns)

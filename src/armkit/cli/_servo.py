@@ -60,10 +60,10 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 def _servo_driver(args: argparse.Namespace) -> str:
     """The --driver, a kind of hobby-servo controller (InputError otherwise)."""
     hobby = [kind.name for kind in kinds_with("hobby")]
-    if args.driver not in hobby:
+    if args.driver_name not in hobby:
         needs = " or ".join(f"--driver {name}" for name in hobby)
-        raise InputError(f"this command needs {needs}, not {args.driver!r}")
-    return str(args.driver)
+        raise InputError(f"this command needs {needs}, not {args.driver_name!r}")
+    return str(args.driver_name)
 
 
 def run_servo(args: argparse.Namespace) -> int:

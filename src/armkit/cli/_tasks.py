@@ -150,7 +150,7 @@ def _nothing(args: argparse.Namespace, arm: Any, result: Any, scanned: str, todo
     if arm.moves == "timed":  # the OWI scanned where it thinks it was
         said += (
             f"; the {arm.model.name}'s angles are only estimated from motor run times: re-home "
-            f"it and scan again: armkit --arm {args.arm} --driver {args.driver} rehome"
+            f"it and scan again: armkit --arm {args.arm} --driver {args.driver_name} rehome"
         )
     print(said, file=sys.stderr)
     return 1

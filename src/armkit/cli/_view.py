@@ -207,7 +207,7 @@ def _follow(
     args: argparse.Namespace, model: Any, scene: Any, target: Any, outputs: list[Path]
 ) -> int:
     """Show the simulated arm other processes move (``armkit.viz.LiveSource``)."""
-    if args.driver != "sim" or args.port == "emu":
+    if args.driver_name != "sim" or args.port == "emu":
         raise InputError("--follow shows a simulated arm kept by other armkit commands (--driver sim); a real arm: drop --follow")  # fmt: skip
     if args.pose or args.gif:
         raise InputError("--follow only watches: drop --pose and --gif (move the arm from another command)")  # fmt: skip
@@ -289,7 +289,7 @@ def _gif(args: argparse.Namespace, model: Any, poses: list[Any], path: Path, sce
     from ..arm import Arm
     from ..viz import default_tour, record_path, write_gif
 
-    with Arm(model, args.driver, args.port, scene=scene) as arm:
+    with Arm(model, args.driver_name, args.port, scene=scene) as arm:
         frames = record_path(arm, poses or default_tour(model, scene), args.fps)
     write_gif(model, frames, path, scene=scene, fps=args.fps)
     took = frames[-1].t - frames[0].t

@@ -53,7 +53,7 @@ def outputs_of(args: argparse.Namespace) -> list[Path]:
         raise InputError(f"--rate must be 1..240 Hz, got {args.rate}")
     if not 0 <= args.http_port <= 65535:
         raise InputError(f"--port must be 0..65535, got {args.http_port}")
-    if args.gif and args.driver != "sim" and args.port != "emu":
+    if args.gif and args.driver_name != "sim" and args.port != "emu":
         raise InputError("--gif animates a simulated arm; drop --driver (or use --port emu)")
     if args.screenshot and args.gif:
         raise InputError("give --screenshot or --gif, not both")

@@ -54,9 +54,9 @@ def check_watch_options(args: argparse.Namespace) -> None:
     view, gif = getattr(args, "view", False), getattr(args, "gif", None)
     if not (view or gif):
         return
-    if args.driver != "sim" and args.port != "emu":
+    if args.driver_name != "sim" and args.port != "emu":
         flag = "--view" if view else "--gif"
-        raise InputError(f"{flag} watches a simulated arm; drop --driver {args.driver} (or use --port emu), or follow a real arm with 'armkit view'")  # fmt: skip
+        raise InputError(f"{flag} watches a simulated arm; drop --driver {args.driver_name} (or use --port emu), or follow a real arm with 'armkit view'")  # fmt: skip
     if not 0 <= args.view_port <= 65535:
         raise InputError(f"--view-port must be 0..65535, got {args.view_port}")
     if not (math.isfinite(args.view_wait) and 0 <= args.view_wait <= WAIT_LONGEST):
@@ -144,7 +144,7 @@ def kept_objects(args: argparse.Namespace, arm: Any, scene: Any) -> Iterator[Non
     not ``emu``), the scene's objects are kept in their state file too: loaded and attached
     to the world for the block, locked while in use, and written back when the block
     changed them (a refused command changes nothing, so writes nothing)."""
-    if scene is None or arm.world is None or args.driver != "sim" or args.port == "emu":
+    if scene is None or arm.world is None or args.driver_name != "sim" or args.port == "emu":
         yield
         return
     from .._lock import exclusive

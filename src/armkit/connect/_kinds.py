@@ -33,9 +33,9 @@ if TYPE_CHECKING:
 
 
 def _open_owi535(model: ArmModel, port: str | None) -> Driver:
-    from ..drivers.timed import open_driver
+    from ..drivers.timed import open_owi535
 
-    return open_driver(model, port)
+    return open_owi535(model, port)
 
 
 def _forecast_owi535(model: ArmModel, unit: str | None) -> Forecaster:
@@ -132,9 +132,9 @@ def _calibrate_servos(model: ArmModel, driver: Any, ask: Ask, say: Say) -> Path:
 
 
 def _open_dynamixel(model: ArmModel, port: str | None) -> Driver:
-    from ..drivers.dynamixel import open_driver
+    from ..drivers.dynamixel import open_dynamixel
 
-    return open_driver(model, port)
+    return open_dynamixel(model, port)
 
 
 def _forecast_dynamixel(model: ArmModel, unit: str | None) -> Forecaster:

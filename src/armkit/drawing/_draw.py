@@ -55,7 +55,9 @@ def draw(
 
     Drawn at the file's real size, centred on the sheet (refused with its size if it
     does not fit); ``fit=True`` scales it to the sheet, a ``Fit`` places it exactly.
-    Planned whole first (see ``DrawOptions``); ``preview`` [.png/.svg/.pdf] draws the
+    Planned whole first (see ``DrawOptions``: the tolerance, margin, pen-up height and
+    clearance in millimetres, the pen's pitch in degrees, its speed in mm/s);
+    ``preview`` [.png/.svg/.pdf] draws the
     plan before moving; ``dry_run`` stops there. On a simulated arm the pen's trace
     is measured (``DrawJob.metrics``) and ``result`` pictures what it drew.
     ``progress(job, n)`` is called once planned (n = 0, before anything moves) and

@@ -19,6 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
+from .._inputs import is_number
 from ..arm import Plan, Start, plan_steps
 from ..model import ArmModel
 from ..scene import Pen, Scene, Sheet
@@ -40,40 +41,40 @@ T = TypeVar("T", Sheet, Pen)
 
 @dataclass(frozen=True)
 class DrawOptions:
-    """How a drawing is planned and drawn (SI).
+    """How a drawing is planned and drawn, in millimetres and degrees.
 
     Attributes:
-        tolerance: the strokes stay this close to the file [m] (default 0.1 mm).
-        margin: blank border kept on the sheet [m].
-        pen_up: the tip's height above the paper between strokes [m].
-        pitch: the pen's angle above the horizontal while drawing [rad] (-60 deg:
-            tilted 30 deg from vertical, which the OpenManipulator-X and the Lynx6
-            both hold over the whole shipped sheet).
-        speed: the tip's speed along lines [m/s].
+        tolerance: the strokes stay this close to the file [mm] (default 0.1).
+        margin: blank border kept on the sheet [mm].
+        pen_up: the tip's height above the paper between strokes [mm].
+        pitch: the pen's angle above the horizontal while drawing [deg] (-60: tilted
+            30 deg from vertical, which the OpenManipulator-X and the Lynx6 both hold
+            over the whole shipped sheet).
+        speed: the tip's speed along lines [mm/s].
         held: the pen is in the gripper already (no pick up, no putting back).
-        clearance: height above the stand's grasp point to come down from [m].
+        clearance: height above the stand's grasp point to come down from [mm].
     """
 
-    tolerance: float = 1e-4
-    margin: float = 0.010
-    pen_up: float = 0.010
-    pitch: float = -math.pi / 3
-    speed: float = 0.030
+    tolerance: float = 0.1
+    margin: float = 10.0
+    pen_up: float = 10.0
+    pitch: float = -60.0
+    speed: float = 30.0
     held: bool = False
-    clearance: float = 0.030
+    clearance: float = 30.0
 
     def check(self) -> DrawOptions:
         """Self, or InputError naming the value out of range and the range."""
-        for name, value, lo, hi in (
-            ("tolerance", self.tolerance, 1e-6, 5e-3),
-            ("margin", self.margin, 0.0, 0.1),
-            ("pen_up", self.pen_up, 1e-3, 0.1),
-            ("speed", self.speed, 1e-3, 0.5),
-            ("clearance", self.clearance, 0.03, 0.5),
-            ("pitch", math.degrees(self.pitch), -90.0, 0.0),
+        for name, value, lo, hi, unit in (
+            ("tolerance", self.tolerance, 1e-3, 5.0, "mm"),
+            ("margin", self.margin, 0.0, 100.0, "mm"),
+            ("pen_up", self.pen_up, 1.0, 100.0, "mm"),
+            ("speed", self.speed, 1.0, 500.0, "mm/s"),
+            ("clearance", self.clearance, 30.0, 500.0, "mm"),
+            ("pitch", self.pitch, -90.0, 0.0, "deg"),
         ):
-            if not (math.isfinite(value) and lo <= value <= hi):
-                raise InputError(f"{name} must be {lo:g}..{hi:g} (SI; pitch deg), got {value!r}")
+            if not (is_number(value) and math.isfinite(value) and lo <= value <= hi):
+                raise InputError(f"{name} must be {lo:g}..{hi:g} {unit}, got {value!r}")
         return self
 
 
@@ -150,15 +151,15 @@ def plan_draw(
     q0 = start.q
     segments: list[Segment] = []
     if stand is not None and not opts.held:
-        segments += pick_pen(rig, stand, the_pen, q0, opts.clearance)
+        segments += pick_pen(rig, stand, the_pen, q0, opts.clearance / 1000.0)
     q = end_q(segments, q0)
     runs, note = _reachable(rig, plan, q, arm.model.name)
     segments += plan_strokes(rig, runs, q)
     if stand is not None and not opts.held:
-        segments += put_pen(rig, stand, the_pen, end_q(segments, q0), opts.clearance)
+        segments += put_pen(rig, stand, the_pen, end_q(segments, q0), opts.clearance / 1000.0)
     plan = replace(plan, strokes=tuple(r.uv for r in runs), notes=plan.notes + note)
     steps = plan_steps(
-        start, f"draw {Path(plan.source).name}", as_steps(segments, rig.tip, opts.speed)
+        start, f"draw {Path(plan.source).name}", as_steps(segments, rig.tip, opts.speed / 1000.0)
     )
     return DrawJob(
         plan, the_sheet, the_pen, tuple(segments), steps, rig.tip, scene.T_world_base, opts
@@ -182,7 +183,8 @@ def plan_on_sheet(
     the_sheet, the_pen = find_sheet(scene, sheet), find_pen(scene, pen)
     if stand_of(scene, the_pen) is None and not opts.held:
         raise DrawingError(f"no stand in scene {scene.name} holds {the_pen.name}; use held")
-    return plan_drawing(file, the_sheet, replace(as_fit(fit), margin=opts.margin), opts.tolerance)
+    fitted = replace(as_fit(fit), margin=opts.margin / 1000.0)
+    return plan_drawing(file, the_sheet, fitted, opts.tolerance / 1000.0)
 
 
 def _reachable(rig: Rig, plan: DrawingPlan, q: F64, arm: str) -> tuple[list[Run], tuple[str, ...]]:
@@ -213,7 +215,7 @@ def make_rig(model: ArmModel, scene: Scene, sheet: Sheet, pen: Pen, opts: DrawOp
     length = pen.tool_length(model.name, closed.tool_length)
     tip = closed.with_tool_length(length)
     jaws = closed.with_tool_length(length - pen.tip_offset)
-    return Rig(tip, jaws, scene, sheet, opts.pitch, opts.pen_up, 0.0)
+    return Rig(tip, jaws, scene, sheet, math.radians(opts.pitch), opts.pen_up / 1000.0, 0.0)
 
 
 def find_sheet(scene: Scene, name: str | None) -> Sheet:

@@ -58,7 +58,7 @@ from ._dxl_wait import stopped, wait_arrival
 from ._sent import SentProfile
 
 
-def open_driver(model: ArmModel, port: str | None) -> DynamixelDriver:
+def open_dynamixel(model: ArmModel, port: str | None) -> DynamixelDriver:
     """Open the arm's servos on ``port`` (a device path).
 
     Raises:

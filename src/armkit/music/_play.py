@@ -80,7 +80,9 @@ def play(
     hover: float | None = None,
     chords: str = "top",
 ) -> Played:
-    """Play the score ``file`` (MIDI, RTTTL or a note list) on the scene's instruments.
+    """Play the score ``file`` (MIDI, RTTTL or a note list) on the scene's instruments
+    (where they stand in the scene, in millimetres and degrees as every scene file gives
+    them; the arm planned from its joints now, in degrees as ``Arm`` reports them).
 
     Args:
         arm: the arm, holding the mallet (the scene's pen ``mallet``, if any, says how

@@ -32,10 +32,11 @@ RUN_LOOP = Loc(0, 0)  # where ``--repeat N`` puts its loop
 
 @dataclass(frozen=True)
 class Setup:
-    """What the script's header chose (None: not written)."""
+    """What the script's header chose (None: not written): its ``arm``, ``driver``
+    (``driver_line``) and ``scene`` lines."""
 
     arm: Header | None = None
-    driver: Header | None = None
+    driver_line: Header | None = None
     scene: Header | None = None
 
 
@@ -115,7 +116,7 @@ def check_source(
         first = next((d for d in diagnostics if d.severity == "error"), None)
         return CheckResult(program, load_model(DEFAULT_ARM), Plan(()), setup, None, found, first)
     _check_arm(setup.arm, model, diagnostics)
-    _check_driver(setup.driver, diagnostics)
+    _check_driver(setup.driver_line, diagnostics)
     if scene is None and setup.scene is not None:
         scene = load_scene_info(setup.scene.value, here, setup.scene.value_loc, diagnostics)
     now = ArmNow() if now is None else now

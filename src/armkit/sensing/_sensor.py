@@ -7,14 +7,11 @@ from __future__ import annotations
 import contextlib
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from .._errors import DeviceError
 from ._adc import AdcBoard, AdcEmulator
 from ._gp2d120 import distance
-
-if TYPE_CHECKING:
-    from ..arm import Arm
 
 
 @dataclass(frozen=True)
@@ -36,16 +33,22 @@ class DistanceSensor:
 
 @contextlib.contextmanager
 def open_sensor(
-    arm: Arm, channel: int = 0, port: str | None = None, lock: Any = None
+    ssc32: Any,
+    channel: int = 0,
+    port: str | None = None,
+    *,
+    inputs: Any = None,
+    lock: Any = None,
+    arm: str = "arm",
 ) -> Iterator[DistanceSensor]:
-    """The sensor on analog input ``channel``: the SSC-32's if the arm has one, else the
-    ADC board at ``port`` (None on a simulated arm: an emulated board on a pty, reading
-    the simulated arm's inputs under ``lock``).
+    """The sensor on analog input ``channel``: the SSC-32's (``ssc32``: the arm's
+    controller's analog inputs, ``Arm.analog_inputs()``, or None), else the ADC board at
+    ``port`` (None on a simulated arm: an emulated board on a pty reading its analog
+    ``inputs``, ``SimArm.analog``, under ``lock``); ``arm`` names the arm in errors.
 
     Raises:
         DeviceError: no SSC-32 and no port on real hardware, or the board is silent.
     """
-    ssc32 = arm.analog_inputs()
     if ssc32 is not None:
         yield DistanceSensor(
             lambda: float(ssc32.read_analog(channel)), f"SSC-32 V{'ABCD'[channel]}"
@@ -53,13 +56,12 @@ def open_sensor(
         return
     emulator = None
     if port is None:
-        sim = arm.sim
-        if sim is None:
+        if inputs is None:
             raise DeviceError(
-                f"the {arm.model.name} has no SSC-32: give the port of the ADC board "
+                f"the {arm} has no SSC-32: give the port of the ADC board "
                 "the distance sensor is wired to"
             )
-        emulator = AdcEmulator(sim.analog, lock)
+        emulator = AdcEmulator(inputs, lock)
         port = emulator.port
     board = AdcBoard(port)
     try:

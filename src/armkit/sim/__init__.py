@@ -24,6 +24,7 @@ from .._clock import Clock
 from ._arm import SimArm as SimArm
 from ._arm import Truth as Truth
 from ._recording import Recording as Recording
+from ._sensor import SimulatedSensor as SimulatedSensor
 from ._state import kept_key as kept_key
 from ._state import state_file as state_file
 from ._state import state_key as state_key

@@ -7,7 +7,7 @@ import math
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 from numpy.typing import NDArray
@@ -15,7 +15,13 @@ from numpy.typing import NDArray
 from .._errors import InputError
 from .._inputs import is_number, shown
 from ..model import ArmModel
+from ..sensing import NOISE_V
 from ._recording import Recorder, Recording
+from ._sensor import SimulatedSensor
+
+if TYPE_CHECKING:
+    from ..scene import ScenePhysics
+    from ..sensing import SensorMount
 
 F64 = NDArray[np.float64]
 
@@ -99,6 +105,22 @@ class SimArm:
         """True gripper opening [m]."""
         with self._lock:
             return float(self.body.grip())
+
+    def install_sensor(
+        self,
+        physics: ScenePhysics,
+        mount: SensorMount,
+        *,
+        channel: int = 0,
+        noise: float = NOISE_V,
+        seed: int = 2,
+    ) -> SimulatedSensor:
+        """Put a simulated GP2D120 on the hand at ``mount``, seeing ``physics``'s objects,
+        on analog input ``channel`` (0 = the SSC-32's ``VA``, or the ADC board's first
+        channel), with noise ``noise`` [V] seeded ``seed``; returns it."""
+        sensor = SimulatedSensor(self, physics, mount, noise, seed)
+        self.analog[channel] = sensor
+        return sensor
 
     def grip_stop(self, width: float | None) -> None:
         """The scene calls this when the jaws close on an object of ``width`` [m]: the

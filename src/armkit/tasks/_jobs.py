@@ -145,7 +145,8 @@ def pick(
     dry_run: bool = False,
 ) -> Plan:
     """Pick ``cube`` up (001: from the top where reachable, else from the side with
-    the grasp point shifted up; ``pitch`` [deg] forces one) and stay above it."""
+    the grasp point shifted up; ``pitch`` [deg] forces one) and stay above it;
+    ``clearance`` [mm] and ``calibration`` as ``plan_task``."""
     p = _deg(pitch)
     _check_clearance(clearance)
     scene = live_scene(arm, scene, dry_run, f"pick {cube}")
@@ -169,7 +170,8 @@ def place(
 ) -> Plan:
     """Put ``cube`` (in the gripper, picked by ``pick`` from where ``scene`` has it)
     down at ``to``: a place, ``board[row, col]``, a cube to stack on, a container,
-    or (x, y, z) [mm]; then go back up."""
+    or (x, y, z) [mm]; then go back up. ``pitch`` [deg] forces the tool's pitch;
+    ``clearance`` [mm] and ``calibration`` as ``plan_task``."""
     scene = live_scene(arm, scene, dry_run, f"place {cube}", held=cube)
     target = _free(scene, resolve(scene, to), cube, f"place {cube}")
     p = _deg(pitch) if pitch is not None else target.pitch
@@ -197,7 +199,8 @@ def move_item(
 
     ``item`` is a cube of the scene, or the grip point (x, y, z) [mm] of an item the
     scene does not know (then ``to`` must be a point or a place too, and the grasp
-    and the item's own clearance cannot be checked).
+    and the item's own clearance cannot be checked). ``pitch`` [deg] forces the tool's
+    pitch; ``clearance`` [mm] and ``calibration`` as ``plan_task``.
     """
     if not (is_number(lift) and 0.0 <= lift <= 500.0):
         raise InputError(f"lift must be 0..500 mm, got {shown(lift)}")
@@ -235,7 +238,8 @@ def rotate_cube(
     calibration: CalibrationLike = None,
     dry_run: bool = False,
 ) -> Plan:
-    """001: turn ``cube`` a quarter turn in place: ``"forward"`` picks it from the
+    """001: turn ``cube`` a quarter turn (90 deg) in place, coming down from ``clearance``
+    [mm] above it (as ``plan_task``): ``"forward"`` picks it from the
     side (pitch 0) and puts it down from the top (pitch -90), its top face then
     facing away from the arm; ``"backward"`` the other way round."""
     scene = live_scene(arm, scene, dry_run, f"rotate {cube}")
@@ -272,9 +276,9 @@ def stack(
     calibration: CalibrationLike = None,
     dry_run: bool = False,
 ) -> Plan:
-    """001: turn every cube in place (``rotate_first``: ``"forward"``,
+    """001: turn every cube 90 deg in place (``rotate_first``: ``"forward"``,
     ``"backward"`` or None), then stack them on the first one, each one cube
-    higher than the last."""
+    higher than the last, coming down from ``clearance`` [mm] above each (as ``plan_task``)."""
     names = stack_names(cubes)
     _check_clearance(clearance)
     scene = live_scene(arm, scene, dry_run, "stack")

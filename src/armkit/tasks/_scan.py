@@ -17,7 +17,7 @@ from numpy.typing import NDArray
 from ..kinematics import fk
 from ..model import ArmModel
 from ..scene import Scene
-from ..sensing import RANGE, DistanceSensor, SensorMount, install_sensor, open_sensor, volts
+from ..sensing import RANGE, DistanceSensor, SensorMount, open_sensor, volts
 from ._live import attached
 from ._plan import TaskError
 from ._state import Context, Options, State, moves, solve
@@ -164,7 +164,10 @@ def scan_sensor(
     through the SSC-32 or an ADC board (``port``; see ``sensing.open_sensor``)."""
     sim, physics = arm.sim, attached(arm)
     if sim is not None and physics is not None:
-        install_sensor(sim, physics, scan.mount, channel=channel, seed=seed)
+        sim.install_sensor(physics, scan.mount, channel=channel, seed=seed)
     lock = None if arm.world is None else arm.world.lock
-    with open_sensor(arm, channel, port, lock) as sensor:
+    inputs = None if sim is None else sim.analog
+    with open_sensor(
+        arm.analog_inputs(), channel, port, inputs=inputs, lock=lock, arm=arm.model.name
+    ) as sensor:
         yield sensor

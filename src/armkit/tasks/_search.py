@@ -91,6 +91,7 @@ def search(
     """002: scan from ``start`` to ``stop`` every ``step`` [deg] (002's servo angles),
     then back in 1 deg steps round the best reading, pick what is there up and drop it
     in the container ``into`` (None: the scene's only container), rest, servos off.
+    The scan holds the hand 15 mm above the table, 90 to 130 mm from the base.
 
     ``channel``: the sensor's analog input; ``port``: an ADC board's port (arms without
     an SSC-32 on real hardware); ``seed``: the simulated sensor's noise.

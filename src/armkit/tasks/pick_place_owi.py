@@ -27,7 +27,8 @@ def pick_place(
     say: Callable[[str], None] | None = None,
 ) -> None:
     """Pick up the item whose grip point is ``a`` and put it down at ``b``, (x, y, z)
-    [mm], travelling ``lift`` [mm] (30..500) above them; ``say`` tells each step.
+    [mm], travelling ``lift`` [mm] (30..500) above them with the gripper level (pitch
+    0 deg, 000's IK); ``say`` tells each step.
 
     Raises:
         TaskError: (an ``UnreachableError``) a step is out of reach or puts the arm

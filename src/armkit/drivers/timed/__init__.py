@@ -58,7 +58,7 @@ __all__ = [
     "forecast_run",
     "grip_seconds",
     "load_state",
-    "open_driver",
+    "open_owi535",
     "path_waypoints",
     "plan_path_runs",
     "rehome",
@@ -69,7 +69,7 @@ __all__ = [
 ]  # fmt: skip
 
 
-def open_driver(model: ArmModel, port: str | None = None) -> TimedDriver:
+def open_owi535(model: ArmModel, port: str | None = None) -> TimedDriver:
     """The real arm over USB; ``port`` names the unit whose state file is used
     (None = ``"default"``), for people with several arms."""
     from ...devices.owi535 import open_device

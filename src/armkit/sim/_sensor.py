@@ -5,17 +5,26 @@ physics), installed as one of the arm's analog inputs (``SimArm.analog``)."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Protocol
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..kinematics import fk
+from ..model import ArmModel
 from ..scene import ScenePhysics
-from ..sim import SimArm
-from ._beam import SensorMount, nearest
-from ._gp2d120 import NOISE_V, volts
+from ..sensing import NOISE_V, SensorMount, nearest, volts
 
 F64 = NDArray[np.float64]
+
+
+class Hand(Protocol):
+    """What the sensor sees of the arm it is on (``SimArm``): its true joints and jaws."""
+
+    model: ArmModel
+
+    def q(self) -> F64: ...
+    def grip(self) -> float: ...
 
 
 @dataclass
@@ -26,7 +35,7 @@ class SimulatedSensor:
     Call it for the output now [V]; ``true_distance()`` is what it really sees [m].
     """
 
-    arm: SimArm
+    arm: Hand
     physics: ScenePhysics
     mount: SensorMount
     noise: float = NOISE_V
@@ -52,19 +61,3 @@ class SimulatedSensor:
     def __call__(self) -> float:
         v = volts(self.true_distance()) + self.noise * float(self._rng.standard_normal())
         return min(5.0, max(0.0, v))
-
-
-def install_sensor(
-    arm: SimArm,
-    physics: ScenePhysics,
-    mount: SensorMount,
-    *,
-    channel: int = 0,
-    noise: float = NOISE_V,
-    seed: int = 2,
-) -> SimulatedSensor:
-    """Put a simulated GP2D120 on ``arm``'s analog input ``channel`` (0 = the SSC-32's
-    ``VA``, or the ADC board's first channel) and return it."""
-    sensor = SimulatedSensor(arm, physics, mount, noise, seed)
-    arm.analog[channel] = sensor
-    return sensor
