@@ -65,7 +65,11 @@ def test_units_are_converted(tmp_path: Path) -> None:
             "joints[0].home_deg",
             "must be a number",
         ),
-        (lambda s: s.replace('"modified"', '"craig"'), "dh_convention", "'standard' or 'modified'"),
+        (
+            lambda s: s.replace('"modified"', '"craig"'),
+            "dh_convention",
+            "'standard', 'modified' or 'frames'",
+        ),
         (lambda s: s.replace(", d_mm = 50 }", " }"), "joints[0].dh.d_mm", "missing"),
         (
             lambda s: s.replace("home_deg = 10", "home_deg = 100"),

@@ -68,6 +68,8 @@ def test_kinds() -> None:
         "owi535": "owi535",
         "planar2": "generic",
         "puma560": "generic",
+        "so100": "generic",
+        "so101": "generic",
     }
     with pytest.raises(ValueError, match="unknown driver 'nope'; drivers are sim, owi535"):
         open_driver(load_model("lynx6"), "nope")

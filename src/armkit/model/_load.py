@@ -15,6 +15,7 @@ from .._toml_files import resolve, shipped
 from ._check import MAX_LENGTH_MM
 from ._check import NUM as _NUM
 from ._check import Checker as _Checker
+from ._frame_rows import chain_frames, rpy_matrix
 from ._sections import check_driver_sections
 from ._types import ArmModel, DHRow, Gripper, Joint
 from ._urdf import is_urdf, load_urdf
@@ -31,6 +32,7 @@ _TOP = {
     "notes": str,
     "table_z_mm": _NUM,
     "links": dict,
+    "base": dict,
 }
 _REQUIRED_TOP = ("name", "dh_convention", "joints")
 _JOINT = {
@@ -42,8 +44,9 @@ _JOINT = {
     "servo_speed_dps": _NUM,
     "servo_accel_dps2": _NUM,
     "dh": dict,
+    "frame": dict,
 }
-_REQUIRED_JOINT = ("name", "limits_deg", "home_deg", "dh")
+_REQUIRED_JOINT = ("name", "limits_deg", "home_deg")
 _DH = {"a_mm": _NUM, "alpha_deg": _NUM, "d_mm": _NUM, "theta_offset_deg": _NUM, "flip": bool}
 _REQUIRED_DH = ("a_mm", "alpha_deg", "d_mm")
 _TOOL = {"xyz_mm": list, "rpy_deg": list, "length_mm": _NUM}
@@ -105,15 +108,24 @@ def _build(data: dict[str, Any], path: Path) -> ArmModel:
     check = _Checker(path)
     check.table(data, "", _TOP, _REQUIRED_TOP)
     convention = data["dh_convention"]
-    if convention not in ("standard", "modified"):
-        raise check.fail("dh_convention", f"must be 'standard' or 'modified', got {convention!r}")
+    if convention not in ("standard", "modified", "frames"):
+        raise check.fail(
+            "dh_convention", f"must be 'standard', 'modified' or 'frames', got {convention!r}"
+        )
     if not data["joints"] or len(data["joints"]) > MAX_JOINTS:
         raise check.fail("joints", f"needs 1..{MAX_JOINTS} [[joints]] entries")
-    joints, rows = zip(*(_joint(check, j, k) for k, j in enumerate(data["joints"])), strict=True)
+    chain = "frame" if convention == "frames" else "dh"
+    joints, rows = zip(
+        *(_joint(check, j, k, chain) for k, j in enumerate(data["joints"])), strict=True
+    )
     names = [j.name for j in joints]
     if len(set(names)) != len(names):
         raise check.fail("joints", f"joint names must be unique, got {', '.join(names)}")
-    _check_axes(check, convention, rows)
+    frames = chain_frames(check, data["joints"], data.get("base", {})) if chain == "frame" else ()
+    if chain == "dh":
+        if "base" in data:
+            raise check.fail("base", "is for dh_convention = 'frames' (DH rows start at the world)")
+        _check_axes(check, convention, rows)  # type: ignore[arg-type]  # DH rows here
     T, length = _tool(check, data.get("tool", {}))
     pitch = data.get("default_pitch_deg")
     model = ArmModel(
@@ -121,7 +133,7 @@ def _build(data: dict[str, Any], path: Path) -> ArmModel:
         description=data.get("description", ""),
         convention=convention,  # type: ignore[arg-type]  # checked above
         joints=tuple(joints),
-        dh=tuple(rows),
+        dh=tuple(r for r in rows if r is not None),
         T_flange_tool=T,
         tool_length=length,
         gripper=_gripper(check, data.get("gripper", {})),
@@ -132,6 +144,7 @@ def _build(data: dict[str, Any], path: Path) -> ArmModel:
         source=path,
         table_z=check.length(data.get("table_z_mm", 0.0), "table_z_mm", signed=True) / 1000.0,
         link_radii=_link_radii(check, data.get("links", {}), len(joints) + 1),
+        frames=frames,
     )
     check_driver_sections(check, model.drivers, model)
     return model
@@ -150,9 +163,17 @@ def _check_axes(check: _Checker, convention: str, rows: tuple[DHRow, ...]) -> No
             )
 
 
-def _joint(check: _Checker, data: Any, k: int) -> tuple[Joint, DHRow]:
+def _joint(check: _Checker, data: Any, k: int, chain: str) -> tuple[Joint, DHRow | None]:
+    """One ``[[joints]]`` entry; ``chain`` is the table its place in the chain is given
+    by: ``"dh"`` (a DH row, returned) or ``"frame"`` (read by ``chain_frames``)."""
     where = f"joints[{k}]"
-    check.table(data, where, _JOINT, _REQUIRED_JOINT)
+    check.table(data, where, _JOINT, (*_REQUIRED_JOINT, chain))
+    other = "frame" if chain == "dh" else "dh"
+    if other in data:
+        raise check.fail(
+            f"{where}.{other}",
+            f"this model's chain is given by '{chain}' tables (dh_convention), not '{other}'",
+        )
     lo, hi = check.numbers(data["limits_deg"], f"{where}.limits_deg", 2)
     for i, limit in enumerate((lo, hi)):
         check.angle(limit, f"{where}.limits_deg[{i}]")
@@ -188,7 +209,7 @@ def _joint(check: _Checker, data: Any, k: int) -> tuple[Joint, DHRow]:
         servo_velocity=servo_speed,
         servo_acceleration=servo_accel,
     )
-    return joint, _dh(check, data["dh"], f"{where}.dh")
+    return joint, _dh(check, data["dh"], f"{where}.dh") if chain == "dh" else None
 
 
 def _dh(check: _Checker, data: Any, where: str) -> DHRow:
@@ -213,22 +234,9 @@ def _tool(check: _Checker, data: Any) -> tuple[NDArray[np.float64], float]:
         check.angle(rpy[k], f"tool.rpy_deg[{k}]")
     length = check.length(data.get("length_mm", 0.0), "tool.length_mm") / 1000.0
     T = np.eye(4)
-    T[:3, :3] = _rpy_matrix(*(math.radians(v) for v in rpy))
+    T[:3, :3] = rpy_matrix(*(math.radians(v) for v in rpy))
     T[:3, 3] = np.array(xyz) / 1000.0 + T[:3, 0] * length
     return T, length
-
-
-def _rpy_matrix(roll: float, pitch: float, yaw: float) -> NDArray[np.float64]:
-    """R = Rz(yaw) Ry(pitch) Rx(roll), shape (3, 3)."""
-    cr, sr, cp, sp = math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch)
-    cy, sy = math.cos(yaw), math.sin(yaw)
-    return np.array(
-        [
-            [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
-            [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
-            [-sp, cp * sr, cp * cr],
-        ]
-    )
 
 
 def _link_radii(check: _Checker, data: Any, count: int) -> tuple[float, ...]:
