@@ -26,7 +26,8 @@ def test_a_search_that_finds_nothing_exits_1_saying_what_was_scanned_and_what_to
     assert got.out == "sensor read through SSC-32 VA; 5 readings\n"
     assert got.err == (
         f"armkit: nothing found: scanned {SCANNED}; widen --from/--to (0..180), lower "
-        "--step, or put the object within 30 cm of the sensor on that arc\n"
+        "--step, or put the object 130..390 mm from the base on that arc (nearer than 130 mm "
+        "it is inside the sensor's 4 cm minimum)\n"
     )
     assert main([*argv[:5], "--from", "100", "--to", "120", "--step", "0"]) == 2  # refused
 
@@ -80,6 +81,6 @@ def test_the_tasks_still_return_their_results_when_nothing_is_found() -> None:
     off = {"start": 100.0, "stop": 120.0}
     result = tasks.search(arm, load_scene("search_002"), **off)
     assert not result.found and result.plan is None and len(result.readings) == 5
-    assert result.lines()[-1] == "nothing found within 30 cm along the arc"
+    assert result.lines()[-1] == "nothing found 130..390 mm from the base axis along the arc"
     hand = tasks.reach(arm, load_scene("reach_003"), height=300.0)
     assert not hand.found and hand.lines()[-1] == "no hand within 30 cm along the arc"

@@ -111,7 +111,7 @@ def test_no_number_after_three_tries_writes_nothing(
     lynx6: ArmModel, ssc32_emu: Board, config_dir: Path
 ) -> None:
     driver = ssc32_emu.open(lynx6)
-    with pytest.raises(ValueError, match="no number for base after 3 tries"):
+    with pytest.raises(ValueError, match="no reading within 45 degrees of the point for base"):
         run_calibration(lynx6, driver, Person(ssc32_emu, ["x", "y", "z"]), lambda _: None)
     driver.close()
     assert not config_dir.exists()
@@ -170,3 +170,15 @@ def test_a_broken_unit_file_names_the_field(
     with pytest.raises(ModelError, match=r"\[servos.base\] needs angles_deg and pulses_us"):
         ssc32_emu.open(lynx6)
     assert math.isfinite(1.0)
+
+
+def test_a_reading_far_from_its_point_is_asked_again(lynx6: ArmModel, ssc32_emu: Board) -> None:
+    """The Lynx6 calibration accepted -500 deg for the 15 deg point (issue 28)."""
+    person = Person(ssc32_emu, answers=["-500", "nan", "15"])
+    driver = ssc32_emu.open(lynx6)
+    path = run_calibration(lynx6, driver, person, lambda _: None)
+    driver.close()
+    assert "-500 degrees is more than 45 degrees from 15.0" in person.prompts[1]
+    assert "more than 45 degrees" in person.prompts[2]  # nan: no number to keep either
+    base = tomllib.loads(path.read_text())["servos"]["base"]
+    assert base["pulses_us"] == [666.7, 833.3, 1166.7, 1500.0, 1833.3, 2166.7, 2333.3]

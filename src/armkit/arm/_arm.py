@@ -29,9 +29,11 @@ from ..scene import Held, Scene, load_scene
 from ._carry import Say, carry_out, check_start
 from ._plan import Plan
 from ._planner import (
+    inside,
     plan_follow,
     plan_grip,
     plan_joints,
+    plan_lift_out,
     plan_light,
     plan_motor_run,
     plan_through,
@@ -227,12 +229,20 @@ class Arm:
         self.run(self.plan_grip(width_mm))
 
     def plan_home(self, *, speed: float | None = None, start: Start | None = None) -> Plan:
-        """``home``'s plan from ``start`` (None: the arm now); nothing moves."""
+        """``home``'s plan from ``start`` (None: the arm now); nothing moves. From a pose
+        already in the table or an object (an interrupted job, a timed arm's drifted
+        estimate) the gripper first goes straight up until clear (``plan_lift_out``)."""
         timing = timing_of(speed, None, True, None)
-        return plan_joints(start or self.start(), self.model.home, speed=timing.speed, label="home")
+        at = start or self.start()
+        if not inside(at):
+            return plan_joints(at, self.model.home, speed=timing.speed, label="home")
+        lift = plan_lift_out(at)
+        home = plan_joints(lift.end, self.model.home, speed=timing.speed, label="home")
+        return lift.then(home, "home")
 
     def home(self, *, speed: float | None = None) -> None:
-        """Move every joint to the model's home angles."""
+        """Move every joint to the model's home angles (straight up first from a pose in
+        the table or an object)."""
         self.run(self.plan_home(speed=speed))
 
     def position(self) -> Position:

@@ -13,11 +13,12 @@ from dataclasses import replace
 import numpy as np
 from numpy.typing import NDArray
 
-from .._errors import DeviceError, InputError
+from .._errors import DeviceError, InputError, UnreachableError
 from ..drivers import RunForecaster
+from ..kinematics import fk, ik, pitch_follows, pitch_of
 from ..model import MAX_MOVE_S, check_grip, check_joints, move_time
 from ..motion import JointPath, NaiveStepping, Streamer, forecast_follow, plan_path
-from ..scene import Scene, move_refusal
+from ..scene import Scene, is_inside, move_refusal
 from ._plan import Plan, Step
 from ._start import Start
 
@@ -108,10 +109,56 @@ def plan_grip(start: Start, width: float, label: str = "grip") -> Plan:
 
 def refuse(start: Start, poses: F64) -> None:
     """Refuse (UnreachableError) a move from ``start`` through ``poses`` [rad], (K, dof),
-    that is not clear (``scene.move_refusal``)."""
+    that is not clear (``scene.move_refusal``; from a pose already inside something, one
+    that does not take the arm out)."""
     refused = move_refusal(start.kin, start.q, poses, start.scene, start.held, start.opening)
     if refused is not None:
+        if start.timer.moves == "timed":  # a timed arm's angles are an estimate
+            refused.args = (f"{refused}; if it is not really there: 'armkit rehome'",)
         raise refused
+
+
+def inside(start: Start) -> bool:
+    """Whether the arm at ``start`` is already in the table or an object."""
+    return is_inside(start.kin, start.q, start.scene, start.held, start.opening) is not None
+
+
+def plan_lift_out(start: Start, most: float = 0.15, label: str = "lift out") -> Plan:
+    """The gripper straight up, at its pitch, by the least whole 5 mm (at most ``most``
+    [m]) that leaves every link clear of the table and the scene's objects: the way out
+    of where an interrupted job left the arm (``Arm.home`` takes it first).
+
+    Raises:
+        UnreachableError: no such lift, saying the way out that remains.
+    """
+    T = fk(start.kin, start.q)
+    point, pitch = T[:3, 3], float(pitch_of(T))
+    for rise in np.arange(0.005, most + 1e-9, 0.005):
+        try:
+            q = ik(start.kin, point + np.array([0.0, 0.0, rise]), pitch, start.q).q
+        except UnreachableError:
+            break
+        if is_inside(start.kin, q, start.scene, start.held, start.opening) is None:
+            n = max(2, round(rise / 0.002))
+            line = point + np.linspace(0.0, rise, n)[:, None] * np.array([0.0, 0.0, 1.0])
+            keep = None if pitch_follows(start.kin) else pitch
+            return plan_through(start, line, keep, label)
+    raise UnreachableError(
+        f"the arm is in the table or an object and cannot be lifted straight out of it; "
+        f"{_way_out(start)}",
+        reason="collision",
+    )
+
+
+def _way_out(start: Start) -> str:
+    """What gets an arm going again that cannot move out of where it is."""
+    if start.timer.moves == "timed":
+        return "its angles are an estimate: 'armkit rehome' drives each joint to its stop"
+    name = start.scene.name if start.scene is not None else "NAME"
+    return (
+        f"a simulated arm: 'armkit scene reset {name}' puts it back at home; a real one: "
+        "move it out by hand (torque off)"
+    )
 
 
 def _holding(start: Start) -> str | None:

@@ -35,7 +35,8 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     p.set_defaults(func=_show)
     p = verbs.add_parser(
         "reset",
-        help="forget where the simulator keeps a scene's objects (back as the file puts them)",
+        help="forget where the simulator keeps a scene's objects (back as the file puts them) "
+        "and the simulated arms' kept poses (back at home)",
     )
     p.add_argument("name", metavar="NAME|FILE", help="the scene (shipped name or file)")
     p.set_defaults(func=_reset)
@@ -85,6 +86,12 @@ def _reset(args: argparse.Namespace) -> int:
         with held(path, f"the simulated objects of {scene.name}"):
             path.unlink()
     print(f"{scene.name}: {len(found)} kept state(s) forgotten")
+    arms = sorted(config_dir().glob("sim_*.json"))  # the simulated arms' kept poses
+    for path in arms:
+        with held(path, "a kept simulated arm"):
+            path.unlink()
+    if arms:
+        print(f"simulated arms: {len(arms)} kept pose(s) forgotten (they start at home again)")
     return 0
 
 

@@ -129,7 +129,12 @@ def _search(args: argparse.Namespace) -> int:
         )  # fmt: skip
         if not result.found:
             arc = _arc(getattr(args, "from"), args.to, args.step)
-            todo = f"widen --from/--to (0..180), lower --step, or put the object within {FAR} of the sensor on that arc"  # fmt: skip
+            near, far = (round(b * 1000) for b in result.band)
+            todo = (
+                f"widen --from/--to (0..180), lower --step, or put the object {near}..{far} mm "
+                f"from the base on that arc (nearer than {near} mm it is inside the sensor's "
+                f"{NEAR} cm minimum)"
+            )
             return _nothing(args, arm, result, f"nothing found: scanned {arc}", todo)
         print("\n".join(result.lines()))
     return 0

@@ -46,6 +46,7 @@ from ._picture import PICTURE_SUFFIXES as PICTURE_SUFFIXES
 from ._picture import top_view as top_view
 from ._place import Place as Place
 from ._rect import Rect as Rect
+from ._refusal import is_inside as is_inside
 from ._refusal import move_refusal as move_refusal
 from ._scene import Scene as Scene
 from ._show import describe as describe

@@ -19,11 +19,12 @@ from .._terminal import count
 from ..kinematics import fk
 from ..model import ArmModel
 from ..scene import Container, Cube, Scene, settle
+from ..sensing import RANGE
 from ._choose import pick_any
 from ._jobs import plan_task
 from ._live import TaskFailed, attached, live_scene, run_verified
 from ._plan import Plan, TaskError, cube_text
-from ._scan import locate, plan_scan, scan_sensor
+from ._scan import Scan, locate, plan_scan, scan_sensor
 from ._state import Context, State, down, grip
 
 if TYPE_CHECKING:
@@ -48,6 +49,8 @@ class SearchResult:
         plan: the pick-and-drop plan carried out, or None.
         servos_off: the motors were switched off at the end (False: the driver cannot).
         via: how the sensor was read.
+        band: how far from the arm's base axis [m] (near, far) the sensor sees along the
+            arc: where it is held plus its 4..30 cm (an object nearer is inside its minimum).
     """
 
     found: bool
@@ -58,12 +61,14 @@ class SearchResult:
     plan: Plan | None
     servos_off: bool
     via: str
+    band: tuple[float, float] = (0.0, 0.0)
 
     def lines(self) -> list[str]:
         """The result for people (mm, deg)."""
         out = [f"sensor read through {self.via}; {count(len(self.readings), 'reading')}"]
         if not self.found or self.position is None or self.angle is None:
-            return [*out, "nothing found within 30 cm along the arc"]
+            near, far = (round(b * 1000) for b in self.band)
+            return [*out, f"nothing found {near}..{far} mm from the base axis along the arc"]
         x, y, z = (float(v) * 1000 for v in self.position)
         assert self.distance is not None
         out.append(
@@ -110,14 +115,22 @@ def search(
         found = locate(arm, scan, sensor, start, stop, step)
         via = sensor.via
     if found is None:
-        return SearchResult(False, None, None, None, tuple(scan.readings), None, _rest(arm), via)
+        return SearchResult(
+            False, None, None, None, tuple(scan.readings), None, _rest(arm), via, _band(scan)
+        )
     angle, dist = found
     position = scan.object_at(arm, angle, dist, _size(arm))
     plan = _fetch(arm, scene, position, bin_name)
     run_verified(arm, plan, poses=False, allow=("dropped", "tipped"))
     _check_inside(arm, plan, scene.container(bin_name))
     readings = tuple(scan.readings)
-    return SearchResult(True, angle, dist, position, readings, plan, _rest(arm), via)
+    return SearchResult(True, angle, dist, position, readings, plan, _rest(arm), via, _band(scan))
+
+
+def _band(scan: Scan) -> tuple[float, float]:
+    """How far from the base axis [m] the sensor held as ``scan`` sees: its 4..30 cm
+    beyond the point it is held at."""
+    return scan.radius + RANGE[0], scan.radius + RANGE[1]
 
 
 def check_angles(start: float, stop: float, step: float) -> tuple[float, float, float]:

@@ -22,6 +22,10 @@ from ._config import table_to_toml
 from ._table import PULSE_MAX_US, PULSE_MIN_US, ServoCalibration
 
 ASK_TRIES = 3
+# How far a reading may be from the point it measures (deg for a joint, mm for the
+# gripper): a servo off by more than this is not calibrated by a table but mounted
+# wrongly, and a reading beyond it is a typo (-500 for 15).
+MOST_OFF = {"deg": 45.0, "mm": 20.0}
 
 
 def run_calibration(
@@ -78,15 +82,26 @@ def _ask_value(
     unit = "degrees" if table.unit == "deg" else "mm"
     shown = table.shown(value)
     prompt = f"  {table.name} at {pulse:.0f} µs should read {shown:.1f} {unit}; measured:"
+    most = MOST_OFF["deg" if table.unit == "deg" else "mm"]
     for _ in range(ASK_TRIES):
         answer = ask(prompt).strip()
         if not answer:
             return value
         try:
-            return float(answer) / table.shown(1.0)
+            read = float(answer)
         except ValueError:
             prompt = f"  '{answer}' is not a number; {table.name} measured in {unit}:"
-    raise InputError(f"no number for {table.name} after {ASK_TRIES} tries; calibration stopped")
+            continue
+        if abs(read - shown) <= most:  # NaN and inf fail too
+            return read / table.shown(1.0)
+        prompt = (
+            f"  {answer} {unit} is more than {most:g} {unit} from {shown:.1f} (a typo, or the "
+            f"servo is mounted wrongly); {table.name} measured in {unit}:"
+        )
+    raise InputError(
+        f"no reading within {most:g} {unit} of the point for {table.name} after {ASK_TRIES} "
+        "tries; calibration stopped (nothing written)"
+    )
 
 
 def _rebuild(table: ServoCalibration, measured: list[float]) -> ServoCalibration:
