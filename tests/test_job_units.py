@@ -15,7 +15,8 @@ from armkit.tasks import pick_place_owi
 
 JOBS: tuple[Callable[..., object], ...] = (
     tasks.pick, tasks.place, tasks.move_item, tasks.rotate_cube, tasks.stack,
-    tasks.search, tasks.reach, pick_place_owi.pick_place, drawing.draw, music.play,
+    tasks.search, tasks.reach, tasks.plan_search, tasks.plan_reach, pick_place_owi.pick_place,
+    drawing.draw, music.play,
 )  # fmt: skip
 
 

@@ -140,7 +140,7 @@ def prepare(
 
 
 def plan_play(
-    model: ArmModel,
+    model: ArmModel | Start,
     scene: Scene,
     file: str | Path | Score,
     on: str | None = None,
@@ -160,7 +160,8 @@ def plan_play(
     script's ``play`` so). Nothing moves; no arm is needed.
 
     Args:
-        model: the arm's model (the scene's mallet lengthens its tool).
+        model: the arm's model (the scene's mallet lengthens its tool), or a ``Start``
+            (``armkit.arm``): its model, its joints and its driver's servos.
         servos: ``"dynamixel"`` or ``"hobby"`` (default: the model's own driver's).
         start: the arm's joints when the piece starts [rad] (default: home).
         script: errors say a tempo and a transposition as a script writes them
@@ -171,6 +172,10 @@ def plan_play(
         ScoreError, RangeError, PerformanceError (every late note, and the fastest tempo
             the planner plays the piece at), UnreachableError, InputError.
     """
+    if isinstance(model, Start):
+        servos = servos or servo_kind(model)
+        start = model.q if start is None else start
+        model = model.model
     factor = check_tempo(tempo, script=script)
     score, layout = score_on(scene, file, on, transpose, chords=chords, script=script)
     mallet = mallet_model(model, scene)

@@ -28,10 +28,12 @@ from ._plan import Plan as Plan
 from ._plan import Step as Step
 from ._plan import TaskError as TaskError
 from ._reach import ReachResult as ReachResult
+from ._reach import plan_reach as plan_reach
 from ._reach import reach as reach
 from ._search import SearchResult as SearchResult
 from ._search import check_angles as check_angles
 from ._search import only_container as only_container
+from ._search import plan_search as plan_search
 from ._search import search as search
 from ._targets import Destination as Destination
 from ._targets import resolve as resolve

@@ -13,8 +13,9 @@ import numpy as np
 from .._errors import InputError
 from .._inputs import is_number, shown
 from .._terminal import count
+from ..arm import Plan, Start, plan_joints
 from ..scene import Scene
-from ..sensing import DistanceSensor
+from ._eye import ArmEye, Eye, PlanEye
 from ._live import live_scene
 from ._plan import TaskError
 from ._scan import Scan, locate, plan_scan, scan_sensor
@@ -79,21 +80,61 @@ def reach(
             hand is out of reach (the arm stops where it got to and says how far).
         ValueError: a bad argument.
     """
-    start, stop, step = check_angles(start, stop, step)
+    arc = check_angles(start, stop, step)
     height, near, amplitude = _check(height, near, shakes, amplitude)
     scene = live_scene(arm, scene, False, "reach")
-    scan = plan_scan(arm, scene, start, stop, step, height)
+    scan = plan_scan(arm, scene, *arc, height)
     with scan_sensor(arm, scan, channel, port, seed) as sensor:
-        found = locate(arm, scan, sensor, start, stop, step)
-        if found is None:
-            arm.home()
-            return ReachResult(False, None, None, 0, 0, sensor.via)
-        angle, d = found
-        radius, d, steps = _approach(arm, scan, sensor, angle, d, near)
-        _shake(arm, scan, angle, radius, shakes, amplitude)
+        done = _reach(ArmEye(arm, sensor), scan, arc, near, (shakes, amplitude))
         via = sensor.via
     arm.home()
-    return ReachResult(True, angle, d, steps, shakes, via)
+    if done is None:
+        return ReachResult(False, None, None, 0, 0, via)
+    return ReachResult(True, done[0], done[1], done[2], shakes, via)
+
+
+def plan_reach(
+    arm: Start,
+    scene: Scene,
+    *,
+    height: float = 110.0,
+    near: float = 60.0,
+    shakes: int = 3,
+    amplitude: float = 15.0,
+    start: float = 30.0,
+    stop: float = 120.0,
+    step: float = 5.0,
+) -> Plan:
+    """``reach`` planned from ``arm`` with nothing moving, its arguments in mm and
+    degrees as ``reach``'s: the same scan, approach and shakes, the sensor's readings
+    what the scene (its hand) puts along the beam (no noise), then home.
+
+    Raises:
+        TaskError: the scan is unreachable or would collide, or the hand is out of reach.
+        ValueError: a bad argument.
+    """
+    arc = check_angles(start, stop, step)
+    h, n, amp = _check(height, near, shakes, amplitude)
+    scan = plan_scan(arm, scene, *arc, h)
+    eye = PlanEye(arm.then(scene=scene), scene, scan.kin, scan.mount)
+    _reach(eye, scan, arc, n, (shakes, amp))
+    home = plan_joints(eye.plan.end, arm.model.home, label="home")
+    return eye.plan.then(home, task="reach")
+
+
+def _reach(
+    eye: Eye, scan: Scan, arc: tuple[float, float, float], near: float, shake: tuple[int, float]
+) -> tuple[float, float, int] | None:
+    """003 through ``eye``: find the hand on ``arc`` (start, stop, step [rad]), come
+    ``near`` [m], shake (times, amplitude [m]); (angle [rad], distance [m], steps) or
+    None if no hand was found."""
+    found = locate(eye, scan, *arc)
+    if found is None:
+        return None
+    angle, d = found
+    radius, d, steps = _approach(eye, scan, angle, d, near)
+    _shake(eye, scan, angle, radius, *shake)
+    return angle, d, steps
 
 
 def _check(height: float, near: float, shakes: int, amplitude: float) -> tuple[float, float, float]:
@@ -114,7 +155,7 @@ def _check(height: float, near: float, shakes: int, amplitude: float) -> tuple[f
 
 
 def _approach(
-    arm: Arm, scan: Scan, sensor: DistanceSensor, angle: float, d: float, near: float
+    eye: Eye, scan: Scan, angle: float, d: float, near: float
 ) -> tuple[float, float, int]:
     """Step along the beam until the sensor reads ``near`` [m]: (radius [m], last
     distance [m], steps)."""
@@ -122,26 +163,25 @@ def _approach(
     while d > near + 1e-3:
         radius += min(APPROACH_STEP, d - near)
         try:
-            q = scan.joints(angle, arm.read(), radius)
+            q = scan.joints(angle, eye.q(), radius)
         except TaskError:
             raise TaskError(
                 f"reach: the hand is {d * 1000:.0f} mm away and the arm can come no nearer",
                 step=f"approach step {steps + 1}",
             ) from None
-        arm.move_joints(np.degrees(q).tolist())
-        arm.settle()
+        eye.look(q, f"approach step {steps + 1}")
         steps += 1
-        now = sensor.distance()
+        now = eye.distance()
         if now is None:
             break
         d = now
     return radius, d, steps
 
 
-def _shake(arm: Arm, scan: Scan, angle: float, radius: float, shakes: int, amp: float) -> None:
+def _shake(eye: Eye, scan: Scan, angle: float, radius: float, shakes: int, amp: float) -> None:
     """Up ``amp`` [m], down ``amp``, ``shakes`` times, then level again."""
-    seed = arm.read()
+    seed = eye.q()
     poses = [scan.joints(angle, seed, radius, dz) for dz in (amp, -amp, 0.0)]
-    for _ in range(shakes):
-        for q in poses:
-            arm.move_joints(np.degrees(q).tolist())
+    for k in range(shakes):
+        for q, way in zip(poses, ("up", "down", "level"), strict=True):
+            eye.move(q, f"shake {k + 1}: {way}")

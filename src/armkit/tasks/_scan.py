@@ -14,10 +14,12 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import NDArray
 
+from ..arm import Start
 from ..kinematics import fk
 from ..model import ArmModel
 from ..scene import Scene
 from ..sensing import RANGE, DistanceSensor, SensorMount, open_sensor, volts
+from ._eye import Eye
 from ._live import attached
 from ._plan import TaskError
 from ._state import Context, Options, State, moves, solve
@@ -62,21 +64,19 @@ class Scan:
             self.kin, base, self.pitch, seed, "search", f"scan at {math.degrees(angle):.0f} deg"
         )
 
-    def sweep(self, arm: Arm, sensor: DistanceSensor, angles: F64) -> list[tuple[float, float]]:
+    def sweep(self, eye: Eye, angles: F64) -> list[tuple[float, float]]:
         """Turn to each of ``angles`` [rad] and read the sensor: [(angle, volts)]."""
         out = []
         for a in angles:
-            q = self.joints(float(a), arm.read())
-            arm.move_joints(np.degrees(q).tolist())
-            arm.settle()  # the reading is taken standing still
-            out.append((float(a), sensor.read()))
+            q = self.joints(float(a), eye.q())
+            out.append((float(a), eye.look(q, f"scan at {math.degrees(a):.0f} deg")))
         self.readings.extend(out)
         return out
 
-    def object_at(self, arm: Arm, angle: float, distance: float, size: float) -> F64:
+    def object_at(self, seed: F64, angle: float, distance: float, size: float) -> F64:
         """The bottom centre [m] (3,) of a cube of ``size`` [m] whose near face the beam
-        meets ``distance`` [m] out at ``angle`` [rad]."""
-        q = self.joints(angle, arm.read())
+        meets ``distance`` [m] out at ``angle`` [rad] (solved nearest joints ``seed``)."""
+        q = self.joints(angle, seed)
         origin, d = self.mount.beam(self.scene.T_world_base @ fk(self.kin, q))
         level = np.array([d[0], d[1], 0.0]) / max(float(np.hypot(d[0], d[1])), 1e-9)
         centre = origin + distance * d + level * size / 2.0
@@ -84,13 +84,13 @@ class Scan:
 
 
 def locate(
-    arm: Arm, scan: Scan, sensor: DistanceSensor, start: float, stop: float, step: float
+    eye: Eye, scan: Scan, start: float, stop: float, step: float
 ) -> tuple[float, float] | None:
     """002: scan from ``start`` to ``stop`` every ``step`` [rad] for a local maximum of
     the output, back in 1 deg steps over it, align with its middle and measure:
     (angle [rad], distance [m]), or None if nothing is within range."""
-    arm.grip(arm.model.gripper.width_max * 1000.0)  # the jaws as the scan was planned
-    coarse = scan.sweep(arm, sensor, np.arange(start, stop + step / 2, step) if stop > start
+    eye.open()  # the jaws as the scan was planned
+    coarse = scan.sweep(eye, np.arange(start, stop + step / 2, step) if stop > start
                         else np.arange(start, stop - step / 2, -step))  # fmt: skip
     floor = volts(RANGE[1])
     best = max(range(len(coarse)), key=lambda k: coarse[k][1])
@@ -105,10 +105,10 @@ def locate(
         hi += 1
     a, b = coarse[min(hi + 1, len(coarse) - 1)][0], coarse[max(lo - 1, 0)][0]
     n = max(2, round(abs(b - a) / FINE) + 1)
-    fine = scan.sweep(arm, sensor, np.linspace(a, b, n))
+    fine = scan.sweep(eye, np.linspace(a, b, n))
     angle = _middle(fine, background)
-    scan.sweep(arm, sensor, np.array([angle]))
-    dist = [d for d in (sensor.distance() for _ in range(AVERAGE)) if d is not None]
+    scan.sweep(eye, np.array([angle]))
+    dist = [d for d in (eye.distance() for _ in range(AVERAGE)) if d is not None]
     if not dist:
         return None
     d = float(np.median(dist))
@@ -126,7 +126,7 @@ def _middle(readings: list[tuple[float, float]], background: float) -> float:
 
 
 def plan_scan(
-    arm: Arm, scene: Scene, start: float, stop: float, step: float, height: float = HEIGHT
+    arm: Arm | Start, scene: Scene, start: float, stop: float, step: float, height: float = HEIGHT
 ) -> Scan:
     """The first scan pose (RADII x PITCHES, the beam ``height`` [m] up) whose every coarse pose is reachable and
     whose moves through them are clear; nothing moves.
@@ -134,6 +134,7 @@ def plan_scan(
     Raises:
         TaskError: none is, naming the step of the first pose tried.
     """
+    q0 = arm.q if isinstance(arm, Start) else arm.read()
     g = arm.model.gripper
     kin = arm.model.with_grip_width(g.width_max)
     n = max(1, round(abs(stop - start) / step))
@@ -146,7 +147,7 @@ def plan_scan(
             points = np.array([scan.point(float(a)) for a in angles])
             labels = [f"scan at {math.degrees(a):.0f} deg" for a in angles]
             try:
-                moves(ctx, State(arm.read(), scene, None, None), points, pitch, labels, kin=kin)
+                moves(ctx, State(q0, scene, None, None), points, pitch, labels, kin=kin)
             except TaskError as exc:
                 first = first or exc
                 continue

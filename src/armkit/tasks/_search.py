@@ -16,11 +16,13 @@ from numpy.typing import NDArray
 from .._errors import InputError
 from .._inputs import is_number, shown
 from .._terminal import count
+from ..arm import Start, plan_joints
 from ..kinematics import fk
 from ..model import ArmModel
 from ..scene import Container, Cube, Scene, settle
 from ..sensing import RANGE
 from ._choose import pick_any
+from ._eye import ArmEye, PlanEye
 from ._jobs import plan_task
 from ._live import TaskFailed, attached, live_scene, run_verified
 from ._plan import Plan, TaskError, cube_text
@@ -112,14 +114,14 @@ def search(
     scene.container(bin_name)
     scan = plan_scan(arm, scene, start, stop, step)
     with scan_sensor(arm, scan, channel, port, seed) as sensor:
-        found = locate(arm, scan, sensor, start, stop, step)
+        found = locate(ArmEye(arm, sensor), scan, start, stop, step)
         via = sensor.via
     if found is None:
         return SearchResult(
             False, None, None, None, tuple(scan.readings), None, _rest(arm), via, _band(scan)
         )
     angle, dist = found
-    position = scan.object_at(arm, angle, dist, _size(arm))
+    position = scan.object_at(arm.read(), angle, dist, _size(attached_cubes(arm)))
     plan = _fetch(arm, scene, position, bin_name)
     run_verified(arm, plan, poses=False, allow=("dropped", "tipped"))
     _check_inside(arm, plan, scene.container(bin_name))
@@ -159,13 +161,51 @@ def only_container(scene: Scene) -> str:
     return scene.containers[0].name
 
 
-def _size(arm: Arm) -> float:
+def attached_cubes(arm: Arm) -> tuple[Cube, ...]:
+    """The cubes of the scene physics attached to ``arm``'s world (none on hardware)."""
     physics = attached(arm)
-    cubes = () if physics is None else physics.scene.cubes
+    return () if physics is None else physics.scene.cubes
+
+
+def _size(cubes: tuple[Cube, ...]) -> float:
+    """The object's size [m]: the scene's one cube's, else 002's object's."""
     return cubes[0].size if len(cubes) == 1 else OBJECT_SIZE
 
 
-def _fetch(arm: Arm, scene: Scene, position: F64, container: str) -> Plan:
+def plan_search(
+    arm: Start,
+    scene: Scene,
+    *,
+    start: float = 30.0,
+    stop: float = 120.0,
+    step: float = 5.0,
+    into: str | None = None,
+) -> Plan:
+    """``search`` planned from ``arm`` with nothing moving: its scan from ``start`` to
+    ``stop`` every ``step`` [deg] (002's servo angles), the sensor's readings what the
+    scene puts along its beam (no noise; the hand 15 mm above the table, 90 to 130 mm
+    from the base), then, if it finds the object, the pick and the drop into ``into``
+    planned on where the readings put it, and home (what ``armkit check`` plans a
+    search with; the run reads the real sensor and may find otherwise).
+
+    Raises:
+        TaskError: the scan or the pick is unreachable or would collide.
+        ValueError: bad angles or container.
+    """
+    a, b, s = check_angles(start, stop, step)
+    bin_name = into or only_container(scene)
+    scene.container(bin_name)
+    scan = plan_scan(arm, scene, a, b, s)
+    eye = PlanEye(arm.then(scene=scene), scene, scan.kin, scan.mount)
+    found = locate(eye, scan, a, b, s)
+    plan = eye.plan
+    if found is not None:
+        position = scan.object_at(eye.q(), found[0], found[1], _size(scene.cubes))
+        plan = plan.then(_fetch(plan.end, scene, position, bin_name))
+    return plan.then(plan_joints(plan.end, arm.model.home, label="home"), task="search")
+
+
+def _fetch(arm: Arm | Start, scene: Scene, position: F64, container: str) -> Plan:
     """The pick at the estimated ``position`` and the drop over ``container``, planned
     whole: the scene's nearest cube is planned where it was estimated (the truth is
     the simulator's)."""
