@@ -17,6 +17,7 @@ from armkit.viz import (
     scene_primitives,
     table_primitive,
 )
+from armkit.viz._arm_shapes import TABLE_DROP
 from armkit.viz._meshes import capsule_mesh, segment_frame
 
 ARMS = ["openmanipulator_x", "owi535", "lynx6", "al5d", "puma560", "planar2"]
@@ -74,10 +75,24 @@ def test_segment_frame_points_z_from_p0_to_p1() -> None:
         assert np.linalg.det(T[:3, :3]) == pytest.approx(1.0)
 
 
-def test_table_top_is_the_models_table_plane() -> None:
+def test_table_top_is_the_models_table_plane_drawn_just_below_it() -> None:
     model = armkit.load_model("openmanipulator_x")
     table = table_primitive(model)
-    assert table.T[2, 3] + table.size[2] / 2 == pytest.approx(model.table_z)
+    assert table.T[2, 3] + table.size[2] / 2 == pytest.approx(model.table_z - TABLE_DROP)
+    assert 0.0 < TABLE_DROP <= 0.001  # below what the eye sees, above the depth buffer's step
+
+
+def test_the_sheet_is_not_drawn_in_the_tables_plane() -> None:
+    """The sheet and the table were drawn at the same height in the 3D view: their faces
+    flickered through each other (z-fighting) as the view turned (issue 28)."""
+    scene = load_scene("drawing")
+    model = armkit.load_model("openmanipulator_x")
+    table = table_primitive(model, scene)
+    (sheet,) = [p for p in scene_primitives(scene) if p.name == "/scene/A5"]
+    table_top = table.T[2, 3] + table.size[2] / 2
+    sheet_top = sheet.T[2, 3] + sheet.size[2] / 2
+    sheet_bottom = sheet.T[2, 3] - sheet.size[2] / 2
+    assert sheet_top > table_top + 1e-4 and abs(sheet_bottom - table_top) > 1e-4
 
 
 def test_pose_rejects_bad_positions() -> None:

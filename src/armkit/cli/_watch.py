@@ -29,11 +29,12 @@ import argparse
 import contextlib
 import math
 import time
+import warnings
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
-from .._errors import ArmkitError, InputError
+from .._errors import ArmkitError, ArmkitWarning, InputError
 from .._files import check_output_path
 
 WAIT_LONGEST = 600.0  # [s] --view-wait
@@ -79,6 +80,10 @@ def watch_world(args: argparse.Namespace) -> Any:
     return World(realtime=True)
 
 
+class SlowdownWarning(ArmkitWarning):
+    """A real-time simulation could not keep pace with the wall clock."""
+
+
 @contextlib.contextmanager
 def watched_arm(args: argparse.Namespace, scene: Any = None) -> Iterator[Any]:
     """The Arm of ``--arm/--driver/--port`` (with ``scene``), watched as the options say
@@ -97,9 +102,27 @@ def watched_arm(args: argparse.Namespace, scene: Any = None) -> Iterator[Any]:
             watching(args, arm, scene),
         ):
             yield arm
+        if world is not None:
+            say_slowdown(world)
     finally:
         if world is not None:
             world.close()
+
+
+SLOWDOWN_SAID = 1.5  # a real-time world this many times slower than real time is said
+
+
+def say_slowdown(world: Any) -> None:
+    """Warn if a real-time world could not keep pace (a busy machine): the job and the
+    view ran slower than real time and would otherwise say nothing of it."""
+    factor = world.slowdown()
+    if factor >= SLOWDOWN_SAID:
+        warnings.warn(
+            f"the simulation ran up to {factor:.1f}x slower than real time (this machine is "
+            "busy): the job and the view took that much longer than on the arm",
+            SlowdownWarning,
+            stacklevel=2,
+        )
 
 
 @contextlib.contextmanager

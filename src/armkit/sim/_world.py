@@ -131,6 +131,8 @@ class World:
         self._wall0 = time.monotonic()
         self._running = realtime
         self._pacer: threading.Thread | None = None  # started with the first arm or observer
+        self._work = 0.0  # [s] wall time spent stepping, in real-time mode
+        self._worked = 0.0  # [s] the simulated time that stepping covered
 
     # -- time ---------------------------------------------------------------
     def now(self) -> float:
@@ -305,7 +307,21 @@ class World:
             self._step(due - self._steps)
 
     def _catch_up(self) -> None:
-        self._run_to((time.monotonic() - self._wall0) * self.pace)
+        before, began = self._steps, time.monotonic()
+        self._run_to((began - self._wall0) * self.pace)
+        if self._steps > before and (self._arms or self._observers):
+            self._work += time.monotonic() - began
+            self._worked += (self._steps - before) * self.dt
+
+    def slowdown(self) -> float:
+        """In real-time mode, how many times slower than its pace the world's stepping
+        has run: the wall time spent stepping over the simulated time it covered, times
+        the pace (1.0: it keeps pace; a busy machine makes it more, and everything in it
+        -- a job, the view -- slows down with it). Always 1.0 in virtual mode."""
+        with self.lock:
+            if not self.realtime or self._worked <= 0.0:
+                return 1.0
+            return max(1.0, self._work * self.pace / self._worked)
 
     def _wait_until(self, t: float) -> None:
         wall = self._wall0 + t / self.pace

@@ -74,13 +74,19 @@ def jaw_boxes(T_tool: F64, width: float, radius: float) -> list[Primitive]:
     return jaws
 
 
+TABLE_DROP = 0.0005  # [m] the table is drawn this much below its plane (see table_primitive)
+
+
 def table_primitive(model: ArmModel, scene: Scene | None = None) -> Box:
     """The table: a thin slab whose top is the plane ``model.table_z`` (a scene's
-    ``table_z``), around the arm's base, wide enough for the arm's reach."""
+    ``table_z``), around the arm's base, wide enough for the arm's reach. It is drawn
+    ``TABLE_DROP`` below that plane so that what lies on it in the plane (a sheet of
+    paper) is not drawn in the same plane as it: two faces at one depth flicker
+    (z-fighting) as the view turns."""
     reach = max(0.2, 1.1 * reach_of(model))
     thickness = 0.01
     base = np.zeros(3) if scene is None else scene.T_world_base[:3, 3]
-    top = model.table_z if scene is None else scene.table_z
+    top = (model.table_z if scene is None else scene.table_z) - TABLE_DROP
     T = pose((float(base[0]), float(base[1]), top - thickness / 2))
     return Box("/table", np.array([2 * reach, 2 * reach, thickness]), T, TABLE_COLOUR)
 
