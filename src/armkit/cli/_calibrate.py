@@ -3,15 +3,17 @@
 from __future__ import annotations
 
 import argparse
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .._closing import closing
 from .._errors import ArmkitError, InputError
 from .._files import config_dir
 from ..connect import Ask, Calibration, driver_kinds, native_kind
-from ..model import ArmModel, load_model
 from ._args import check_folder
 from ._kept import open_kept
+
+if TYPE_CHECKING:
+    from ..model import ArmModel
 
 
 def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
@@ -50,6 +52,8 @@ def _ask(prompt: str) -> str:
 
 
 def run_calibrate(args: argparse.Namespace) -> int:
+    from ..model import load_model
+
     model = load_model(args.arm)
     check_folder(config_dir(), "the config directory")  # where the calibration goes
     calibration = _calibration(model, args.driver_name)

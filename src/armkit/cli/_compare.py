@@ -4,22 +4,17 @@ from __future__ import annotations
 
 import argparse
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .._errors import ArmkitError
 from .._files import check_output_path
 from .._progress import Progress
-from ..model import load_model
 from ._args import IMAGE_SUFFIXES, integer
-from ._compare_methods import (
-    TASKS,
-    MethodScore,
-    applicable_methods,
-    compare_methods,
-    default_task,
-    reachable_targets,
-)
+from ._ik_tasks import TASKS
 from ._table import table
+
+if TYPE_CHECKING:
+    from ._compare_methods import MethodScore
 
 
 def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
@@ -66,6 +61,14 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 def run_compare(args: argparse.Namespace) -> int:
     """Print the comparison table; write the chart if asked."""
+    from ..model import load_model
+    from ._compare_methods import (
+        applicable_methods,
+        compare_methods,
+        default_task,
+        reachable_targets,
+    )
+
     model = load_model(args.arm)
     if args.plot:
         check_output_path(args.plot, "--plot", IMAGE_SUFFIXES)

@@ -21,10 +21,9 @@ from numpy.typing import NDArray
 from .._errors import InputError, UnreachableError
 from ..kinematics import IKBatchResult, closed_form, fk, ik, ik_batch, pitch_of
 from ..model import ArmModel
+from ._ik_tasks import METHODS, TASKS
 
 F64 = NDArray[np.float64]
-TASKS = ("position", "position+pitch", "pose")
-METHODS = ("analytic", "lm", "lm-batch", "ccd", "jacobian", "random")
 VERIFY_POS = 1e-3  # [m]
 VERIFY_ANG = math.radians(0.1)  # [rad]
 Progress = Callable[[str, int], None]  # (the method under way, targets done by it)

@@ -20,13 +20,8 @@ import warnings
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from .._errors import ArmkitError
 from .._files import check_output_path
-from ..drivers.timed import UncertainEstimateWarning
-from ..kinematics import fk
-from ..model import load_model, shipped_models
 from ._table import table
 from ._watch import add_watch_options, watch_world, watching
 
@@ -97,7 +92,12 @@ def next_commands() -> tuple[str, ...]:
 
 def _every_arm() -> None:
     """Each shipped arm reaches a point in front of it; the error by forward kinematics."""
+    import numpy as np
+
     from ..arm import Arm
+    from ..drivers.timed import UncertainEstimateWarning
+    from ..kinematics import fk
+    from ..model import load_model, shipped_models
     from ..viz import reach_of
 
     rows = []
@@ -130,6 +130,7 @@ def _stack(args: argparse.Namespace, world: Any, output: Path) -> None:
     from .. import tasks
     from ..arm import Arm
     from ..connect import open_driver
+    from ..model import load_model
     from ..scene import load_scene
     from ..viz import WorldSource, write_picture
 
@@ -182,7 +183,11 @@ def _other_scenes() -> None:
 
 def _draw_circle() -> None:
     """Draw a 40 mm circle with the simulated arm and measure the pen's true path."""
+    import numpy as np
+
     from ..arm import Arm
+    from ..kinematics import fk
+    from ..model import load_model
     from ..motion import TimedStreaming, circle, distance_to_polyline
 
     m = load_model("openmanipulator_x")

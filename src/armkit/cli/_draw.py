@@ -5,15 +5,16 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
-from typing import Any
-
-import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from typing import TYPE_CHECKING, Any
 
 from .._errors import InputError
 from .._progress import Progress
 from ._args import number
 from ._watch import add_watch_options, watched_arm
+
+if TYPE_CHECKING:
+    import numpy as np
+    from numpy.typing import ArrayLike, NDArray
 
 EPILOG = (
     "Needs --scene FILE|NAME before 'draw' (a scene with a sheet and a pen, e.g. 'drawing'). "
@@ -49,6 +50,8 @@ def in_plane(
 ) -> NDArray[np.float64]:
     """Points, shape (N, 3), of a horizontal shape about ``center`` (same units) turned so
     that its plane's normal is ``normal`` (None: as they are); InputError if it is 0."""
+    import numpy as np
+
     if normal is None:
         return points
     n = np.asarray(normal, dtype=np.float64)

@@ -6,26 +6,11 @@ from __future__ import annotations
 
 import argparse
 import math
-from typing import Any
-
-import numpy as np
-from numpy.typing import NDArray
+from typing import TYPE_CHECKING, Any
 
 from .._errors import InputError
 from .._files import check_output_path
 from .._terminal import count
-from ..kinematics import fk, pitch_of
-from ..model import ArmModel
-from ..motion import (
-    EarlyStreaming,
-    NaiveStepping,
-    Streamer,
-    TimedStreaming,
-    arc,
-    cube_edges,
-    line,
-    rectangle,
-)
 from ._args import (
     MAX_DRAW_S,
     MAX_POINTS,
@@ -36,10 +21,18 @@ from ._args import (
     number,
 )
 from ._draw import add_file_commands, add_plane_option, in_plane
-from ._open_arm import open_arm
 from ._watch import add_watch_options
 
-F64 = NDArray[np.float64]
+if TYPE_CHECKING:
+    import numpy as np
+    from numpy.typing import NDArray
+
+    F64 = NDArray[np.float64]
+    from ..model import ArmModel
+    from ..motion import (
+        Streamer,
+    )
+
 MODES = ("naive", "early", "timed")
 
 
@@ -156,6 +149,8 @@ def _draw_options(p: argparse.ArgumentParser) -> None:
 
 
 def _draw(args: argparse.Namespace) -> int:
+    from ._open_arm import open_arm
+
     points = _shape_points(args)
     streamer = _streamer(args, points)
     if args.record:
@@ -177,6 +172,10 @@ def _draw(args: argparse.Namespace) -> int:
 def _pitches(model: ArmModel, q: F64) -> str:
     """The pitch the solver chose along a path q (N, dof) [rad], as ', pitch P deg' or a
     range (planar2: the pitch follows from the position)."""
+    import numpy as np
+
+    from ..kinematics import fk, pitch_of
+
     pitches = np.degrees(pitch_of(fk(model, q)))
     lo, hi = float(pitches.min()), float(pitches.max())
     return f", pitch {lo:.1f} deg" if hi - lo < 0.05 else f", pitch {lo:.1f}..{hi:.1f} deg"
@@ -184,6 +183,8 @@ def _pitches(model: ArmModel, q: F64) -> str:
 
 def _shape_length(args: argparse.Namespace) -> float:
     """Length of the shape's path [mm], known before a point is made."""
+    import numpy as np
+
     if args.shape == "circle":
         return abs(math.radians(args.sweep)) * float(args.radius)
     if args.shape == "line":
@@ -196,6 +197,10 @@ def _shape_length(args: argparse.Namespace) -> float:
 
 def _shape_points(args: argparse.Namespace) -> F64:
     """The shape's points [mm], shape (N, 3); InputError if there would be too many."""
+    import numpy as np
+
+    from ..motion import arc, cube_edges, line, rectangle
+
     count = _shape_length(args) / args.spacing
     if count > MAX_POINTS:
         raise InputError(
@@ -222,6 +227,10 @@ def _shape_points(args: argparse.Namespace) -> F64:
 
 
 def _streamer(args: argparse.Namespace, points: F64) -> Streamer:
+    import numpy as np
+
+    from ..motion import EarlyStreaming, NaiveStepping, TimedStreaming
+
     if args.mode == "naive":
         return NaiveStepping()
     if args.mode == "early":

@@ -4,15 +4,15 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .._errors import DeviceError, InputError
-from ..devices import xm430 as xm
-from ..devices.dynamixel import DynamixelBus
 from ._args import integer
 from ._table import table
 
-MODEL_NAMES = {xm.MODEL_NUMBER: "XM430-W350"}
+if TYPE_CHECKING:
+    from ..devices.dynamixel import DynamixelBus
+
 MODE_NAMES = {0: "current", 1: "velocity", 3: "position", 4: "extended", 5: "current-position"}
 
 
@@ -47,6 +47,8 @@ def parse_ids(text: str) -> range:
 
 
 def run_scan(args: argparse.Namespace) -> int:
+    from ..devices.dynamixel import DynamixelBus
+
     ids = parse_ids(args.ids)
     if not args.port:
         raise InputError("dxl-scan needs --port: a serial device (/dev/ttyUSB0) or 'emu'")
@@ -68,15 +70,16 @@ def run_scan(args: argparse.Namespace) -> int:
 
 
 def _row(bus: DynamixelBus, sid: int, model: int) -> list[object]:
-    name = MODEL_NAMES.get(model, "?")
+    from ..devices import xm430 as xm
+
     if model != xm.MODEL_NUMBER:
-        return [sid, model, name, "", "", "", "", ""]
+        return [sid, model, "?", "", "", "", "", ""]
     errors = bus.hardware_error(sid)
     tick = bus.read(sid, "Present Position", alert_ok=True)
     return [
         sid,
         model,
-        name,
+        "XM430-W350",
         MODE_NAMES.get(bus.read(sid, "Operating Mode", alert_ok=True), "?"),
         "on" if bus.read(sid, "Torque Enable", alert_ok=True) else "off",
         xm.describe_hardware_error(errors) if errors else "-",

@@ -11,7 +11,6 @@ from typing import Any
 
 from .._errors import InputError
 from ..connect import driver_kind, emulate, emulated_kinds, listed
-from ..model import load_model
 
 EPILOG = """\
 The first line printed is the pseudo-terminal's path (say /dev/pts/7); open it like a
@@ -55,6 +54,8 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 def run_emulate(args: argparse.Namespace) -> int:
     """Serve until interrupted; the path goes to stdout, the rest to stderr."""
+    from ..model import load_model
+
     arm = _arm(args)
     model = load_model(arm) if arm else None
     emulator = emulate(args.kind, model)

@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import argparse
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from ..kinematics import closed_form
-from ..model import ArmModel, load_model, shipped_models
 from ._table import table
+
+if TYPE_CHECKING:
+    from ..model import ArmModel
 
 
 def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
@@ -26,6 +27,9 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 
 def run_arms(args: argparse.Namespace) -> int:
+    from ..kinematics import closed_form
+    from ..model import load_model, shipped_models
+
     rows = []
     for name in shipped_models():
         m = load_model(name)
@@ -36,6 +40,9 @@ def run_arms(args: argparse.Namespace) -> int:
 
 
 def run_show(args: argparse.Namespace) -> int:
+    from ..kinematics import closed_form
+    from ..model import load_model
+
     m = load_model(args.arm)
     print(f"{m.name}: {m.description}")
     print(f"model file: {m.source}")

@@ -5,9 +5,10 @@ somebody follows it (``armkit view --follow``)."""
 from __future__ import annotations
 
 import argparse
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from ..model import ArmModel
+if TYPE_CHECKING:
+    from ..model import ArmModel
 
 
 def open_kept(model: ArmModel, args: argparse.Namespace, world: Any = None) -> Any:

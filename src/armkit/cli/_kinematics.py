@@ -5,17 +5,18 @@ from __future__ import annotations
 import argparse
 import json
 import math
-from typing import Any
-
-import numpy as np
+from typing import TYPE_CHECKING, Any
 
 from .._errors import InputError
 from .._files import check_output_path
 from .._terminal import count, fixed
-from ..kinematics import fk, ik, pitch_of
-from ..model import ArmModel, load_model
 from ._args import IMAGE_SUFFIXES, angle, coordinate
 from ._table import table
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from ..model import ArmModel
 
 
 def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
@@ -69,6 +70,8 @@ IK_METHODS = ("auto", "analytic", "lm", "ccd", "jacobian", "random")
 
 def joint_angles(m: ArmModel, degrees: list[float]) -> np.ndarray:
     """Degrees from the command line -> radians, checked for count and finiteness."""
+    import numpy as np
+
     if len(degrees) != m.dof:
         names = ", ".join(m.joint_names)
         raise InputError(
@@ -81,6 +84,9 @@ def joint_angles(m: ArmModel, degrees: list[float]) -> np.ndarray:
 
 
 def run_fk(args: argparse.Namespace) -> int:
+    from ..kinematics import fk, pitch_of
+    from ..model import load_model
+
     m = load_model(args.arm)
     q = joint_angles(m, args.angles)
     T = fk(m, q)
@@ -109,6 +115,11 @@ def run_fk(args: argparse.Namespace) -> int:
 
 
 def run_ik(args: argparse.Namespace) -> int:
+    import numpy as np
+
+    from ..kinematics import ik
+    from ..model import load_model
+
     m = load_model(args.arm)
     target = [float(args.x), float(args.y), float(args.z)]
     if not all(math.isfinite(v) for v in target):
@@ -139,6 +150,8 @@ def run_ik(args: argparse.Namespace) -> int:
 
 
 def run_plot(args: argparse.Namespace) -> int:
+    from ..model import load_model
+
     m = load_model(args.arm)
     q = joint_angles(m, args.angles)
     check_output_path(args.output, "-o/--output", IMAGE_SUFFIXES)

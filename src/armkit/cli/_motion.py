@@ -11,15 +11,18 @@ between invocations in a state file, so ``move`` then ``where`` agree:
 from __future__ import annotations
 
 import argparse
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .._terminal import fixed
-from ..arm import MAX_MOVE_S, Arm
+from ..model import MAX_MOVE_S
 from ._args import angle, coordinate, number
 from ._draw_shapes import MODES as MODES
 from ._draw_shapes import add_draw
 from ._open_arm import open_arm
 from ._watch import add_watch_options
+
+if TYPE_CHECKING:
+    from ..arm import MAX_MOVE_S, Arm
 
 SIM_NOTE = (
     "With --driver sim, the simulated arm's joint angles are kept between runs in "

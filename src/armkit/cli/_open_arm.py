@@ -9,15 +9,16 @@ import argparse
 import contextlib
 import sys
 from collections.abc import Iterator
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .._files import check_output_path, config_dir
-from ..arm import Arm
 from ..connect import check_sim_port
-from ..model import load_model
 from ._args import check_folder
 from ._kept import open_kept
 from ._watch import kept_objects, watch_world, watching
+
+if TYPE_CHECKING:
+    from ..arm import Arm
 
 
 @contextlib.contextmanager
@@ -25,6 +26,9 @@ def open_arm(args: argparse.Namespace) -> Iterator[Arm]:
     """The arm of --arm on --driver/--port, once every file it will write is known
     to be writable (the config directory, a state file given as --port, a --gif);
     watched as --view/--gif say (``armkit.cli._watch``)."""
+    from ..arm import Arm
+    from ..model import load_model
+
     model = load_model(args.arm)
     check_folder(config_dir(), "the config directory")
     if args.driver_name == "sim" and args.port not in (None, "emu"):

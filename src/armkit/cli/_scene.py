@@ -4,11 +4,14 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .._errors import ArmkitError
 from .._terminal import count
 from ..scene import shipped_scenes
+
+if TYPE_CHECKING:
+    from ..scene import shipped_scenes
 
 SCENE_HELP = "scenes are TOML files in millimetres and degrees (see docs/jobs/tasks.md); shipped: "
 

@@ -7,7 +7,6 @@ import argparse
 from typing import Any
 
 from .._files import check_output_path, write_atomic
-from ..model import load_model
 
 
 def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
@@ -41,6 +40,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 def run_urdf(args: argparse.Namespace) -> int:
     """Check the output path, then write the file."""
     from ..interchange import urdf_of
+    from ..model import load_model
 
     path = check_output_path(args.output, "-o/--output")
     model = load_model(args.arm)
@@ -52,6 +52,7 @@ def run_urdf(args: argparse.Namespace) -> int:
 def run_mjcf(args: argparse.Namespace) -> int:
     """Check the output path (if any), load the arm and scene, then write or print."""
     from ..interchange import mjcf_of
+    from ..model import load_model
     from ._scene import scene_of
 
     path = None if args.output is None else check_output_path(args.output, "-o/--output")

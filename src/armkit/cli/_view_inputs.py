@@ -9,8 +9,6 @@ import math
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from .._errors import InputError
 from .._files import check_output_path
 
@@ -20,6 +18,8 @@ FOLLOW_RATE = 45.0  # [Hz] with --follow: 30+ new states a second from the 100 H
 
 def poses_of(given: list[list[float]] | None, model: Any) -> list[Any]:
     """Each ``--pose`` [deg] as joint angles [rad], shape (dof,), within the joint limits."""
+    import numpy as np
+
     poses = []
     for angles in given or []:
         if len(angles) != model.dof or not all(math.isfinite(a) for a in angles):
@@ -36,6 +36,8 @@ def poses_of(given: list[list[float]] | None, model: Any) -> list[Any]:
 
 def target_of(args: argparse.Namespace) -> tuple[Any, float | None] | None:
     """``--target`` [mm] as (point [m], shape (3,), ``--pitch`` [deg] or None); None if not given."""
+    import numpy as np
+
     if args.target is None:
         if args.pitch is not None:
             raise InputError("--pitch needs --target X Y Z [mm]")

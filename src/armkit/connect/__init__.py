@@ -28,14 +28,7 @@ import stat
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from .._clock import Clock
 from .._errors import InputError
-from ..drivers import Driver, Forecaster
-from ..model import ArmModel
-from ..sim import SimArm as SimArm
-from ..sim import World as World
-from ..sim import state_file
-from ..sim import world_of as world_of
 from ._kind import Ask as Ask
 from ._kind import Calibration as Calibration
 from ._kind import DriverKind as DriverKind
@@ -50,12 +43,38 @@ from ._kinds import kinds_with as kinds_with
 from ._kinds import listed as listed
 
 if TYPE_CHECKING:
+    from .._clock import Clock
     from ..devices.dynamixel import DynamixelBus
+    from ..drivers import Driver, Forecaster
+    from ..model import ArmModel
+    from ..sim import SimArm as SimArm
+    from ..sim import World as World
+    from ..sim import world_of as world_of
     from ..sim.emulators import Emulator
     from ._kind import Emulated
 
 # The builders (``_simulate``) import every driver and simulated device: they load
-# when a simulation is opened, so ``import armkit`` stays light.
+# when a simulation is opened, so ``import armkit`` and ``armkit --help`` stay light;
+# so do the simulator's names re-exported here (loaded on first use, PEP 562).
+
+
+def _sim() -> Any:
+    from .. import sim
+
+    return sim
+
+
+_LAZY = {"SimArm": _sim, "World": _sim, "world_of": _sim}
+
+
+def __getattr__(name: str) -> Any:
+    """``SimArm``, ``World`` and ``world_of`` (``armkit.sim``'s), loaded when first asked for."""
+    package = _LAZY.get(name)
+    if package is None:
+        raise AttributeError(f"module 'armkit.connect' has no attribute {name!r}")
+    value = getattr(package(), name)
+    globals()[name] = value
+    return value
 
 
 def open_driver(
@@ -80,6 +99,7 @@ def open_driver(
         DeviceError: the device is missing or refuses, or the simulated arm is in use
             by another process (the message names it).
     """
+    from ..sim import World
     from ._simulate import simulate, simulate_generic
 
     if world is not None and not isinstance(world, World):
@@ -161,6 +181,8 @@ def kept_state_file(model: ArmModel, port: str | None, keep: bool) -> Path | Non
     """The state file a simulated ``model`` (``driver="sim"``) keeps its truth in: the
     ``port`` given as a path, else with ``keep`` and no port ``sim_state_file(model)``,
     else None (in memory; also for ``port="emu"``)."""
+    from ..sim import state_file
+
     if port not in (None, "emu"):
         return Path(port)
     return state_file(model) if keep and port is None else None
@@ -168,6 +190,8 @@ def kept_state_file(model: ArmModel, port: str | None, keep: bool) -> Path | Non
 
 def sim_state_file(model: ArmModel) -> Path:
     """Where the CLI keeps the simulated ``model``'s truth between processes."""
+    from ..sim import state_file
+
     return state_file(model)
 
 

@@ -15,10 +15,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal, Protocol
 
-from ..drivers import Driver, Forecaster
-from ..model import ArmModel, Section
-
 if TYPE_CHECKING:
+    from ..drivers import Driver, Forecaster
+    from ..model import ArmModel, Section
     from ..sim import SimArm, World
     from ..sim.assembly import Persistence
     from ._rigs import Rig

@@ -14,17 +14,12 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .._errors import InputError
-from ..drivers import Driver, Forecaster
-from ..model import (
-    DYNAMIXEL_SECTION,
-    MAESTRO_SECTION,
-    OWI535_SECTION,
-    SSC32_SECTION,
-    ArmModel,
-)
+from ..model import DYNAMIXEL_SECTION, MAESTRO_SECTION, OWI535_SECTION, SSC32_SECTION
 from ._kind import Ask, Calibration, DriverKind, Say, Trait
 
 if TYPE_CHECKING:
+    from ..drivers import Driver, Forecaster
+    from ..model import ArmModel
     from ..sim import SimArm, World
     from ..sim.assembly import Persistence
     from ._rigs import Rig

@@ -14,6 +14,7 @@ NUM = (int, float)
 MAX_LENGTH_MM = 10_000.0  # no link, offset or tool of an arm armkit drives is 10 m long
 MIN_LENGTH_MM = 0.01  # a length is 0 or at least this (1e-300 is a typo, not a link)
 MAX_ANGLE_DEG = 360.0
+MAX_MOVE_S = 30.0  # longest single move Arm accepts [s] (a Dynamixel profile allows 32.7 s)
 _IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]{0,63}")
 
 

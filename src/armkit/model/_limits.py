@@ -37,6 +37,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError, JointLimitError
 from .._inputs import brief, is_number, shown
+from ._check import MAX_MOVE_S as MAX_MOVE_S
 from ._types import ArmModel
 
 F64 = NDArray[np.float64]
@@ -47,7 +48,6 @@ class GripWidthError(JointLimitError, InputError):
 
 
 SLACK = 1e-9  # [rad] or [m]: values this far outside a limit still count as inside
-MAX_MOVE_S = 30.0  # longest single move Arm accepts [s] (a Dynamixel profile allows 32.7 s)
 
 
 def check_joints(model: ArmModel, q: ArrayLike) -> F64:

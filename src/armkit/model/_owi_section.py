@@ -7,11 +7,13 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .._errors import ModelError
 from ._check import NUM, Checker
-from ._types import ArmModel
+
+if TYPE_CHECKING:
+    from ._types import ArmModel
 
 OWI_JOINTS = ("base", "shoulder", "elbow", "wrist")
 _OWI = {

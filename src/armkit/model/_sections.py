@@ -13,12 +13,14 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Generic, TypeVar
+from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
 from .._errors import ModelError
 from ._check import NUM, Checker
 from ._owi_section import OwiSection, check_owi
-from ._types import ArmModel
+
+if TYPE_CHECKING:
+    from ._types import ArmModel
 
 T = TypeVar("T")
 BAUDRATES = (

@@ -6,7 +6,7 @@ import tomllib
 from pathlib import Path
 from typing import Any
 
-from .._toml_files import resolve, shipped
+from .._toml_files import resolve
 from . import _kinds
 from ._errors import SceneError
 from ._fields import Entry
@@ -14,11 +14,6 @@ from ._rotations import pose, rot_z
 from ._scene import Scene
 
 _TOP = ("name", "description", "table_z_mm", "base")
-
-
-def shipped_scenes() -> list[str]:
-    """Names of the scenes shipped with armkit, sorted."""
-    return shipped("armkit.scene", "scenes")
 
 
 def load_scene(name_or_path: str | Path) -> Scene:
