@@ -3,14 +3,15 @@
 from __future__ import annotations
 
 import argparse
-import signal
 import sys
-import threading
 from types import FrameType
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .._errors import InputError
 from ..connect import driver_kind, emulate, emulated_kinds, listed
+
+if TYPE_CHECKING:
+    import threading
 
 EPILOG = """\
 The first line printed is the pseudo-terminal's path (say /dev/pts/7); open it like a
@@ -54,6 +55,9 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 def run_emulate(args: argparse.Namespace) -> int:
     """Serve until interrupted; the path goes to stdout, the rest to stderr."""
+    import signal
+    import threading
+
     from ..model import load_model
 
     arm = _arm(args)

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import json
 import math
 from typing import TYPE_CHECKING, Any
 
@@ -84,6 +83,8 @@ def joint_angles(m: ArmModel, degrees: list[float]) -> np.ndarray:
 
 
 def run_fk(args: argparse.Namespace) -> int:
+    import json
+
     from ..kinematics import fk, pitch_of
     from ..model import load_model
 
@@ -115,6 +116,8 @@ def run_fk(args: argparse.Namespace) -> int:
 
 
 def run_ik(args: argparse.Namespace) -> int:
+    import json
+
     import numpy as np
 
     from ..kinematics import ik

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import difflib
 import re
 import sys
 from typing import NoReturn
@@ -23,6 +22,8 @@ class Parser(argparse.ArgumentParser):
 def _did_you_mean(message: str) -> str:
     """argparse's "invalid choice: 'mvoe' (choose from 'a', 'b', ...)" as "invalid choice:
     'mvoe'; did you mean 'move'?" where a choice is close, else as it was."""
+    import difflib
+
     found = re.match(r"(.*invalid choice: '([^']*)') \(choose from (.*)\)$", message)
     if found is None:
         return message

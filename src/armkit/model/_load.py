@@ -18,7 +18,6 @@ from ._check import Checker as _Checker
 from ._frame_rows import chain_frames, rpy_matrix
 from ._sections import check_driver_sections
 from ._types import ArmModel, DHRow, Gripper, Joint
-from ._urdf import is_urdf, load_urdf
 
 _TOP = {
     "name": str,
@@ -80,6 +79,8 @@ def load_model(name_or_path: str | Path) -> ArmModel:
         ModelError: the file is missing, is not TOML, or a field is wrong; the
             message names the file, the field and what is allowed.
     """
+    from ._urdf import is_urdf, load_urdf
+
     if is_urdf(name_or_path):  # a URDF file: FILE.urdf or FILE.urdf#TIP_LINK
         return load_urdf(name_or_path)
     path = _resolve(name_or_path)
