@@ -67,6 +67,8 @@ def _step(
     waiting: tuple[bool, float | None],
 ) -> None:
     wait, timeout = waiting
+    if step.at is not None:  # sent on time, not waited for
+        clock.sleep(max(0.0, begin + step.at - clock.now()))
     if step.grip is not None:
         if step.settle:
             settle()
@@ -79,7 +81,6 @@ def _step(
     elif step.motor is not None or step.light is not None:
         _timed(driver, step)
     elif step.q is not None and step.at is not None:
-        clock.sleep(max(0.0, begin + step.at - clock.now()))
         driver.move(step.q, duration=step.duration, speed=step.speed, wait=False)
     elif step.q is not None:
         driver.move(step.q, duration=step.duration, speed=step.speed, wait=wait and timeout is None)

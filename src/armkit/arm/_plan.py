@@ -36,8 +36,8 @@ class Step:
             it was solved with (its tool point: the jaws', a pen's tip, ...).
         speed: fraction of every joint's max velocity (None: 1).  duration: the move's
             time [s] (None: as fast as allowed).
-        at: send the move this long after the plan began [s] and go on without waiting
-            (a piece's strikes), or None: send it when the step before has ended.
+        at: start the step this long after the plan began [s], a move going on without
+            waiting (a piece's strikes), or None: when the step before has ended.
         settle: wait for the arm to stand still before and after a gripper command.
         motor: a timed motor run (joint, direction +1/-1, seconds [s]), or None.
         light: the light switched on (True) or off (False), or None.

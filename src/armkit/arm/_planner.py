@@ -99,8 +99,9 @@ def plan_grip(start: Start, width: float, label: str = "grip") -> Plan:
             f"{start.model.name}'s gripper is only open or closed: grip {lo:g} closes it, "
             f"grip {hi:g} opens it; got {width * 1000.0:g} mm"
         )
-    seconds = start.timer.forecast_grip(start.opening, width)
     held = start.held
+    stop = width if held is None else max(width, held.cube.size)  # the jaws stop on it
+    seconds = start.timer.forecast_grip(start.opening, stop)
     if held is not None and held.released_by(width):
         held = None
     step = Step(label, grip=width, holding=_holding(start), seconds=seconds)
@@ -179,18 +180,30 @@ def plan_steps(
     leaves (its joints, grip and battery are worked out here; its held cube and scene as
     given: None, as at ``start``). A step sent at its time (``at``) keeps its ``seconds``."""
     at, timed = start, []
-    for step in steps:
-        at, seconds = _forecast(at, step)
+    for k, step in enumerate(steps):
+        at, seconds = _forecast(at, step, _closing_on(steps, k, at))
         timed.append(replace(step, seconds=seconds))
     last = end or start
     done = at.then(held=last.held, scene=last.scene)
     return Plan(task, start, tuple(timed), done, after, planning_time)
 
 
-def _forecast(at: Start, step: Step) -> tuple[Start, float]:
-    """Where ``step`` leaves the arm from ``at``, and how long it takes [s]."""
+def _closing_on(steps: Sequence[Step], k: int, at: Start) -> float:
+    """The size [m] of the cube the gripper holds after step ``k`` (the one a closing
+    grip stops on: the next step's ``holding``), or 0."""
+    name = steps[k + 1].holding if k + 1 < len(steps) else None
+    cubes = () if at.scene is None else at.scene.cubes
+    held = [c.size for c in cubes if c.name == name]
+    if at.held is not None and at.held.cube.name == name:
+        held.append(at.held.cube.size)
+    return max(held, default=0.0)
+
+
+def _forecast(at: Start, step: Step, cube: float = 0.0) -> tuple[Start, float]:
+    """Where ``step`` leaves the arm from ``at``, and how long it takes [s] (a grip
+    closing on a cube of size ``cube`` [m] stops on it)."""
     if step.grip is not None:
-        seconds = at.timer.forecast_grip(at.opening, step.grip)
+        seconds = at.timer.forecast_grip(at.opening, max(step.grip, cube))
         return at.then(grip=step.grip, jaws=None), seconds
     if step.at is not None and step.q is not None:  # sent on time: its planner timed it
         return at.then(q=step.q), step.seconds

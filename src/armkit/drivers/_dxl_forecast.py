@@ -60,17 +60,20 @@ class DynamixelForecaster:
         speed: float | None = None,
         motor_s: float = 0.0,
     ) -> Forecast:
-        """A waiting ``move(q1)`` from ``q0`` [rad]: its profiles, each with its arrival."""
+        """A waiting ``move(q1)`` from ``q0`` [rad] (the goal the last move reached): its
+        profiles between the two goals' ticks, each with its arrival (none for servos
+        already on their goal's tick); the driver then reads the goal itself."""
         goal = check_joints(self.model, q1)
         frac = check_speed(speed)
-        start = np.asarray(q0, dtype=np.float64)
-        seconds = move_time(self.model, start, goal, speed=frac, duration=duration)
-        end = self.angles(self.ticks(goal))
-        if duration is None:
+        asked = np.asarray(q0, dtype=np.float64)
+        seconds = move_time(self.model, asked, goal, speed=frac, duration=duration)
+        start, end = self.angles(self.ticks(asked)), self.angles(self.ticks(goal))
+        if duration is None:  # the profile is timed for what the servos do: tick to tick
             seconds = move_time(self.model, start, end, speed=frac)
+        arrival = ARRIVAL_S if np.any(self.ticks(asked) != self.ticks(goal)) else 0.0
         parts = pieces(start, goal, seconds, MAX_PROFILE_MS / 1000.0)
-        took = sum(max(1, math.ceil(1000.0 * s - 1e-9)) / 1000.0 + ARRIVAL_S for _, s in parts)
-        return Forecast(took, end, motor_s)
+        took = sum(max(1, math.ceil(1000.0 * s - 1e-9)) / 1000.0 + arrival for _, s in parts)
+        return Forecast(took, goal.copy(), motor_s)
 
     def forecast_grip(self, before: float | None, width: float) -> float:
         """The jaws' travel from ``before`` [m] (None: fully open) at ``GRIP_SPEED``, then

@@ -52,6 +52,8 @@ from ._play import Played as Played
 from ._play import check_tempo as check_tempo
 from ._play import check_transpose as check_transpose
 from ._play import instruments as instruments
+from ._play import perform as perform
+from ._play import performance_plan as performance_plan
 from ._play import plan_play as plan_play
 from ._play import play as play
 from ._play import prepare as prepare
@@ -75,6 +77,7 @@ from ._score import ScoreError as ScoreError
 from ._score import note_name as note_name
 from ._score import parse_pitch as parse_pitch
 from ._score import tempo_range as tempo_range
+from ._servos import servo_kind as servo_kind
 from ._strike import StrikeParams as StrikeParams
 from ._strike import StrikePoses as StrikePoses
 from ._synth import frequency as frequency

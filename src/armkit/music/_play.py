@@ -311,14 +311,17 @@ def collision(perf: Performance, scene: Scene, q0: F64) -> UnreachableError | No
 def performance_plan(start: Start, perf: Performance, scene: Scene) -> Plan:
     """``perf`` as a plan from ``start`` (checked as ``plan_play`` checks it): every move
     sent at its time without waiting, the servos' own ramps doing the rest (hobby servos
-    and rebounds: each move lasting its predicted time; else at its speed)."""
+    and rebounds: each move lasting its predicted time; else at its speed), then
+    ``TAIL_S`` listening after the last move has ended."""
     hit = collision(perf, scene, start.q)
     if hit is not None:
         raise hit
     hobby = servo_kind(start) == "hobby"
-    ends = [m.t for m in perf.moves[1:]] + [perf.moves[-1].t + perf.moves[-1].profile.duration]
+    last = max(m.t + m.profile.duration for m in perf.moves)  # the last move's end
+    ends = [m.t for m in perf.moves[1:]] + [last]
     steps = [_step(perf, m, hobby, end - m.t) for m, end in zip(perf.moves, ends, strict=True)]
-    return plan_steps(start, f"play {perf.source or 'the piece'}", steps)
+    listen = Step("listen to the last note", at=last, seconds=TAIL_S)
+    return plan_steps(start, f"play {perf.source or 'the piece'}", [*steps, listen])
 
 
 def _step(perf: Performance, move: Move, hobby: bool, seconds: float) -> Step:
@@ -341,8 +344,6 @@ def perform(arm: Arm, scene: Scene, perf: Performance) -> Played:
     began: list[float] = []
     try:
         arm.run(plan, say=lambda k, _: began.append(clock.now()) if k == 1 else None)
-        last = max(m.t + m.profile.duration for m in perf.moves)
-        clock.sleep(max(0.0, began[0] + last + TAIL_S - clock.now()))
     finally:
         if detach is not None:
             detach()
