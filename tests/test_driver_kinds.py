@@ -140,20 +140,25 @@ def test_a_kind_added_by_one_entry_is_in_the_help_and_the_driver_choices(
     clone: DriverKind,
 ) -> None:
     code, text = _armkit("--help")
-    assert code == 0 and "sim (default), owi535, ssc32, maestro, dynamixel, clone32" in text
-    assert "dynamixel and clone32" in text  # --port: the serial kinds
+    kinds = "sim (default), owi535, ssc32, maestro, dynamixel, feetech, clone32"
+    assert code == 0 and kinds in text
+    assert "dynamixel, feetech and clone32" in text  # --port: the serial kinds
     code, text = _armkit("--arm", "lynx6", "--driver", "clone32", "--port", "emu", "where")
     assert code == 0 and "gripper at" in text
     code, text = _armkit("--arm", "lynx6", "--driver", "clone33", "where")
-    assert code == 2 and "drivers are sim, owi535, ssc32, maestro, dynamixel, clone32" in text
+    kinds = "drivers are sim, owi535, ssc32, maestro, dynamixel, feetech, clone32"
+    assert code == 2 and kinds in text
 
 
 def test_a_kind_added_by_one_entry_is_emulated(clone: DriverKind) -> None:
     code, text = _armkit("--help")
-    assert code == 0 and "serve a simulated SSC-32, Maestro, Dynamixel bus or SSC-32 clone" in text
+    assert (
+        code == 0
+        and "serve a simulated SSC-32, Maestro, Dynamixel bus, Feetech bus or SSC-32 clone" in text
+    )
     code, text = _armkit("emulate", "--help")
-    assert code == 0 and "{ssc32,maestro,dynamixel,clone32}" in text
-    assert "--driver ssc32, maestro, dynamixel or clone32" in text
+    assert code == 0 and "{ssc32,maestro,dynamixel,feetech,clone32}" in text
+    assert "--driver ssc32, maestro, dynamixel, feetech or clone32" in text
     emulator = emulate("clone32", load_model("lynx6"))  # what 'armkit emulate clone32' serves
     try:
         assert Path(emulator.port).exists()

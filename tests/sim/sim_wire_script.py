@@ -61,7 +61,8 @@ def job(name: str) -> dict[str, Any]:
 def libraries() -> dict[str, bool]:
     """Which client libraries this environment has."""
     return {
-        lib: importlib.util.find_spec(lib) is not None for lib in ("serial", "usb", "dynamixel_sdk")
+        lib: importlib.util.find_spec(lib) is not None
+        for lib in ("serial", "usb", "dynamixel_sdk", "scservo_sdk")
     }
 
 

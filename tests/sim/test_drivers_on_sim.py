@@ -8,7 +8,7 @@ from collections.abc import Callable
 import pytest
 
 from armkit.connect import native_kind, open_driver, world_of
-from armkit.drivers import dynamixel, servo, timed
+from armkit.drivers import dynamixel, feetech, servo, timed
 from armkit.model import load_model, shipped_models
 
 # each kind's opener of real hardware, as the registry's entry calls it
@@ -17,6 +17,7 @@ REAL_OPENERS: dict[str, Callable[..., object]] = {
     "ssc32": servo.open_ssc32,
     "maestro": servo.open_maestro,
     "dynamixel": dynamixel.open_dynamixel,
+    "feetech": feetech.open_feetech,
 }
 
 
@@ -68,8 +69,8 @@ def test_kinds() -> None:
         "owi535": "owi535",
         "planar2": "generic",
         "puma560": "generic",
-        "so100": "generic",
-        "so101": "generic",
+        "so100": "feetech",
+        "so101": "feetech",
     }
     with pytest.raises(ValueError, match="unknown driver 'nope'; drivers are sim, owi535"):
         open_driver(load_model("lynx6"), "nope")

@@ -119,6 +119,6 @@ def test_same_driver_class_and_same_bytes_with_and_without_the_libraries(
         "owi535": "TimedDriver",
         "planar2": "DynamixelDriver",
         "puma560": "DynamixelDriver",
-        "so100": "DynamixelDriver",
-        "so101": "DynamixelDriver",
+        "so100": "FeetechDriver",
+        "so101": "FeetechDriver",
     }

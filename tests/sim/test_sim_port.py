@@ -15,7 +15,7 @@ from armkit.connect import open_driver
 @pytest.mark.parametrize(
     ("arm", "port", "driver"),
     [("openmanipulator_x", "/dev/ttyUSB0", "dynamixel"), ("owi535", "COM3", "owi535"),
-     ("puma560", "/dev/null", "one of owi535, ssc32, maestro, dynamixel")],
+     ("puma560", "/dev/null", "one of owi535, ssc32, maestro, dynamixel, feetech")],
 )  # fmt: skip
 def test_a_device_port_with_the_simulator_is_refused(
     arm: str, port: str, driver: str, capsys: pytest.CaptureFixture[str]

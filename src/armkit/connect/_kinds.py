@@ -14,7 +14,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .._errors import InputError
-from ..model import DYNAMIXEL_SECTION, MAESTRO_SECTION, OWI535_SECTION, SSC32_SECTION
+from ..model import (
+    DYNAMIXEL_SECTION,
+    FEETECH_SECTION,
+    MAESTRO_SECTION,
+    OWI535_SECTION,
+    SSC32_SECTION,
+)
 from ._kind import Ask, Calibration, DriverKind, Say, Trait
 
 if TYPE_CHECKING:
@@ -153,6 +159,35 @@ def _emulate_dynamixel(model: ArmModel | None, world: World) -> Rig:
     return dxl_rig(model, world)
 
 
+# Feetech STS3215 smart servos on one bus (the SO-101, SO-100).
+
+
+def _open_feetech(model: ArmModel, port: str | None) -> Driver:
+    from ..drivers.feetech import open_feetech
+
+    return open_feetech(model, port)
+
+
+def _forecast_feetech(model: ArmModel, unit: str | None) -> Forecaster:
+    from ..drivers.feetech import FeetechForecaster
+
+    return FeetechForecaster(model, FEETECH_SECTION.of(model))
+
+
+def _simulate_feetech(
+    model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
+) -> Driver:
+    from ._simulate import simulate_feetech
+
+    return simulate_feetech(model, world, keep, opened)
+
+
+def _emulate_feetech(model: ArmModel | None, world: World) -> Rig:
+    from ._rigs import feetech_rig
+
+    return feetech_rig(model, world)
+
+
 KINDS: tuple[DriverKind, ...] = (
     DriverKind(
         name="owi535",
@@ -204,6 +239,19 @@ KINDS: tuple[DriverKind, ...] = (
         forecast=_forecast_dynamixel,
         simulate=_simulate_dynamixel,
         emulate=_emulate_dynamixel,
+        calibrate=None,
+    ),
+    DriverKind(
+        name="feetech",
+        device="a Feetech bus",
+        title="Feetech bus",
+        section=FEETECH_SECTION,
+        traits=frozenset({"smart"}),
+        port="serial",
+        open=_open_feetech,
+        forecast=_forecast_feetech,
+        simulate=_simulate_feetech,
+        emulate=_emulate_feetech,
         calibrate=None,
     ),
 )

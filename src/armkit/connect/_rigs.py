@@ -13,11 +13,13 @@ from dataclasses import dataclass
 from .._errors import ArmkitError
 from ..drivers import Forecaster
 from ..drivers.dynamixel import DynamixelForecaster, calibration_points
+from ..drivers.feetech import calibration_points as feetech_points
 from ..drivers.servo import load_setup
-from ..model import ArmModel, DynamixelSection, dynamixel_section
+from ..model import FEETECH_SECTION, ArmModel, DynamixelSection, dynamixel_section
 from ..sim import SimArm, Truth, World
 from ..sim.assembly import GRIPPER, ByteDevice, Mount, add_servo_arm
 from ..sim.dynamixel import SimDynamixelBus
+from ..sim.feetech import SimFeetechBus
 from ..sim.maestro import SimMaestro
 from ..sim.ssc32 import SimSSC32
 
@@ -118,3 +120,23 @@ def dxl_rig(model: ArmModel | None, world: World) -> Rig:
             f"emulate that instead"
         )
     return dynamixel_rig(model, world, None, generic_config(model))
+
+
+def feetech_rig(model: ArmModel | None, world: World, truth: Truth | None = None) -> Rig:
+    """STS3215s on a Feetech bus driving ``model`` (its ``[drivers.feetech]`` table), or
+    alone: the SO-101's six servos (IDs 1..6) at 1,000,000 baud (``model`` None).
+
+    Raises:
+        ModelError: the model has no ``[drivers.feetech]`` table.
+    """
+    if model is None:
+        return Rig(SimFeetechBus(clock=world.device_time), None, GENERIC_BAUD)
+    cfg = FEETECH_SECTION.of(model)
+    points = feetech_points(model, cfg)
+    device = SimFeetechBus(
+        [sid for sid, *_ in points], clock=world.device_time, baudrate=cfg.baudrate
+    )
+    mounts = [Mount(sid, joint, ticks, values) for sid, joint, ticks, values in points]
+    arm = add_servo_arm(world, model, device, mounts, truth=truth)
+    arm.device = device
+    return Rig(device, arm, cfg.baudrate)

@@ -24,6 +24,7 @@ from ..devices.dynamixel import DynamixelBus
 from ..devices.owi535 import OwiDevice, attach, open_device
 from ..drivers import Driver
 from ..drivers.dynamixel import DynamixelDriver
+from ..drivers.feetech import FeetechDriver
 from ..drivers.servo import open_maestro, open_ssc32
 from ..drivers.timed import TimedDriver, state_path
 from ..model import ArmModel, DynamixelSection, dynamixel_section
@@ -32,7 +33,7 @@ from ..sim.assembly import Persistence, Wire, add_owi_arm, serial_port
 from ..sim.owi535 import SimOwiUsb
 from ..sim.owi_sim import OwiSim
 from ._kind import Emulated, Simulator
-from ._rigs import dxl_rig, dynamixel_rig, generic_config, servo_rig
+from ._rigs import dxl_rig, dynamixel_rig, feetech_rig, generic_config, servo_rig
 
 
 def simulate(model: ArmModel, build: Simulator, world: World | None, state: Path | None) -> Driver:
@@ -173,3 +174,19 @@ def simulate_dynamixel(
 ) -> Driver:
     """The Dynamixel driver on simulated XM430s set up by ``[drivers.dynamixel]``."""
     return _dynamixel(model, world, keep, opened, dynamixel_section(model))
+
+
+def simulate_feetech(
+    model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
+) -> Driver:
+    """The Feetech driver on simulated STS3215s set up by ``[drivers.feetech]``, through
+    Feetech's ``scservo_sdk`` on armkit's SDK-style port handler."""
+    from ..devices.feetech import FeetechBus
+
+    rig = feetech_rig(model, world, keep.truth if keep else None)
+    assert rig.arm is not None
+    opened.append(rig.arm)
+    wire = Wire(rig.device, world, baudrate=rig.baudrate, timeout=0)
+    wire.on_close(_closing(world, rig.arm, keep))
+    bus = FeetechBus.on_port(PortHandler(serial_port(wire), world.clock), clock=world.clock)
+    return FeetechDriver(model, bus, clock=world.clock)

@@ -11,6 +11,8 @@ control table as modules (``dxl_packet``, ``xm430``, and its manual's NOTEs as d
 """
 
 from . import _dxl_packet as dxl_packet
+from . import _scs_packet as scs_packet
+from . import _sts3215 as sts3215
 from . import _xm430 as xm430
 from . import _xm430_notes as xm430_notes
 from ._dxl_protocol import PortHandler as PortHandler
@@ -26,6 +28,8 @@ __all__ = [
     "dxl_packet",
     "owi_decode",
     "owi_encode",
+    "scs_packet",
+    "sts3215",
     "xm430",
     "xm430_notes",
 ]

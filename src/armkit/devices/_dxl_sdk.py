@@ -103,8 +103,9 @@ class GuardedPort:
     """An SDK port handler whose OS or pyserial failures (a vanished adapter: termios.error,
     SerialException, OSError) come out as a DeviceError naming the port."""
 
-    def __init__(self, port: Any) -> None:
+    def __init__(self, port: Any, device: str = "Dynamixel bus") -> None:
         object.__setattr__(self, "_inner", port)
+        object.__setattr__(self, "_device", device)
 
     def __getattr__(self, name: str) -> Any:
         value = getattr(self._inner, name)
@@ -122,5 +123,5 @@ class GuardedPort:
             raise
         except Exception as exc:
             self._inner.is_using = False  # the SDK would call the port busy from now on
-            where = getattr(self._inner, "port_name", "") or "the Dynamixel port"
-            raise gone("Dynamixel bus", where, name, exc) from exc
+            where = getattr(self._inner, "port_name", "") or f"the {self._device}'s port"
+            raise gone(self._device, where, name, exc) from exc

@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:  # what the names below are, for type checkers (loaded on first use)
     from ._check import MAX_MOVE_S as MAX_MOVE_S
+    from ._feetech_section import FeetechSection as FeetechSection
     from ._limits import check_duration as check_duration
     from ._limits import check_grip as check_grip
     from ._limits import check_joints as check_joints
@@ -23,6 +24,7 @@ if TYPE_CHECKING:  # what the names below are, for type checkers (loaded on firs
     from ._owi_section import OwiSection as OwiSection
     from ._owi_section import owi_section as owi_section
     from ._sections import DYNAMIXEL_SECTION as DYNAMIXEL_SECTION
+    from ._sections import FEETECH_SECTION as FEETECH_SECTION
     from ._sections import MAESTRO_SECTION as MAESTRO_SECTION
     from ._sections import OWI535_SECTION as OWI535_SECTION
     from ._sections import SECTIONS as SECTIONS
@@ -61,6 +63,12 @@ def _owi_section_module() -> Any:
     return module
 
 
+def _feetech_section_module() -> Any:
+    from . import _feetech_section as module
+
+    return module
+
+
 def _sections_module() -> Any:
     from . import _sections as module
 
@@ -89,7 +97,9 @@ _LAZY = {
     "shipped_models": _load_module,
     "OwiSection": _owi_section_module,
     "owi_section": _owi_section_module,
+    "FeetechSection": _feetech_section_module,
     "DYNAMIXEL_SECTION": _sections_module,
+    "FEETECH_SECTION": _sections_module,
     "MAESTRO_SECTION": _sections_module,
     "OWI535_SECTION": _sections_module,
     "SECTIONS": _sections_module,

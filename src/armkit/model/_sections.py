@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
 from .._errors import ModelError
 from ._check import NUM, Checker
+from ._feetech_section import FeetechSection, read_feetech
 from ._owi_section import OwiSection, check_owi
 
 if TYPE_CHECKING:
@@ -183,6 +184,7 @@ OWI535_SECTION: Section[OwiSection] = Section("owi535", check_owi)
 SSC32_SECTION: Section[None] = Section("ssc32", _ssc32)
 MAESTRO_SECTION: Section[None] = Section("maestro", _maestro)
 DYNAMIXEL_SECTION: Section[DynamixelSection] = Section("dynamixel", _dynamixel)
+FEETECH_SECTION: Section[FeetechSection] = Section("feetech", read_feetech)
 SECTIONS: tuple[Section[Any], ...] = (
-    OWI535_SECTION, SSC32_SECTION, MAESTRO_SECTION, DYNAMIXEL_SECTION,
+    OWI535_SECTION, SSC32_SECTION, MAESTRO_SECTION, DYNAMIXEL_SECTION, FEETECH_SECTION,
 )  # fmt: skip

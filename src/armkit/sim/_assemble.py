@@ -21,6 +21,7 @@ from ._servo_body import Mount, Outputs, ServoBody, ServoParams
 from ._state import load_truth, save_truth
 from ._world import World
 from .dynamixel import SimDynamixelBus
+from .feetech import SimFeetechBus
 from .owi535 import OwiBody
 from .owi_physics import OwiPhysics, random_unit
 
@@ -34,7 +35,8 @@ def home_truth(model: ArmModel) -> Truth:
 
 def params_for(model: ArmModel) -> ServoParams:
     """Servo behaviour: smart servos (Dynamixel) lag less than hobby servos."""
-    return ServoParams(lag=0.010) if "dynamixel" in model.drivers else ServoParams(lag=0.025)
+    smart = "dynamixel" in model.drivers or "feetech" in model.drivers
+    return ServoParams(lag=0.010) if smart else ServoParams(lag=0.025)
 
 
 def add_servo_arm(
@@ -54,7 +56,7 @@ def add_servo_arm(
     start = truth or home_truth(model)
     body = ServoBody(model, params or params_for(model), start, mounts)
     body.outputs = outputs
-    if isinstance(outputs, SimDynamixelBus):
+    if isinstance(outputs, SimDynamixelBus | SimFeetechBus):
         for mount in mounts:
             _link_encoder(outputs, body, mount)
     elif isinstance(outputs, PulseOutputs) and truth is not None:
@@ -64,7 +66,7 @@ def add_servo_arm(
     return world.add_arm(SimArm(model, body, world.unique_name(name or model.name)))
 
 
-def _link_encoder(bus: SimDynamixelBus, body: ServoBody, mount: Mount) -> None:
+def _link_encoder(bus: SimDynamixelBus | SimFeetechBus, body: ServoBody, mount: Mount) -> None:
     servo = bus.servos[mount.channel]
 
     def feedback() -> tuple[float, float]:
