@@ -14,7 +14,7 @@ from armkit.cli import _servo
 def run(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(prog="armkit")
     parser.add_argument("--arm", default="lynx6")
-    parser.add_argument("--driver", default="sim")
+    parser.add_argument("--driver", dest="driver_name", default="sim")  # as cli/_app's
     parser.add_argument("--port", default=None)
     _servo.add_commands(parser.add_subparsers(dest="command"))
     args = parser.parse_args(argv)
