@@ -8,7 +8,10 @@
    while it draws; an observer notes, at every step, how far the step ran behind
    the wall clock [ms]: median, 99th percentile and worst (targets: median <= 1 ms,
    p99 <= 5 ms). On a shared 2-core machine the tail depends on the neighbours.
-3. Replies: ``benchmarks/sim_replies.py``, ``armkit emulate`` answering the official
+3. While a job streams: ``benchmarks/sim_jobs.py``, simulated seconds per CPU second
+   of the OpenManipulator-X drawing examples/drawings/curve.svg (target >= 50x) and of
+   the 001 board task (target >= 200x): whole job, median, slowest 10 % and worst 1 s.
+4. Replies: ``benchmarks/sim_replies.py``, ``armkit emulate`` answering the official
    dynamixel-sdk beside a CPU load of 2x the cores (median and 99.9th percentile).
 
 Run: .venv/bin/python benchmarks/sim.py
@@ -22,6 +25,7 @@ import tempfile
 import time
 
 import numpy as np
+import sim_jobs
 import sim_replies
 from numpy.typing import NDArray
 
@@ -125,6 +129,9 @@ def main() -> None:
         p50, p99, worst = np.percentile(lags, [50, 99, 100])
         print(f"{label:<18} {p50:7.3f} {p99:7.3f} {worst:7.3f} {len(lags):7d}")
     print("(targets: median <= 1 ms, p99 <= 5 ms)")
+    print()
+    sim_jobs.main()  # the real-time factor while a job streams
+    print()
     sim_replies.main()  # the emulator's reply latency to the dynamixel-sdk under load
 
 

@@ -192,18 +192,29 @@ class SimDynamixelBus(GroupInstructions):
     def present(self) -> list[Servo]:
         """The servos that hear the host now (not vanished, at the host's baud rate, speaking
         Protocol 2.0: Protocol Type (13) 1 is not emulated), by ID."""
-        servos = [
-            s
-            for sid, s in self.servos.items()
-            if sid not in self._vanished and s.value("Protocol Type") == 2
-        ]
-        if self._rate is not None:
-            servos = [s for s in servos if s.baudrate == self._rate]
+        servos = [s for sid, s in self.servos.items() if self._hears(sid, s)]
         return sorted(servos, key=lambda s: s.value("ID"))
 
+    def _hears(self, sid: int, servo: Servo) -> bool:
+        """Whether the servo kept under ``sid`` is present (see ``present``)."""
+        return (
+            sid not in self._vanished
+            and servo.value("Protocol Type") == 2
+            and (self._rate is None or servo.baudrate == self._rate)
+        )
+
     def by_id(self, servo_id: int) -> Servo | None:
-        """The present servo whose ID register is ``servo_id``."""
-        return next((s for s in self.present() if s.value("ID") == servo_id), None)
+        """The present servo whose ID register is ``servo_id`` (the first of ``present``'s
+        order: of several with that ID, the first kept; found without sorting them all,
+        as a sync instruction asks for each of its IDs)."""
+        return next(
+            (
+                s
+                for sid, s in self.servos.items()
+                if s.value("ID") == servo_id and self._hears(sid, s)
+            ),
+            None,
+        )
 
     @staticmethod
     def _answers(servo: Servo, instruction: int) -> bool:
