@@ -12,6 +12,7 @@ from ._errors import InputError as InputError
 from ._errors import JointLimitError as JointLimitError
 from ._errors import ModelError as ModelError
 from ._errors import NoSolutionError as NoSolutionError
+from ._errors import NoSuchName as NoSuchName
 from ._errors import Reason as Reason
 from ._errors import ScriptError as ScriptError
 from ._errors import UnreachableError as UnreachableError
@@ -67,11 +68,6 @@ _LAZY = {
     "ArmModel": _model,
     "load_model": _model,
 }
-
-
-class NoSuchName(ArmkitError, AttributeError):
-    """``armkit.NAME`` for a name armkit does not have (an AttributeError too, so
-    ``hasattr`` and ``from armkit import NAME`` behave as Python's)."""
 
 
 def __getattr__(name: str) -> Any:

@@ -86,6 +86,12 @@ class ScriptError(ArmkitError):
     """A command-language script is wrong."""
 
 
+class NoSuchName(ArmkitError, AttributeError):
+    """``armkit.NAME`` (or ``armkit.model.NAME``, ...) for a name the package does not
+    have (an AttributeError too, so ``hasattr`` and ``from ... import NAME`` behave as
+    Python's)."""
+
+
 class InputError(ArmkitError, ValueError):
     """A value someone gave (an argument, an option, a parameter) is not allowed:
     not a number, out of its range, or the wrong count. The message names the

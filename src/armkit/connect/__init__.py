@@ -28,7 +28,7 @@ import stat
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from .._errors import InputError
+from .._errors import InputError, NoSuchName
 from ._kind import Ask as Ask
 from ._kind import Calibration as Calibration
 from ._kind import DriverKind as DriverKind
@@ -71,7 +71,7 @@ def __getattr__(name: str) -> Any:
     """``SimArm``, ``World`` and ``world_of`` (``armkit.sim``'s), loaded when first asked for."""
     package = _LAZY.get(name)
     if package is None:
-        raise AttributeError(f"module 'armkit.connect' has no attribute {name!r}")
+        raise NoSuchName(f"module 'armkit.connect' has no attribute {name!r}")
     value = getattr(package(), name)
     globals()[name] = value
     return value

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from .._errors import NoSuchName
+
 if TYPE_CHECKING:  # what the names below are, for type checkers (loaded on first use)
     from ._check import MAX_MOVE_S as MAX_MOVE_S
     from ._feetech_section import FeetechSection as FeetechSection
@@ -119,7 +121,7 @@ def __getattr__(name: str) -> Any:
     """A public name, loaded from its module the first time it is asked for."""
     module = _LAZY.get(name)
     if module is None:
-        raise AttributeError(f"module 'armkit.model' has no attribute {name!r}")
+        raise NoSuchName(f"module 'armkit.model' has no attribute {name!r}")
     value = getattr(module(), name)
     globals()[name] = value
     return value
