@@ -222,11 +222,23 @@ def compile_chain(model: ArmModel) -> Chain:
 
 def _on_axis(steps: tuple[Step, ...], tool: Fixed, lower: F64, upper: F64, home: F64) -> int:
     """See ``Chain.on_axis``."""
-    rng = np.random.default_rng(0)
-    q = np.vstack([home, np.zeros(len(steps)), rng.uniform(lower, upper, (4, len(steps)))])
+    q = np.vstack([home, np.zeros(len(steps)), spread(lower, upper, 4)])
     p = dense_frames(steps, tool, q)[:, :, :3, 3]
     on = np.all(np.hypot(p[..., 0], p[..., 1]) < 1e-9, axis=0)
     return int(np.argmin(on)) if not on.all() else len(on)
+
+
+def spread(lower: F64, upper: F64, n: int) -> F64:
+    """``n`` joint vectors spread evenly over the box ``lower``..``upper`` (radians), with
+    no random generator (loading numpy.random costs 10-25 ms of every command's start-up):
+    Roberts' R-sequence, the d-dimensional golden ratio, starting at the box's centre."""
+    d = len(lower)
+    g = 2.0
+    for _ in range(60):  # g = the root of g**(d+1) = g + 1 (the golden ratio for d = 1)
+        g = (1.0 + g) ** (1.0 / (d + 1))
+    alpha = (1.0 / g) ** np.arange(1, d + 1)
+    frac: F64 = np.modf(0.5 + np.arange(1, n + 1)[:, None] * alpha[None, :])[0]
+    return lower + (upper - lower) * frac
 
 
 def _solvers(
