@@ -33,7 +33,7 @@ FLOORS: tuple[tuple[str, ...], ...] = (
     ("armkit.motion", "armkit.connect"),
     ("armkit._arm_inputs", "armkit.arm", "armkit"),  # ``armkit``: the package's face
     ("armkit.music", "armkit.tasks", "armkit.drawing"),  # the jobs
-    ("armkit.script", "armkit.viz"),
+    ("armkit.script", "armkit.viz", "armkit.jobs"),  # jobs: the specs script and cli read
     ("armkit.cli",),
 )  # fmt: skip
 

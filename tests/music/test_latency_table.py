@@ -97,7 +97,7 @@ def test_cli_refuses_a_tune_too_fast_listing_its_notes(
     monkeypatch.setenv("ARMKIT_CONFIG_DIR", str(tmp_path))
     wav = tmp_path / "out.wav"
     tune = str(TUNES / "twinkle.rtttl")
-    assert main(["--scene", "xylophone", "play", tune, "--tempo", "3", "--wav", str(wav)]) == 2
+    assert main(["--scene", "xylophone", "play", tune, "--tempo", "300", "--wav", str(wav)]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "notes of" in err and "needs" in err and "--tempo" in err
     assert not wav.exists()

@@ -56,7 +56,7 @@ def test_the_suggested_tempo_plays_and_is_the_fastest_that_does(
     with Arm(arm_name, "sim", world=World(), scene=SCENE) as arm:
         err = _refused(arm, path, tempo)
         suggested = err.tempo
-        assert suggested is not None and f"(--tempo {suggested:g} plays it)" in str(err)
+        assert suggested is not None and f"(--tempo {suggested * 100:g} plays it)" in str(err)
         assert suggested == round(suggested, 2)  # to 0.01
         played = play(arm, SCENE, path, tempo=suggested, dry_run=True)  # not refused
         assert played.performance.feasible and played.performance.tempo == suggested

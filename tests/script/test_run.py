@@ -151,7 +151,7 @@ def test_adding_a_job_is_one_entry(
     monkeypatch.setitem(JOBS, "wave", spec)
     (tmp_path / "la.txt").write_text("la")
     _run(a, "wave 3 up 2cm humming la.txt\n", base_dir=tmp_path)
-    assert got == {"times": 3, "height": pytest.approx(0.02), "song": tmp_path / "la.txt"}
+    assert got == {"times": 3, "height": pytest.approx(20.0), "song": tmp_path / "la.txt"}
 
 
 def test_owi_timed_rotation_and_light() -> None:

@@ -116,4 +116,4 @@ def test_reach_comes_near_the_hand_and_shakes(arm_name: str) -> None:
 
 def test_the_cli_reach_refuses_bad_values_before_moving(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["--scene", "reach_003", "reach", "--near", "10"]) == 2
-    assert "near 40..300 mm" in capsys.readouterr().err
+    assert "--near: must be 40..300 mm" in capsys.readouterr().err

@@ -68,10 +68,10 @@ def test_a_task_runs_on_the_simulated_arm(
         (["--scene", "board_001", "place", "red"], "needs TO"),
         (
             ["--scene", "board_001", "pick", "red", "--clearance", "10"],
-            "clearance must be 30..500 mm",
+            "--clearance: must be 30..500 mm",
         ),
         (["--scene", "board_001", "stack", "red"], "two or more different cubes"),
-        (["--scene", "board_001", "pick", "red", "--pitch", "nan"], "pitch must be -90..90 deg"),
+        (["--scene", "board_001", "pick", "red", "--pitch", "nan"], "--pitch: must be -90..90 deg"),
     ],
 )
 def test_refusals_are_one_line_and_move_nothing(

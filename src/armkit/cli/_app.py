@@ -12,6 +12,7 @@ from typing import Any, TextIO
 from .. import __version__
 from .._errors import ArmkitError, ArmkitWarning, InputError
 from ..connect import driver_kinds, listed
+from ..jobs import CLI_JOBS, JOBS
 from . import (
     _calibrate,
     _compare,
@@ -19,6 +20,7 @@ from . import (
     _dynamixel,
     _emulate,
     _info,
+    _jobs,
     _kinematics,
     _motion,
     _owi,
@@ -51,6 +53,7 @@ COMMAND_MODULES = (
     _tasks,
     _urdf,
     _play,
+    _jobs,
 )
 
 EPILOG = """\
@@ -70,11 +73,12 @@ examples:
 def parser_of_process() -> argparse.ArgumentParser:
     """The parser ``main`` uses, built once per process (building it imports every command
     module and adds some 50 sub-parsers: about 40 ms, more than most commands take) and
-    again only if the registry of driver kinds it lists was replaced since. Parsing leaves
-    a parser as it was, so one parser serves every call of ``main``."""
-    kinds = driver_kinds()
-    if _BUILT.get("kinds") is not kinds:
-        _BUILT.update(kinds=kinds, parser=build_parser())
+    again only if the registry of driver kinds it lists was replaced since, or the jobs
+    (``armkit.jobs.JOBS``) changed. Parsing leaves a parser as it was, so one
+    parser serves every call of ``main``."""
+    kinds, jobs = driver_kinds(), (*JOBS.items(), *CLI_JOBS.items())
+    if _BUILT.get("kinds") is not kinds or _BUILT.get("jobs") != jobs:
+        _BUILT.update(kinds=kinds, jobs=jobs, parser=build_parser())
     parser: argparse.ArgumentParser = _BUILT["parser"]
     return parser
 

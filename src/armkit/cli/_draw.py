@@ -9,31 +9,20 @@ from typing import TYPE_CHECKING, Any
 
 from .._errors import InputError
 from .._progress import Progress
-from ._args import number
-from ._watch import add_watch_options, watched_arm
+from ..jobs import JOBS
+from ._jobs import add_job, job_arguments
+from ._watch import watched_arm
 
 if TYPE_CHECKING:
     import numpy as np
     from numpy.typing import ArrayLike, NDArray
 
-EPILOG = (
-    "Needs --scene FILE|NAME before 'draw' (a scene with a sheet and a pen, e.g. 'drawing'). "
-    "The whole job is planned first (the file read at its real size, or scaled to the sheet "
-    "with --fit, placed on the sheet, cut to the arm's "
-    "reach with a note saying what was cut, every move checked); nothing moves on a bad "
-    "file, name or output path. On a simulated arm, what the pen drew is measured."
-)
-
 
 def add_file_commands(shapes: argparse._SubParsersAction[Any]) -> None:
-    """Add ``draw svg`` and ``draw gcode`` to the draw command's sub-commands."""
-    for kind, text in (("svg", "an SVG file"), ("gcode", "a G-code file (.gcode .nc .ngc)")):
-        p = shapes.add_parser(
-            kind, help=f"draw {text} on the scene's sheet with its pen", epilog=EPILOG
-        )
-        p.add_argument("file", metavar="FILE", help=text)
-        _options(p)
-        p.set_defaults(func=_run, kind=kind)
+    """Add ``draw svg`` and ``draw gcode`` to the draw command's sub-commands (from the
+    job spec, ``armkit.jobs.JOBS["draw"]``: one sub-command per kind of file)."""
+    for form in JOBS["draw"].cli_forms:
+        add_job(shapes, "draw", _run, form)
 
 
 def add_plane_option(p: argparse.ArgumentParser) -> None:
@@ -73,41 +62,13 @@ def in_plane(
     return out
 
 
-def _options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--sheet", metavar="NAME", help="the scene's sheet (default: its only one)")
-    p.add_argument("--pen", metavar="NAME", help="the scene's pen (default: its only one)")
-    p.add_argument(
-        "--held",
-        action="store_true",
-        help="the pen is in the gripper already (on the simulator: taken to be, the stand's pen not used)",
-    )
-    p.add_argument(
-        "--fit",
-        action="store_true",
-        help="scale the drawing to fill the sheet inside the margins (default: the file's "
-        "real size from its units, viewBox and width/height, centred on the sheet)",
-    )
-    p.add_argument("--preview", metavar="PNG", help="draw the plan to this picture, then move")
-    p.add_argument("--result", metavar="PNG", help="simulated arms: picture what was drawn")
-    p.add_argument("--dry-run", action="store_true", help="plan (and --preview) only; no motion")
-    mm = number("mm", 0.001, 5.0)
-    p.add_argument("--tolerance", type=mm, default=0.1, metavar="MM", help="curves flattened within this [mm], 0.001..5 (default 0.1)")  # fmt: skip
-    p.add_argument("--margin", type=number("mm", 0.0, 100.0), default=10.0, metavar="MM", help="blank border on the sheet [mm] (default 10)")  # fmt: skip
-    p.add_argument("--pen-up", type=number("mm", 1.0, 100.0), default=10.0, metavar="MM", help="pen height above the paper between strokes [mm] (default 10)")  # fmt: skip
-    p.add_argument("--pitch", type=number("deg", -90.0, 0.0), default=-60.0, metavar="DEG", help="pen angle above the horizontal while drawing [deg] (default -60)")  # fmt: skip
-    p.add_argument("--speed", type=number("mm/s", 1.0, 500.0), default=30.0, metavar="MM_S", help="pen speed along lines [mm/s] (default 30)")  # fmt: skip
-    add_watch_options(p)
-
-
 def _run(args: argparse.Namespace) -> int:
     from ..drawing import DrawingError, DrawOptions, check_picture_path, draw
     from ._scene import scene_of
 
     path = Path(args.file)
-    suffix = path.suffix.lower()
-    wanted = (".svg",) if args.kind == "svg" else (".gcode", ".nc", ".ngc", ".gc", ".g", ".tap")
-    if suffix not in wanted:
-        raise DrawingError(f"'draw {args.kind}' takes {' '.join(wanted)} files", file=str(path))
+    if path.suffix.lower() not in args.suffixes:
+        raise DrawingError(f"'draw {args.shape}' takes {' '.join(args.suffixes)} files", file=str(path))  # fmt: skip
     if not path.is_file():
         raise DrawingError("no such file", file=str(path))
     for option, out in (("--preview", args.preview), ("--result", args.result)):
@@ -121,8 +82,7 @@ def _run(args: argparse.Namespace) -> int:
     report = _Report(args.dry_run)
     with watched_arm(args, scene) as arm, report:
         job = draw(
-            arm, scene, path, args.sheet, args.pen, options=opts, fit=args.fit,
-            preview=args.preview, result=args.result, dry_run=args.dry_run,
+            arm, scene, **job_arguments(args), options=opts, dry_run=args.dry_run,
             progress=report,
         )  # fmt: skip
     for line in job.lines()[report.printed :]:

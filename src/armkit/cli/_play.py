@@ -14,36 +14,13 @@ from typing import Any
 
 from .._errors import ArmkitError
 from .._terminal import count
-from ._args import number
-from ._watch import add_watch_options, watched_arm
-
-EPILOG = (
-    "Needs --scene FILE|NAME before the command (the shipped 'xylophone' has 13 bars, "
-    "C5..C6, and a snare). Scores: MIDI (.mid, .midi), RTTTL (.rtttl) or a note list "
-    "(.txt: 'tempo 120' then notes such as 'C4 q  E4 e  R q'). Times in seconds, "
-    "onset errors in milliseconds. A piece the arm cannot play in time is refused "
-    "with every late note listed and a --tempo that fits; nothing moves. Latency tables "
-    "(--calibrate, --latency) hold each bar's onset delay in milliseconds."
-)
+from ._jobs import add_job, job_arguments
+from ._watch import watched_arm
 
 
 def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
-    """Add ``play``."""
-    text = "play a MIDI, RTTTL or note-list tune on the scene's xylophone and drums"
-    p = sub.add_parser("play", help=text, description=text + ".", epilog=EPILOG)
-    p.add_argument("file", metavar="FILE", nargs="?", help="the score (.mid, .midi, .rtttl, .txt); optional with --calibrate")  # fmt: skip
-    p.add_argument("--on", metavar="NAME", help="play on this instrument only (its scene name)")
-    p.add_argument("--tempo", type=float, metavar="FACTOR", help="speed factor of the piece (0.8 = 80%% of the written tempo; default 1; out of range: refused, naming the range)")  # fmt: skip
-    p.add_argument("--transpose", type=int, metavar="SEMITONES", help="move every pitched note by this many semitones, -48..48 (12 = an octave up)")  # fmt: skip
-    p.add_argument("--hover", type=number("mm", 2.0, 200.0), metavar="MM", help="the mallet head's height above a bar before the loudest stroke [mm], 2..200 (default 30; softer notes start lower, down to 10): lower plays faster and softer")  # fmt: skip
-    p.add_argument("--chords", choices=("top", "arpeggio", "refuse"), default="top", help="notes written together: top keeps the highest and says what was dropped (default), arpeggio plays them one after another, refuse refuses the piece")  # fmt: skip
-    p.add_argument("--wav", metavar="OUT", help="write the contacts the simulated mallet made as sound (.wav, 16-bit mono 44.1 kHz)")  # fmt: skip
-    p.add_argument("--plot", metavar="OUT", help="plot planned against played onsets [s] and their errors [ms] (.png, .svg, .pdf)")  # fmt: skip
-    p.add_argument("--calibrate", metavar="OUT", help="first strike every bar once in the simulator, measure each bar's onset delay [ms] and write the table (.toml); then play FILE, if given, with it")  # fmt: skip
-    p.add_argument("--latency", metavar="TABLE", help="plan with this per-bar latency table (.toml, delays in ms, from --calibrate)")  # fmt: skip
-    p.add_argument("--dry-run", action="store_true", help="plan and check only; print the plan, move nothing, write nothing")  # fmt: skip
-    add_watch_options(p)
-    p.set_defaults(func=_run)
+    """Add ``play`` (from its job spec, ``armkit.script._jobs.JOBS["play"]``)."""
+    add_job(sub, "play", _run)
 
 
 def _run(args: argparse.Namespace) -> int:
@@ -74,11 +51,7 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def _play(arm: Any, scene: Any, args: argparse.Namespace, table: Any, music: Any, dry_run: bool) -> Any:  # fmt: skip
-    file, on, tempo, shift = Path(args.file), args.on, args.tempo, args.transpose
-    return music.play(
-        arm, scene, file, on, tempo, shift, dry_run=dry_run, latency=table, hover=args.hover,
-        chords=args.chords,
-    )  # fmt: skip
+    return music.play(arm, scene, **job_arguments(args), dry_run=dry_run, latency=table)
 
 
 def _calibrate(arm: Any, scene: Any, args: argparse.Namespace, out: Path, music: Any) -> Any:
@@ -117,7 +90,7 @@ def _say_plan(perf: Any) -> None:
     end = strikes[-1].time if strikes else 0.0
     hovers = [s.hover * 1000 for s in strikes]
     print(
-        f"{perf.source}: {count(len(strikes), 'strike')} in {end:.2f} s at tempo x{perf.tempo:g}, "
+        f"{perf.source}: {count(len(strikes), 'strike')} in {end:.2f} s at tempo {perf.tempo * 100:g}%, "
         f"{count(len(perf.moves), 'servo command')}, hover {min(hovers, default=0):.0f}.."
         f"{max(hovers, default=0):.0f} mm; every note reachable in time"
     )

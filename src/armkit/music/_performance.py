@@ -182,8 +182,9 @@ def fastest_tempo(
 
 
 def written_tempo(tempo: float, script: bool = False) -> str:
-    """A tempo factor as the user writes it: ``--tempo 0.46``, in a script ``tempo 46%``."""
-    return f"tempo {tempo * 100:.6g}%" if script else f"--tempo {tempo:.6g}"
+    """A tempo factor as the user writes it, a percentage of the written tempo (one unit
+    for the CLI and scripts): ``--tempo 46``, in a script ``tempo 46%``."""
+    return f"tempo {tempo * 100:.6g}%" if script else f"--tempo {tempo * 100:.6g}"
 
 
 def check_performance(
@@ -195,7 +196,7 @@ def check_performance(
     """PerformanceError listing every note that cannot be played, or nothing. When a
     slower tempo helps, it names the fastest one the planner plays the piece at (and
     that passes ``plays``, the job's other checks), written as on the command line
-    (``--tempo 0.46``) or, with ``script``, as in a script (``tempo 46%``)."""
+    (``--tempo 46``) or, with ``script``, as in a script (``tempo 46%``)."""
     problems = performance.problems
     if not problems:
         return

@@ -165,7 +165,7 @@ def plan_play(
         servos: ``"dynamixel"`` or ``"hobby"`` (default: the model's own driver's).
         start: the arm's joints when the piece starts [rad] (default: home).
         script: errors say a tempo and a transposition as a script writes them
-            (``tempo 46%``, ``transpose 12``) rather than ``--tempo 0.46``.
+            (``tempo 46%``, ``transpose 12``) rather than ``--tempo 46``.
         The rest as ``play``.
 
     Raises:
