@@ -11,11 +11,10 @@ from collections.abc import Callable
 import pytest
 
 from armkit import drawing, music, tasks
-from armkit.tasks import pick_place_owi
 
 JOBS: tuple[Callable[..., object], ...] = (
     tasks.pick, tasks.place, tasks.move_item, tasks.rotate_cube, tasks.stack,
-    tasks.search, tasks.reach, tasks.plan_search, tasks.plan_reach, pick_place_owi.pick_place,
+    tasks.search, tasks.reach, tasks.plan_search, tasks.plan_reach,
     drawing.draw, music.play,
 )  # fmt: skip
 

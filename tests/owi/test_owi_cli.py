@@ -12,8 +12,9 @@ from armkit.cli import main
 from armkit.drivers.timed import TimedDriver, load_state, state_path
 from armkit.kinematics import fk
 from armkit.model import ArmModel
+from armkit.scene import Scene
 from armkit.sim.owi_sim import OwiSim
-from armkit.tasks.pick_place_owi import pick_place
+from armkit.tasks import move_item
 
 SIM = ["--arm", "owi535", "--driver", "sim"]
 
@@ -52,7 +53,7 @@ def test_pick_place_grasps_at_a_and_releases_at_b(
     owi: ArmModel, driver: TimedDriver, sim: OwiSim
 ) -> None:
     a, b = np.array([0.15, 0.10, 0.08]), np.array([0.15, -0.10, 0.08])
-    pick_place(Arm(owi, driver), a * 1000.0, b * 1000.0, lift=40.0)
+    move_item(Arm(owi, driver), Scene("table"), a * 1000.0, b * 1000.0, lift=40.0, clearance=40.0)
     grips = [c for c in sent(sim) if c in ("020000", "010000")]
     assert grips == ["020000", "010000", "020000"]  # open, grasp, release
     assert np.linalg.norm(fk(owi, driver.read())[:3, 3] - (b + np.array([0, 0, 0.04]))) < 0.015
@@ -62,5 +63,5 @@ def test_pick_place_grasps_at_a_and_releases_at_b(
 def test_pick_place_refuses_before_moving(owi: ArmModel, driver: TimedDriver, sim: OwiSim) -> None:
     n = len(sent(sim))
     with pytest.raises(UnreachableError):
-        pick_place(Arm(owi, driver), (150.0, 100.0, 80.0), (900.0, 0.0, 50.0))
+        move_item(Arm(owi, driver), Scene("table"), (150.0, 100.0, 80.0), (900.0, 0.0, 50.0))
     assert len(sent(sim)) == n

@@ -77,12 +77,18 @@ def _keys(args: argparse.Namespace) -> int:
 
 
 def _pick_place(args: argparse.Namespace) -> int:
+    """000's moveItem (``tasks.move_item`` of a point on the bare table): the item whose
+    grip point is A to B, travelling ``--lift`` above them, every step planned first
+    with the gripper level; each step said as it starts."""
     from ..arm import Arm
-    from ..tasks.pick_place_owi import pick_place
+    from ..scene import Scene
+    from ..tasks import move_item, run_plan
 
     with closing(_open(args)) as driver:
+        arm = Arm(driver.model, driver)
         a, b = (args.ax, args.ay, args.az), (args.bx, args.by, args.bz)
-        pick_place(Arm(driver.model, driver), a, b, lift=args.lift, say=print)
+        plan = move_item(arm, Scene("table"), a, b, lift=args.lift, clearance=args.lift, dry_run=True)  # fmt: skip
+        run_plan(arm, plan, lambda k, step: print(f"{k}/{len(plan.steps)} {step.label}"))
         _summary(driver)
     return 0
 
