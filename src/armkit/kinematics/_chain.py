@@ -34,6 +34,7 @@ from ._family import (
     joint_ranges,
     wrist_range,
 )
+from ._near import Near, near_of
 from ._pose import pitch_scalar
 from ._state import Lanes, Pose, State, compile_state
 from ._steps import Fixed, Step, dense_frames, frames_of, steps_of
@@ -78,6 +79,8 @@ class Chain:
             closed-form solvers work in the frame moved there (``based``), else None.
         wrist, wrist_solve: a spherical-wrist arm's geometry and its scalar full-pose
             closed form (``_wrist``), else None.
+        near: an arm of the family up to rounding, with a last roll carrying the tool
+            point beside its axis (``_near``; solved by ``_near_ik``), else None.
     """
 
     name: str
@@ -110,6 +113,7 @@ class Chain:
     shift: tuple[float, float] | None
     wrist: WristFamily | None
     wrist_solve: WristSolver | None
+    near: Near | None = None
 
     def based(self, x: float, y: float, pitch: float | None) -> tuple[float, float, float | None]:
         """A target's x, y [m] and pitch [rad] as the closed form takes them (see ``shift``)."""
@@ -183,6 +187,7 @@ def compile_chain(model: ArmModel) -> Chain:
     home = tuple(float(j.home) for j in model.joints)
     at_home = state(list(home))
     home_pitch = pitch_scalar(at_home.R[0], (at_home.p[0] - shift[0], at_home.p[1] - shift[1]))
+    near = _near(model, home) if fam is None and not isinstance(wf, WristFamily) else None
     wrist = wrist_range(fam, lower[fam.planar[1]], upper[fam.planar[1]]) if fam else (0.0, 0.0)
     fixed, free = _solvers(fam, lower, upper, wrist, (home, home_pitch, state, shift))
     ranges = joint_ranges(fam, lower, upper) if fam else ()
@@ -206,7 +211,7 @@ def compile_chain(model: ArmModel) -> Chain:
         reach2=(reach + 1e-9) * (reach + 1e-9),
         weight=0.5 * reach,
         family=fam,
-        why_not="" if isinstance(family, PlanarFamily) else f"{model.name} {family}",
+        why_not="" if fam or near else f"{model.name} {family}",
         home_pitch=home_pitch,
         wrist_reach=wrist,
         ranges=ranges,
@@ -217,7 +222,17 @@ def compile_chain(model: ArmModel) -> Chain:
         shift=shift if fam is not None and shift != (0.0, 0.0) else None,
         wrist=wf if isinstance(wf, WristFamily) else None,
         wrist_solve=wrist_solver(wf, lower, upper) if isinstance(wf, WristFamily) else None,
+        near=near,
     )
+
+
+def _near(model: ArmModel, home: Q) -> Near | None:
+    """``near_of(model)`` where its idealised chain, the roll frozen at home, is of the
+    closed-form family (``Chain.near``), else None."""
+    near = near_of(model)
+    if near is None:
+        return None
+    return near if chain_of(near.at(home[-1])).family is not None else None
 
 
 def _on_axis(steps: tuple[Step, ...], tool: Fixed, lower: F64, upper: F64, home: F64) -> int:

@@ -18,6 +18,7 @@ from ._closed_free import seed_pitch
 from ._family import PlanarFamily
 from ._lanes import FLOATS
 from ._pitch_range import base_fits
+from ._result import IKResult
 
 
 def limited(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
@@ -37,6 +38,31 @@ def limited(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
             g, at = chain.boundary(r, z, rho, want)
             gap, pitch = (g, at) if g < gap else (gap, pitch)
     return solve(x, y, z, pitch, seed, None) if gap < math.inf else []
+
+
+def family_ik(
+    chain: Chain, p: tuple[float, float, float], pitch: float | None, seed: tuple[float, ...]
+) -> IKResult:
+    """The base yaw + planar closed form of ``chain`` (``chain.fixed`` set): tool point p
+    [m] at ``pitch`` [rad] (None: the model's default, else free) from ``seed`` [rad]."""
+    solve = chain.fixed
+    assert solve is not None
+    x, y, z = p
+    if pitch is None:
+        pitch = chain.default_pitch
+    free, at = chain.free, pitch
+    if chain.shift is not None:  # the family's frame; p and pitch stay the world's
+        x, y, at = chain.based(x, y, pitch)
+    if at is not None or free is None:
+        found = solve(x, y, z, at, seed, None)
+    elif not (found := free(x, y, z, seed)):  # type: ignore[assignment]
+        found = [] if found is None else limited(chain, x, y, z, seed)
+    if not found:
+        if not p[0] * p[0] + p[1] * p[1] + z * z <= chain.reach2:
+            raise too_far(chain, p, pitch)
+        assert chain.family is not None
+        raise refusal(chain, chain.family, p, pitch, seed)
+    return IKResult.of(found, (p, pitch, None), chain)
 
 
 def preferred(chain: Chain, seed: Q) -> float:

@@ -13,10 +13,11 @@ from .._inputs import angle, array, choice, joints, point, rotation, tolerance
 from ..model import ArmModel
 from ._chain import _CHAINS, Chain, chain_of
 from ._closed import best, reasons, solve
-from ._closed_scalar import limited, refusal, too_far, wrist_refusal
+from ._closed_scalar import family_ik, too_far, wrist_refusal
 from ._family import base_pitch
 from ._forward import chunks
 from ._lanes import LANES
+from ._near_ik import near_batch, near_ik
 from ._numeric import solve_many, solve_one
 from ._pitch_range import free_batch, preferred
 from ._result import IKBatchResult, IKResult
@@ -92,23 +93,21 @@ def ik(
                 raise too_far(chain, p, None)
             raise wrist_refusal(chain, p, R9, seed)
         return IKResult.of(found, (p, None, R9), chain)
-    solve = chain.fixed
-    if solve is not None and orientation is None and (method == "auto" or method == "analytic"):
-        if pitch is None:
-            pitch = chain.default_pitch
-        free, at = chain.free, pitch
-        if chain.shift is not None:  # the family's frame; p and pitch stay the world's
-            x, y, at = chain.based(x, y, pitch)
-        if at is not None or free is None:
-            found = solve(x, y, z, at, seed, None)
-        elif not (found := free(x, y, z, seed)):  # type: ignore[assignment]
-            found = [] if found is None else limited(chain, x, y, z, seed)
-        if not found:
-            if not p[0] * p[0] + p[1] * p[1] + z * z <= chain.reach2:
-                raise too_far(chain, p, pitch)
-            assert chain.family is not None
-            raise refusal(chain, chain.family, p, pitch, seed)
-        return IKResult.of(found, (p, pitch, None), chain)
+    if (
+        chain.fixed is not None
+        and orientation is None
+        and (method == "auto" or method == "analytic")
+    ):
+        return family_ik(chain, p, pitch, seed)
+    if (
+        chain.near is not None
+        and orientation is None
+        and (method == "auto" or method == "analytic")
+    ):
+        return near_ik(
+            chain, p, pitch, seed,
+            lambda: _numeric_ik(chain, p, pitch, seed, None, "lm", tols),
+        )  # fmt: skip
     return _numeric_ik(chain, p, pitch, seed, orientation, method, tols)
 
 
@@ -167,7 +166,7 @@ def closed_form(model: ArmModel) -> str:
     """The closed form that ``model`` gets: ``"base yaw + planar chain"`` (position, pitch),
     ``"spherical wrist"`` (full pose), or ``""`` (numeric only)."""
     chain = chain_of(model)
-    if chain.family is not None:
+    if chain.family is not None or chain.near is not None:
         return "base yaw + planar chain"
     return "spherical wrist" if chain.wrist is not None else ""
 
@@ -249,6 +248,11 @@ def ik_batch(
     fam = chain.family
     if fam is not None and orientations is None and name in ("auto", "analytic"):
         return _closed_batch(chain, fam, P, pitch, seed)
+    if chain.near is not None and orientations is None and name in ("auto", "analytic"):
+        return near_batch(
+            chain, P, pitch, seed, lambda c, *a: _closed_batch(c, c.family, *a),
+            lambda p, at, q: ik(model, p, at, q),
+        )  # fmt: skip
     if chain.wrist is not None and orientations is not None and name in ("auto", "analytic"):
         if pitch is not None:
             raise InputError("give pitches or orientations, not both")
