@@ -30,7 +30,7 @@ FLOORS: tuple[tuple[str, ...], ...] = (
     ("armkit.model",),
     ("armkit.kinematics", "armkit.devices"),
     ("armkit.drivers", "armkit.scene", "armkit.sensing", "armkit.sim", "armkit.interchange"),
-    ("armkit.motion", "armkit.connect"),
+    ("armkit.motion", "armkit.connect", "armkit.physics"),
     ("armkit._arm_inputs", "armkit.arm", "armkit"),  # ``armkit``: the package's face
     ("armkit.music", "armkit.tasks", "armkit.drawing"),  # the jobs
     ("armkit.script", "armkit.viz", "armkit.jobs"),  # jobs: the specs script and cli read
@@ -146,6 +146,12 @@ def test_the_import_reader_sees_relative_and_nested_imports() -> None:
         ("armkit.model", "armkit.interchange"),
         ("armkit.kinematics", "armkit.interchange"),
         ("armkit.scene", "armkit.interchange"),
+        # MuJoCo's physics is a World observer by protocol, as ScenePhysics, over the MJCF
+        ("armkit.physics", "armkit.sim"),
+        ("armkit.physics", "armkit.drivers"),
+        ("armkit.physics", "armkit.connect"),
+        ("armkit.scene", "armkit.physics"),
+        ("armkit.sim", "armkit.physics"),
         ("armkit.sensing", "armkit.sim"),  # the simulated sensor lives in sim
         ("armkit.sensing", "armkit.drivers"),
     ],

@@ -38,7 +38,7 @@ def test_import_armkit_loads_no_numpy_and_no_arm() -> None:
     code = (
         "import sys, armkit; "
         "print(sorted(m for m in ('numpy', 'armkit.arm', 'armkit.kinematics', "
-        "'armkit.model', 'armkit.sim') if m in sys.modules))"
+        "'armkit.model', 'armkit.sim', 'mujoco', 'armkit.physics') if m in sys.modules))"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "[]"

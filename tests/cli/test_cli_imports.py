@@ -15,6 +15,7 @@ HEAVY = (
     "armkit.kinematics", "armkit.model._types", "armkit.sim", "armkit.drivers",
     "armkit.devices", "armkit.scene._scene", "armkit.motion", "armkit.tasks",
     "armkit.drawing", "armkit.music", "armkit.script", "armkit.viz", "armkit.connect._simulate",
+    "mujoco", "armkit.physics",
 )  # fmt: skip
 IK_NEEDS = ("numpy", "armkit.kinematics", "armkit.model._types")  # a model holds numpy arrays
 

@@ -128,6 +128,15 @@ def build_parser() -> argparse.ArgumentParser:
         "an empty table)",
     )
     parser.add_argument(
+        "--physics",
+        choices=("rules", "mujoco"),
+        default=None,
+        help="what moves the scene's objects in the simulator: rules (armkit's own: a cube "
+        "between the jaws is grasped, a released one settles) or mujoco (MuJoCo's contacts, "
+        "friction and gravity; pip install 'armkit[physics]'); default: the scene file's "
+        "'physics', else rules",
+    )
+    parser.add_argument(
         "--explain",
         action="store_true",
         help="on a refusal, say more than its one line: each way tried and why it failed",
@@ -237,6 +246,10 @@ def _check_globals(args: argparse.Namespace) -> None:
         )
     if args.port is not None and not args.port.strip():
         raise InputError("--port is empty; give a device (/dev/ttyUSB0) or 'emu'")
+    if getattr(args, "physics", None) == "mujoco":
+        from ..physics import mujoco_module
+
+        mujoco_module()  # one line saying how to install it, before anything moves
 
 
 def _global_options(parser: argparse.ArgumentParser) -> set[str]:

@@ -56,7 +56,13 @@ def scene_of(args: argparse.Namespace, required: bool = True) -> Any:
             f"'{args.command}' needs a scene: give --scene FILE|NAME before the command "
             f"(shipped: {', '.join(shipped_scenes())})"
         )
-    return load_scene(args.scene)
+    scene = load_scene(args.scene)
+    physics = getattr(args, "physics", None)
+    if physics is None or physics == scene.physics:
+        return scene
+    from dataclasses import replace
+
+    return replace(scene, physics=physics)  # --physics over the file's 'physics'
 
 
 def _kept(args: argparse.Namespace, model: Any, scene: Any) -> tuple[Any, str | None]:

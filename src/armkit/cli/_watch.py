@@ -180,7 +180,7 @@ def kept_objects(args: argparse.Namespace, arm: Any, scene: Any) -> Iterator[Non
     try:
         physics = load_physics(path, scene)
         before = physics_text(physics)
-        attach_scene(arm, scene, physics)
+        physics = attach_scene(arm, scene, physics) or physics  # MuJoCo's, if the scene says
         yield
     finally:
         if physics_text(physics) != before:

@@ -25,6 +25,8 @@ if TYPE_CHECKING:  # what the names below are, for type checkers (loaded on firs
     from ._clearance import joint_sweep as joint_sweep
     from ._clearance import joint_sweeps as joint_sweeps
     from ._container import Container as Container
+    from ._cube import DROP_HEIGHT as DROP_HEIGHT
+    from ._cube import FLAT_TILT as FLAT_TILT
     from ._cube import Cube as Cube
     from ._cube import Settled as Settled
     from ._cube import cube_colour as cube_colour
@@ -49,6 +51,7 @@ if TYPE_CHECKING:  # what the names below are, for type checkers (loaded on firs
     from ._object import support_under as support_under
     from ._pen import Pen as Pen
     from ._pen import PenStand as PenStand
+    from ._physics import EventKind as EventKind
     from ._physics import SceneEvent as SceneEvent
     from ._physics import ScenePhysics as ScenePhysics
     from ._picture import PICTURE_SUFFIXES as PICTURE_SUFFIXES
@@ -57,6 +60,8 @@ if TYPE_CHECKING:  # what the names below are, for type checkers (loaded on firs
     from ._rect import Rect as Rect
     from ._refusal import is_inside as is_inside
     from ._refusal import move_refusal as move_refusal
+    from ._rotations import yaw_and_face as yaw_and_face
+    from ._scene import PHYSICS as PHYSICS
     from ._scene import Scene as Scene
     from ._shipped import shipped_scenes as shipped_scenes
     from ._show import describe as describe
@@ -153,6 +158,12 @@ def _pen_module() -> Any:
     return module
 
 
+def _rotations_module() -> Any:
+    from . import _rotations as module
+
+    return module
+
+
 def _physics_module() -> Any:
     from . import _physics as module
 
@@ -224,6 +235,8 @@ _LAZY = {
     "cube_colour": _cube_module,
     "cube_primitive": _cube_module,
     "settle": _cube_module,
+    "DROP_HEIGHT": _cube_module,
+    "FLAT_TILT": _cube_module,
     "SceneError": _errors_module,
     "MIN_COVER": _grasp_module,
     "grasp": _grasp_module,
@@ -245,6 +258,8 @@ _LAZY = {
     "Pen": _pen_module,
     "PenStand": _pen_module,
     "SceneEvent": _physics_module,
+    "EventKind": _physics_module,
+    "yaw_and_face": _rotations_module,
     "ScenePhysics": _physics_module,
     "PICTURE_SUFFIXES": _picture_module,
     "top_view": _picture_module,
@@ -253,6 +268,7 @@ _LAZY = {
     "is_inside": _refusal_module,
     "move_refusal": _refusal_module,
     "Scene": _scene_module,
+    "PHYSICS": _scene_module,
     "describe": _show_module,
     "load_physics": _state_module,
     "physics_text": _state_module,

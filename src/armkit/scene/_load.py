@@ -11,9 +11,9 @@ from . import _kinds
 from ._errors import SceneError
 from ._fields import Entry
 from ._rotations import pose, rot_z
-from ._scene import Scene
+from ._scene import PHYSICS, Scene
 
-_TOP = ("name", "description", "table_z_mm", "base")
+_TOP = ("name", "description", "table_z_mm", "base", "physics")
 
 
 def load_scene(name_or_path: str | Path) -> Scene:
@@ -52,6 +52,7 @@ def build_scene(data: dict[str, Any], path: Path) -> Scene:
         table_z=table_z,
         T_world_base=pose(rot_z(base.deg("yaw_deg", 0.0)), xyz),
         source=path,
+        physics=top.text("physics", "rules", PHYSICS),
     )
     for kind in kinds:
         scene = kind.keep(scene, kind.load(path, data, scene))

@@ -22,6 +22,7 @@ from ._place import Place
 from ._surfaces import Sheet
 
 F64 = NDArray[np.float64]
+PHYSICS = ("rules", "mujoco")  # what may move a simulated scene's objects
 
 
 @dataclass(frozen=True, eq=False)
@@ -37,6 +38,8 @@ class Scene:
             the objects, each name unique across the scene.
         hands: hands held out to shake (003), after ``source`` so that positional
             construction stays as it was.
+        physics: what moves the objects in the simulator: ``"rules"`` (armkit's own
+            rules, the default) or ``"mujoco"`` (MuJoCo, ``armkit.physics``).
         others: objects of kinds no job looks up by kind (a kind added to
             ``OBJECT_KINDS`` whose loader puts its objects here needs no field of its own).
         source: the file it was loaded from, or None.
@@ -56,6 +59,7 @@ class Scene:
     source: Path | None = None
     hands: tuple[Hand, ...] = ()
     others: tuple[SceneObject, ...] = ()
+    physics: str = "rules"
 
     def objects(self) -> tuple[SceneObject, ...]:
         """Every object, in file order by kind (what clearance and the views iterate)."""

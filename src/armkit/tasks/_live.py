@@ -56,7 +56,9 @@ def attach_scene(
         return old[0]
     if old is not None:
         old[1]()
-    physics = physics or ScenePhysics(scene)
+    from ..physics import physics_for
+
+    physics = physics_for(scene, physics)  # the rules', or MuJoCo's if the scene says so
     _ATTACHED[world] = (physics, world.attach(physics))
     return physics
 

@@ -1,0 +1,90 @@
+"""MuJoCo as the World's physics (issue 32 item 1): ``--physics mujoco`` and a scene's
+``physics = "mujoco"`` make the World step a MuJoCo model whose joints follow the
+simulated servos (the drivers and devices unchanged), the cubes read back from MuJoCo;
+a grip that slips is reported as the rule world reports a miss (item 2)."""
+
+from __future__ import annotations
+
+import json
+import sys
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+pytest.importorskip("mujoco")
+
+from armkit import Arm, load_model, tasks
+from armkit.cli import main
+from armkit.physics import MujocoPhysics
+from armkit.scene import SceneError, load_scene
+
+
+def _mujoco_scene() -> object:
+    return replace(load_scene("board_001"), physics="mujoco")
+
+
+def test_a_scene_file_chooses_its_physics(tmp_path: Path) -> None:
+    assert load_scene("board_001").physics == "rules"
+    text = Path(load_scene("board_001").source or "").read_text(encoding="utf-8")
+    path = tmp_path / "physical.toml"
+    path.write_text('physics = "mujoco"\n' + text, encoding="utf-8")
+    assert load_scene(path).physics == "mujoco"
+    path.write_text('physics = "bullet"\n' + text, encoding="utf-8")
+    with pytest.raises(
+        SceneError, match="field 'physics': must be one of rules, mujoco, got 'bullet'"
+    ):
+        load_scene(path)
+
+
+def test_without_mujoco_the_cli_says_how_to_install_it_and_moves_nothing(
+    config_dir: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    monkeypatch.setitem(sys.modules, "mujoco", None)  # import mujoco -> ImportError
+    code = main(["--physics", "mujoco", "--scene", "board_001", "rotate-cube", "red"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 2
+    assert len(err) == 1 and "pip install 'armkit[physics]'" in err[0], err
+    assert not config_dir.exists() or not any(config_dir.iterdir())
+
+
+def test_the_mujoco_arm_follows_the_simulated_servos_and_the_cubes_rest(closes: object) -> None:
+    scene = _mujoco_scene()
+    arm = closes(Arm(load_model("openmanipulator_x"), driver="sim"))  # type: ignore[operator]
+    physics = tasks.attach_scene(arm, scene)
+    assert isinstance(physics, MujocoPhysics)
+    arm.move_joints([20.0, -30.0, 20.0, 40.0])
+    arm.world.advance(0.5)
+    engine = physics.engine
+    assert engine is not None
+    truth = arm.world.arm().q()
+    got = engine.d.qpos[list(engine.at.joints)]
+    assert np.abs(got - truth).max() < 1e-3  # [rad]: 0.25 mm at 250 mm from the axis
+    for cube in load_scene("board_001").cubes:
+        now = physics.cube(cube.name)
+        assert np.linalg.norm(now.position - cube.position) < 0.3e-3  # [m]
+        assert now.up_face == "+z"
+    assert not physics.events
+
+
+def test_rotate_cube_under_mujoco_puts_the_cube_back_within_1_mm(
+    config_dir: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code = main(["--physics", "mujoco", "--scene", "board_001", "rotate-cube", "red"])
+    out = capsys.readouterr()
+    assert code == 0, out.err
+    (state,) = config_dir.glob("scene_board_001-*.json")
+    red = next(c for c in json.loads(state.read_text())["cubes"] if c["name"] == "red")
+    assert np.linalg.norm(np.subtract(red["position_mm"], [220.0, 45.0, 3.0])) < 1.0
+    assert red["up_face"] == "-x"  # turned a quarter, standing on a face
+
+
+def test_a_slipping_grip_stops_the_task_as_a_miss_does(closes: object) -> None:
+    scene = _mujoco_scene()
+    arm = closes(Arm(load_model("openmanipulator_x"), driver="sim", scene=scene))  # type: ignore[operator]
+    slippery = MujocoPhysics(scene, friction=0.05)  # soap on the pads
+    tasks.attach_scene(arm, scene, slippery)
+    with pytest.raises(tasks.TaskFailed, match=r"dropped red: it slipped \d+\.\d mm in the grip"):
+        tasks.rotate_cube(arm, scene, "red")
+    assert [e.kind for e in slippery.events][:2] == ["grasped", "dropped"]
