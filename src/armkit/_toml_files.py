@@ -1,11 +1,18 @@
-"""Data files shipped inside a package (the arm models, the scenes): their names, and a
-name or a path resolved to one file."""
+"""TOML data files (the arm models, the scenes): the names of those shipped inside a
+package, a name or a path resolved to one file, and a file read within armkit's
+input limits."""
 
 from __future__ import annotations
 
+import re
+import tomllib
 from collections.abc import Callable
 from importlib import resources
 from pathlib import Path
+from typing import Any
+
+from ._input_limits import MAX_TOML_BYTES, LimitError, position, read_text, where
+from ._toml_shape import check_toml_shape
 
 
 def shipped(package: str, folder: str) -> list[str]:
@@ -52,3 +59,38 @@ def resolve(
             "(or give a path to a .toml file)"
         )
     return Path(str(resources.files(package) / folder / f"{text}.toml"))
+
+
+def read_toml(
+    path: Path, error: Callable[[str], Exception], what: str
+) -> tuple[dict[str, Any], str]:
+    """The parsed TOML of ``path`` and its text, read within the limits of
+    ``_input_limits`` (size, UTF-8, line length) and ``_toml_shape`` (nesting, numbers);
+    ``what`` names the kind of file in messages ("scene file").
+
+    Raises:
+        ``error(message)``: the message starts with ``FILE:LINE:COL:`` (``FILE:`` when
+            it is about the whole file) and says which limit or what TOML wanted.
+    """
+    name = str(path)
+    try:
+        text = read_text(path, MAX_TOML_BYTES, what)
+        check_toml_shape(text, name)
+    except LimitError as exc:
+        raise error(str(exc)) from None
+    try:
+        return tomllib.loads(text), text
+    except tomllib.TOMLDecodeError as exc:
+        message = str(exc)
+        at = _AT.search(message)
+        line, column = (int(at[1]), int(at[2])) if at else (0, 0)
+        if at is None and message.endswith("(at end of document)"):
+            line, column = position(text, len(text))
+        message = _AT_ANY.sub("", message).strip()
+        raise error(f"{where(name, line, column)}: not valid TOML: {message}") from None
+    except (RecursionError, ValueError) as exc:  # beyond what the shape check foresaw
+        raise error(f"{name}: not a TOML file armkit can read ({type(exc).__name__})") from None
+
+
+_AT = re.compile(r"\(at line (\d+), column (\d+)\)")
+_AT_ANY = re.compile(r"\(at (?:line \d+, column \d+|end of document)\)")

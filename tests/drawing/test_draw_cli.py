@@ -75,8 +75,8 @@ def _state(config_dir: Path) -> dict[str, bytes]:
 @pytest.mark.parametrize(
     "args,says",
     [
-        (["svg", "BAD", "--sheet", "A5"], "line 1 column"),
-        (["gcode", "BAD.gcode"], "line 2 column 1"),
+        (["svg", "BAD", "--sheet", "A5"], "BAD.svg:1:"),
+        (["gcode", "BAD.gcode"], "BAD.gcode:2:1: "),
         (["svg", "GOOD", "--sheet", "A4"], "no sheet 'A4'"),
         (["svg", "GOOD", "--result", "no/such/r.png"], "does not exist"),
         (["svg", "GOOD", "--preview", "plan.txt"], "must end in"),

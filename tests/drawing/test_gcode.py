@@ -83,4 +83,4 @@ def test_errors_name_file_line_and_column(
     with pytest.raises(DrawingError, match=what) as e:
         read_gcode(path)
     assert (e.value.line, e.value.column) == (line, column)
-    assert str(e.value).startswith(f"{path} line {line} column {column}: ")
+    assert str(e.value).startswith(f"{path}:{line}:{column}: ")

@@ -89,16 +89,16 @@ def test_errors_name_file_line_and_column(
     with pytest.raises(DrawingError, match=what) as e:
         read_svg(path)
     assert (e.value.file, e.value.line, e.value.column) == (str(path), line, column)
-    assert str(e.value).startswith(f"{path} line {line} column {column}: ")
+    assert str(e.value).startswith(f"{path}:{line}:{column}: ")
     assert isinstance(e.value, ValueError)
 
 
 def test_not_an_svg_and_missing_file(tmp_path: Path) -> None:
-    with pytest.raises(DrawingError, match=r"line 1 column 1: the root element is <html>"):
+    with pytest.raises(DrawingError, match=r":1:1: the root element is <html>"):
         read_svg(write(tmp_path, "x.svg", "<html><body/></html>"))
-    with pytest.raises(DrawingError, match=r"line 1 column 1: not well-formed XML \(no element"):
+    with pytest.raises(DrawingError, match=r":1:1: not well-formed XML \(no element"):
         read_svg(write(tmp_path, "e.svg", ""))
-    with pytest.raises(DrawingError, match="cannot read it"):
+    with pytest.raises(DrawingError, match="cannot read the drawing"):
         read_svg(tmp_path / "missing.svg")
 
 
@@ -123,5 +123,5 @@ def test_an_element_svgelements_chokes_on_is_found_alone(
 
     monkeypatch.setattr(svg_module, "_element_paths", choke_on_ellipses)
     path = _svg(tmp_path, '<circle r="3"/>\n  <ellipse rx="3" ry="2"/>')
-    with pytest.raises(DrawingError, match=r"line 3 column 3: svgelements cannot read <ellipse>"):
+    with pytest.raises(DrawingError, match=r":3:3: svgelements cannot read <ellipse>"):
         read_svg(path)

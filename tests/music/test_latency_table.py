@@ -43,7 +43,7 @@ def test_a_table_reads_back_as_written(tmp_path: Path) -> None:
         ),
         ("default_ms = 10\ndelay = 3\n", ":2: delay", "unknown key"),
         ("default_ms = nan\n", ":1: default_ms", "number of milliseconds"),
-        ("default_ms = \n", ": not a TOML latency table", "line 1"),
+        ("default_ms = \n", ":1:14: not valid TOML", "Invalid value"),
     ],
 )
 def test_a_bad_table_is_named_by_file_line_and_key(

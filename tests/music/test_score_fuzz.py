@@ -12,6 +12,7 @@ from armkit.music import ScoreError, midi_bytes, parse_midi, parse_notelist, par
 
 SETTINGS = settings(max_examples=300, derandomize=True, deadline=None)
 WHERE = re.compile(r"^(?P<file>[^:]+):(?P<line>\d+):(?P<column>\d+): ")
+MIDI_WHERE = re.compile(r"^(?P<file>[^:]+): (?:byte (?P<byte>\d+) \((?:the header|track \d+)\): )?")
 
 NOTELIST_WORDS = st.sampled_from(
     [
@@ -132,8 +133,9 @@ def test_midi_fuzz(flips: list[tuple[int, int]], keep: int) -> None:
     try:
         score = parse_midi(bytes(data), "fuzz.mid")
     except ScoreError as err:
-        m = WHERE.match(str(err))
+        m = MIDI_WHERE.match(str(err))  # a binary file: the byte, not a line and column
         assert m is not None and m["file"] == "fuzz.mid", str(err)
+        assert m["byte"] is None or int(m["byte"]) == err.column
         assert 0 <= err.line <= 3 and 0 <= err.column <= len(data)
         if err.token:
             start = max(0, err.column - 4)

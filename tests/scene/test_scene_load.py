@@ -146,10 +146,10 @@ def test_unreadable_files(tmp_path: Path) -> None:
         load_scene("nope")
     bad = tmp_path / "bad.toml"
     bad.write_bytes(b'name = "\xff\xfe"\n')
-    with pytest.raises(SceneError, match="not a UTF-8"):
+    with pytest.raises(SceneError, match=r"bad.toml:1:9: not UTF-8 text \(byte ff\)"):
         load_scene(bad)
     bad.write_text("name = [")
-    with pytest.raises(SceneError, match="not valid TOML"):
+    with pytest.raises(SceneError, match=r"bad.toml:1:9: not valid TOML"):
         load_scene(bad)
 
 

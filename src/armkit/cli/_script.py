@@ -164,14 +164,7 @@ def _shell(args: argparse.Namespace) -> int:
 def _read(name: str) -> tuple[Source, Setup]:
     from ..script import Source, parse, setup_of
 
-    path = Path(name)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise ArmkitError(
-            f"cannot read the script {name}: {getattr(exc, 'strerror', exc)}"
-        ) from None
-    source = Source(name, text)
+    source = Source.read(name)
     program, _ = parse(source)
     return source, setup_of(program)
 

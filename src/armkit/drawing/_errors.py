@@ -11,7 +11,8 @@ from .._errors import ArmkitError, ArmkitWarning
 
 
 class DrawingError(ArmkitError, ValueError):
-    """A drawing (SVG, G-code, shapes) cannot be read or planned.
+    """A drawing (SVG, G-code, shapes) cannot be read or planned; the message starts
+    with ``FILE:LINE:COL:`` where the format has lines, else ``FILE:``.
 
     Attributes:
         file: the file's name as given ("" for drawings made in code).
@@ -23,8 +24,8 @@ class DrawingError(ArmkitError, ValueError):
         self, what: str, *, file: str = "", line: int | None = None, column: int | None = None
     ) -> None:
         where = file
-        if line is not None:
-            where += f" line {line}" + (f" column {column}" if column is not None else "")
+        if line is not None:  # FILE:LINE:COL, as editors and terminals read it
+            where = f"{file or '<drawing>'}:{line}:{column or 1}"
         super().__init__(f"{where.strip()}: {what}" if where else what)
         self.file, self.line, self.column = file, line, column
 

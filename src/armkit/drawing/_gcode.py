@@ -14,12 +14,14 @@ Anything else is refused with its line and column.
 
 from __future__ import annotations
 
+import codecs
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
+from .._input_limits import MAX_SEGMENTS, LimitError, check_lines, decode
 from ._errors import DrawingError
 from ._figure import Figure
 from ._gcode_words import Word, words_of
@@ -30,6 +32,7 @@ LETTERS = "XYZIJFPS"
 G_CODES = {0, 1, 2, 3, 4, 17, 20, 21, 28, 90, 91}
 M_CODES = {2, 3, 4, 5, 30, 300}
 SUPPORTED = "G0 G1 G2 G3 G4 G17 G20 G21 G28 G90 G91 M2 M3 M4 M5 M30 M300 and X Y Z I J F P S N"
+UTF16 = (codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)
 ARC_RADIUS_SLACK = 5e-5  # [m]: start and end radii of an arc may differ by this (or 0.1 %)
 
 
@@ -48,19 +51,33 @@ class _State:
     by_m: bool = False  # once M3 / M5 / M300 is used, they alone move the pen
     runs: list[list[Segment]] = field(default_factory=list)
     dwell: float = 0.0
+    segments: int = 0  # drawn so far
 
 
 def read_gcode(path: str | Path, *, z_down: float = 0.0) -> Figure:
     """Read a G-code file; the pen is down while Z <= ``z_down`` [m] or after M3 / M300 S30.
     Raise ``DrawingError`` naming the file, line and column of the first problem."""
     name = str(path)
-    text = read_bytes(path).decode("utf-8", errors="replace")
+    text = _text(read_bytes(path), name)
     st = _State(name, z_down)
     for number, line in enumerate(text.split("\n"), start=1):  # lines as editors count them
         if _run_line(st, words_of(line.rstrip("\r"), number, name), number):
             break
     paths = tuple(FigurePath(tuple(r)) for r in st.runs if r)
     return Figure(paths, np.eye(3), source=name, dwell=st.dwell)
+
+
+def _text(data: bytes, name: str) -> str:
+    """The file's text: UTF-8 (bytes that are not read as U+FFFD, for a comment in
+    another encoding) or UTF-16 with its BOM; lines at most ``MAX_LINE_CHARS``."""
+    try:
+        text = decode(data, name) if data.startswith(UTF16) else data.decode("utf-8", "replace")
+        check_lines(text, name)
+    except LimitError as exc:
+        raise DrawingError(
+            exc.problem, file=name, line=exc.line or None, column=exc.column or None
+        ) from None
+    return text
 
 
 def _fail(st: _State, line: int, word: Word | None, what: str) -> DrawingError:
@@ -175,6 +192,14 @@ def _move(st: _State, mode: int, params: dict[str, Word], line: int, word: Word)
         seg = Line(st.xy.copy(), xy.copy())
     if seg is not None and st.down and down_after:
         st.runs[-1].append(seg)
+        st.segments += 1
+        if st.segments > MAX_SEGMENTS:
+            raise _fail(
+                st,
+                line,
+                word,
+                f"more than {MAX_SEGMENTS} moves that draw; simplify the drawing or split it",
+            )
     st.xy, st.z = xy, z
     _pen(st, down_after)
 

@@ -18,6 +18,7 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
+from .._input_limits import MAX_DRAWING_BYTES, LimitError, read_limited
 from ._errors import DrawingError, DrawingWarning
 from ._figure import Figure
 from ._segments import Cubic, EllipticArc, FigurePath, Line, Quad, Segment
@@ -99,13 +100,12 @@ def _reads(element: Element, se: Any) -> bool:
 
 
 def read_bytes(path: str | Path) -> bytes:
-    """The file's bytes, or ``DrawingError`` naming it and why it cannot be read."""
+    """The file's bytes, or ``DrawingError`` naming it and why it cannot be read (or
+    that it is larger than ``MAX_DRAWING_BYTES``)."""
     try:
-        return Path(path).read_bytes()
-    except OSError as e:
-        raise DrawingError(
-            f"cannot read it ({e.strerror or e}); check the path", file=str(path)
-        ) from None
+        return read_limited(path, MAX_DRAWING_BYTES, "drawing")
+    except LimitError as e:
+        raise DrawingError(e.problem, file=e.file) from None
 
 
 def _element_paths(element: Any, se: Any) -> list[FigurePath]:

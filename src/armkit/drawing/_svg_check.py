@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 from . import _svg_syntax as syntax
 from ._errors import DrawingError
+from ._svg_limits import Guard
 
 SVG_NS = "http://www.w3.org/2000/svg"
 SHAPE_LENGTHS = {
@@ -70,11 +71,13 @@ def _length_check(non_negative: bool) -> Callable[[str], syntax.Problem]:
 def check_svg(data: bytes, file: str) -> Checked:
     """Raise ``DrawingError`` at the first problem; return the elements found."""
     parser = xml.parsers.expat.ParserCreate(namespace_separator=" ")
+    guard = Guard(parser, data, file)
     elements: list[Element] = []
 
     def start(name: str, attrs: dict[str, str]) -> None:
         ns, _, tag = name.rpartition(" ")
         at = Element(tag, dict(attrs), parser.CurrentLineNumber, parser.CurrentColumnNumber + 1)
+        guard.started(tag, at.attrs, at.line, at.column)
         if not elements and (tag != "svg" or ns not in ("", SVG_NS)):
             raise _error(file, at, f"the root element is <{tag}>, not <svg>; give an SVG file")
         if ns in ("", SVG_NS):
@@ -96,6 +99,7 @@ def check_svg(data: bytes, file: str) -> Checked:
         ) from None
     if not elements:
         raise DrawingError("no <svg> element; give an SVG file", file=file, line=1, column=1)
+    guard.check_uses()
     left_out = tuple(e for e in elements if e.tag in ("text", "image"))
     return Checked(tuple(elements), left_out)
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-import tomllib
 from pathlib import Path
 from typing import Any
 
@@ -11,7 +10,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import ModelError
-from .._toml_files import resolve, shipped
+from .._toml_files import read_toml, resolve, shipped
 from ._check import MAX_LENGTH_MM
 from ._check import NUM as _NUM
 from ._check import Checker as _Checker
@@ -84,17 +83,7 @@ def load_model(name_or_path: str | Path) -> ArmModel:
     if is_urdf(name_or_path):  # a URDF file: FILE.urdf or FILE.urdf#TIP_LINK
         return load_urdf(name_or_path)
     path = _resolve(name_or_path)
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except tomllib.TOMLDecodeError as exc:
-        raise ModelError(f"{path}: not valid TOML: {exc}") from None
-    except UnicodeDecodeError as exc:
-        raise ModelError(
-            f"{path}: not a text file in UTF-8 (byte {exc.start} is 0x{exc.object[exc.start]:02x}); "
-            "save it as UTF-8"
-        ) from None
-    except OSError as exc:
-        raise ModelError(f"{path}: cannot read: {exc.strerror}") from None
+    data, _text = read_toml(path, ModelError, "model file")
     return _build(data, path)
 
 

@@ -17,12 +17,12 @@ from __future__ import annotations
 
 import math
 import re
-import tomllib
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .._errors import ArmkitError
 from .._files import check_output_path
+from .._toml_files import read_toml
 from ._onsets import LatencyTable
 from ._score import Note, Score
 
@@ -64,14 +64,7 @@ def load_latency(path: str | Path) -> LatencyTable:
     """The table in ``path`` (see the module doc). Raises LatencyError naming the file,
     line and key of the first problem."""
     file = Path(path)
-    try:
-        text = file.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise LatencyError(f"{file}: cannot read the latency table ({exc.strerror})") from None
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise LatencyError(f"{file}: not a TOML latency table: {exc}") from None
+    data, text = read_toml(file, LatencyError, "latency table")
     lines = text.splitlines()
     for key in data:
         if key not in ("default_ms", "delays_ms"):

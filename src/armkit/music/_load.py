@@ -5,9 +5,10 @@ from __future__ import annotations
 from numbers import Integral
 from pathlib import Path
 
+from .._input_limits import MAX_SCORE_BYTES, LimitError, check_lines, decode, read_limited
 from ._midi import read_midi
 from ._notelist import parse_notelist
-from ._rtttl import parse_rtttl, position
+from ._rtttl import parse_rtttl
 from ._score import Score, ScoreError
 
 MIDI_SUFFIXES = (".mid", ".midi")
@@ -43,18 +44,12 @@ def load_score(path: str | Path, transpose: int = 0) -> Score:
 
 
 def read_text(path: str | Path) -> str:
-    """The UTF-8 text of ``path``; ScoreError names the first byte that is not UTF-8."""
+    """The text of ``path`` (UTF-8, or UTF-16 with its BOM) within armkit's input limits
+    (``MAX_SCORE_BYTES``, ``MAX_LINE_CHARS``); ScoreError says where it is not."""
     source = str(path)
     try:
-        data = Path(path).read_bytes()
-    except OSError as exc:
-        raise ScoreError.whole(source, f"cannot read the file: {exc.strerror or exc}") from exc
-    try:
-        return data.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        prefix = data[: exc.start].decode("utf-8")
-        line, column = position(prefix, len(prefix))
-        bad = data[exc.start : exc.start + 4].hex(" ")
-        raise ScoreError(
-            source, line, column, bad, "not UTF-8 text; save the file as UTF-8"
-        ) from exc
+        text = decode(read_limited(path, MAX_SCORE_BYTES, "score"), source)
+        check_lines(text, source)
+    except LimitError as exc:
+        raise ScoreError.unreadable(source, exc) from None
+    return text

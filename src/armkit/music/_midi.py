@@ -17,6 +17,7 @@ from types import ModuleType
 from typing import Any, cast
 
 from .._errors import ArmkitError
+from .._input_limits import MAX_SCORE_BYTES, LimitError, read_limited
 from ._score import MAX_SECONDS, Note, Score, ScoreError, make_score
 
 DRUM_CHANNEL = 9  # MIDI channel 10, counted from 0 as mido does
@@ -37,9 +38,9 @@ def read_midi(path: str | Path) -> Score:
     """The notes of a MIDI file (type 0 or 1) as a Score; ScoreError on anything unreadable."""
     source = str(path)
     try:
-        data = Path(path).read_bytes()
-    except OSError as exc:
-        raise ScoreError.whole(source, f"cannot read the file: {exc.strerror or exc}") from exc
+        data = read_limited(path, MAX_SCORE_BYTES, "score")
+    except LimitError as exc:
+        raise ScoreError.unreadable(source, exc) from None
     return parse_midi(data, source)
 
 
@@ -49,6 +50,10 @@ def parse_midi(data: bytes, source: str = "<bytes>") -> Score:
     buffer = io.BytesIO(data)
     try:
         midi = mido.MidiFile(file=buffer)
+        if midi.ticks_per_beat <= 0:
+            raise ScoreError.at_byte(
+                source, 0, 12, bytes_at(data, 12), "a division of 0 ticks per beat; export it again"
+            )
         messages = list(midi) if midi.type != 2 else None
     except _MIDO_FAILURES as exc:
         offset = buffer.tell()
@@ -58,11 +63,11 @@ def parse_midi(data: bytes, source: str = "<bytes>") -> Score:
             if isinstance(exc, EOFError)
             else str(exc) or type(exc).__name__
         )
-        raise ScoreError(
+        raise ScoreError.at_byte(
             source, chunk_at(data, offset), offset, token, f"not a readable MIDI file: {why}"
         ) from exc
     if messages is None:
-        raise ScoreError(
+        raise ScoreError.at_byte(
             source, 0, 8, bytes_at(data, 8), "type 2 (independent tracks) is not a piece to play"
         )
     score = make_score(_notes(messages, source), source)

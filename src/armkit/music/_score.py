@@ -11,6 +11,7 @@ from dataclasses import dataclass, replace
 from numbers import Integral
 
 from .._errors import ArmkitError, InputError
+from .._input_limits import MAX_NOTES, LimitError, where
 from .._inputs import is_number, shown
 from ..scene import note_name as note_name
 from ..scene import note_number
@@ -27,7 +28,8 @@ MIN_TEMPO, MAX_TEMPO = 0.1, 4.0
 class ScoreError(ArmkitError, ValueError):
     """A score file is unreadable or wrong. The message starts with
     ``file:line:column:`` and names the offending token; one about the whole file
-    (``ScoreError.whole``: it cannot be read) starts with ``file:``.
+    (``ScoreError.whole``: it cannot be read; line 0) starts with ``file:``, one in a
+    MIDI file (``ScoreError.at_byte``) with ``file: byte N (track K):``.
 
     Attributes:
         file: the file (or ``"<text>"``).
@@ -38,8 +40,29 @@ class ScoreError(ArmkitError, ValueError):
 
     def __init__(self, file: str, line: int, column: int, token: str, problem: str) -> None:
         shown = f"{token!r}" if token else "end of input"
-        super().__init__(f"{file}:{line}:{column}: {problem} (at {shown})")
+        super().__init__(f"{where(file, line, column)}: {problem} (at {shown})")
         self.file, self.line, self.column, self.token = file, line, column, token
+
+    @classmethod
+    def unreadable(cls, file: str, exc: LimitError) -> ScoreError:
+        """The file cannot be read, or is beyond a limit of ``_input_limits``."""
+        cause = exc.__context__
+        if exc.line == 0 and isinstance(cause, OSError):
+            return cls.whole(file, f"cannot read the file: {cause.strerror or cause}")
+        if exc.line == 0:
+            return cls.whole(file, exc.problem)
+        err = cls(file, exc.line, exc.column, "", exc.problem)
+        err.args = (str(exc),)
+        return err
+
+    @classmethod
+    def at_byte(cls, file: str, chunk: int, offset: int, token: str, problem: str) -> ScoreError:
+        """An error in a binary (MIDI) file: ``file: byte OFFSET (track N): problem``
+        (``line`` is the chunk, 0 = the header; ``column`` the byte offset)."""
+        err = cls(file, chunk, offset, token, problem)
+        part = f"track {chunk}" if chunk else "the header"
+        err.args = (f"{file}: byte {offset} ({part}): {problem} (at {token!r})",)
+        return err
 
     @classmethod
     def whole(cls, file: str, problem: str) -> ScoreError:
@@ -165,6 +188,10 @@ def make_score(notes: list[Note], source: str) -> Score:
     """Sort ``notes`` into a Score; ScoreError if there are none."""
     if not notes:
         raise ScoreError(source, 1, 1, "", "the score has no notes; write at least one")
+    if len(notes) > MAX_NOTES:
+        raise ScoreError.of_note(
+            source, notes[MAX_NOTES], f"more than {MAX_NOTES} notes; split the piece"
+        )
     return Score(tuple(sorted(notes, key=lambda n: (n.onset, n.pitch))), source)
 
 

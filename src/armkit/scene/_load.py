@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
-import tomllib
+import re
 from pathlib import Path
 from typing import Any
 
-from .._toml_files import resolve
+from .._input_limits import MAX_OBJECTS, position, where
+from .._toml_files import read_toml, resolve
 from . import _kinds
 from ._errors import SceneError
 from ._fields import Entry
@@ -24,15 +25,24 @@ def load_scene(name_or_path: str | Path) -> Scene:
             names the file, the field and what is allowed.
     """
     path = _resolve(name_or_path)
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except tomllib.TOMLDecodeError as exc:
-        raise SceneError(f"{path}: not valid TOML: {exc}") from None
-    except UnicodeDecodeError:
-        raise SceneError(f"{path}: not a UTF-8 text file") from None
-    except OSError as exc:
-        raise SceneError(f"{path}: cannot read: {exc.strerror}") from None
+    data, text = read_toml(path, SceneError, "scene file")
+    _count_objects(data, text, path)
     return build_scene(data, path)
+
+
+def _count_objects(data: dict[str, Any], text: str, path: Path) -> None:
+    """Refuse more than ``MAX_OBJECTS`` objects (every array of tables counted) at the
+    line of the first one too many, before any is built."""
+    count = sum(len(v) for v in data.values() if isinstance(v, list))
+    if count > MAX_OBJECTS:
+        headers = [m.start() for m in re.finditer(r"(?m)^[ \t]*\[\[", text)]
+        line, column = (
+            position(text, headers[MAX_OBJECTS]) if len(headers) > MAX_OBJECTS else (0, 0)
+        )
+        raise SceneError(
+            f"{where(str(path), line, column)}: more than {MAX_OBJECTS} objects ({count}); "
+            "a table holds fewer: split the scene or check the file"
+        )
 
 
 def _resolve(name_or_path: str | Path) -> Path:

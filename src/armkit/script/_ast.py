@@ -8,8 +8,11 @@ node keeps the line and column it came from, for messages.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
+from pathlib import Path
 from typing import Literal
 
+from .._input_limits import MAX_SCRIPT_BYTES, decode, read_limited
 from ._units import Dim
 
 
@@ -241,9 +244,20 @@ class Source:
     text: str
     first_line: int = 1
 
-    @property
+    @classmethod
+    def read(cls, path: str | Path) -> Source:
+        """The script in the file ``path``, read within armkit's input limits (its size,
+        UTF-8 or UTF-16 with a BOM, no NUL; see ``_input_limits``).
+
+        Raises:
+            LimitError: ``FILE: why`` or ``FILE:LINE:COL: why`` (an ``InputError``).
+        """
+        return cls(str(path), decode(read_limited(path, MAX_SCRIPT_BYTES, "script"), str(path)))
+
+    @cached_property
     def lines(self) -> list[str]:
-        """The lines, without their ends."""
+        """The lines, without their ends (split once: a message or a progress line
+        looks one up for every statement)."""
         return self.text.splitlines()
 
     def line(self, number: int) -> str:

@@ -13,6 +13,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import ArmkitError
+from .._input_limits import LimitError
 from ..connect import driver_names
 from ..model import ArmModel, load_model, shipped_models
 from ..scene import load_scene, shipped_scenes
@@ -158,14 +159,12 @@ def looped(statements: tuple[Statement, ...], repeat: int) -> tuple[Statement, .
 
 def check_file(path: str | Path, **options: Any) -> CheckResult:
     """``check_source`` on a file (same options)."""
-    p = Path(path)
     try:
-        text = p.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise ScriptCheckError(
-            Source(str(p), ""), [Diagnostic(Loc(1, 1), f"cannot read {p}: {exc}")]
-        ) from None
-    return check_source(Source(str(p), text), **options)
+        source = Source.read(path)
+    except LimitError as exc:
+        at = Loc(max(exc.line, 1), max(exc.column, 1))
+        raise ScriptCheckError(Source(str(path), ""), [Diagnostic(at, exc.problem)]) from None
+    return check_source(source, **options)
 
 
 def _model_from(

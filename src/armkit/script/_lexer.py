@@ -6,9 +6,12 @@ to the end of the line (outside a quoted string).
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass
 from typing import Literal
+
+from .._input_limits import MAX_NUMBER_CHARS
 
 Kind = Literal["word", "number", "string", "punct"]
 
@@ -98,7 +101,15 @@ def _word_or_number(line: str, i: int) -> Token:
         return Token("word", cell.group(0), i + 1)
     m = _NUMBER.match(line, i)
     if m is not None:
-        return Token("number", m.group(0), i + 1, float(m["num"]), m["unit"])
+        if len(m["num"]) > MAX_NUMBER_CHARS:
+            raise LexError(
+                i + 1, f"a number of more than {MAX_NUMBER_CHARS} characters; no value a script "
+                "needs has that many digits",
+            )  # fmt: skip
+        value = float(m["num"])
+        if not math.isfinite(value):
+            raise LexError(i + 1, f"{m['num']} is too large to be a number")
+        return Token("number", m.group(0), i + 1, value, m["unit"])
     w = _WORD.match(line, i)
     if w is None:  # cannot happen: every other character starts a word
         raise LexError(i + 1, f"unexpected character {line[i]!r}")

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from .._input_limits import MAX_LINE_CHARS, MAX_NESTING, MAX_STATEMENTS
 from ._ast import Call, Define, Header, Loc, Num, PoseName, Program, Repeat, Source, Statement
 from ._cursor import Cursor, Problem
 from ._diagnostics import Diagnostic
@@ -33,6 +34,7 @@ class _State:
     commands_seen: bool = False
     headers: dict[str, Loc] = field(default_factory=dict)
     broken: set[str] = field(default_factory=set)
+    statements: int = 0  # read so far (a block's statements count once)
 
     def error(self, loc: Loc, message: str) -> None:
         self.diagnostics.append(Diagnostic(loc, message))
@@ -44,6 +46,14 @@ def parse(source: Source) -> tuple[Program, list[Diagnostic]]:
     state = _State([_Block("top", Loc(source.first_line, 1), None)])
     for number, text in enumerate(source.lines, start=source.first_line):
         _line(state, number, text)
+        if state.statements > MAX_STATEMENTS:
+            state.error(
+                Loc(number, 1),
+                f"more than {MAX_STATEMENTS} statements in one script; split it into "
+                "scripts (run FILE) or use repeat and define",
+            )
+            del state.stack[1:]
+            break
     while len(state.stack) > 1:
         block = state.stack[-1]
         state.error(block.loc, f"this {block.kind} has no 'end'; add 'end' after its last line")
@@ -53,10 +63,18 @@ def parse(source: Source) -> tuple[Program, list[Diagnostic]]:
 
 
 def _line(state: _State, number: int, text: str) -> None:
+    if len(text) > MAX_LINE_CHARS:
+        state.error(
+            Loc(number, MAX_LINE_CHARS + 1),
+            f"a line longer than {MAX_LINE_CHARS} characters; break it into shorter lines",
+        )
+        return
     try:
         tokens = tokenize(text)
     except LexError as exc:
         state.error(Loc(number, exc.col), str(exc))
+        if text.split()[:1] in (["repeat"], ["define"]):  # its 'end' still closes it
+            _open(state, _Block(text.split()[0], Loc(number, 1), None))
         return
     if not tokens:
         return
@@ -80,7 +98,7 @@ def _broken(state: _State, tokens: list[Token], number: int) -> None:
     if first in ("pose", "define") and len(tokens) > 1 and tokens[1].is_name:
         state.broken.add(tokens[1].text)
     if first in ("repeat", "define"):
-        state.stack.append(_Block(first, Loc(number, 1), None))
+        _open(state, _Block(first, Loc(number, 1), None))
     if first == "repeat":
         state.commands_seen = True
 
@@ -130,7 +148,7 @@ def _block_word(state: _State, c: Cursor, t: Token) -> None:
     if t.text == "repeat":
         count = c.value("count", "a repeat count")
         c.end()
-        state.stack.append(_Block("repeat", loc, Repeat(count, (), loc)))
+        _open(state, _Block("repeat", loc, Repeat(count, (), loc)))
         state.commands_seen = True
         return
     if len(state.stack) > 1:
@@ -138,7 +156,21 @@ def _block_word(state: _State, c: Cursor, t: Token) -> None:
     name = c.name("a procedure name")
     params = _params(c)
     state.commands_seen = True
-    state.stack.append(_Block("define", loc, (name.text, params)))
+    _open(state, _Block("define", loc, (name.text, params)))
+
+
+def _open(state: _State, block: _Block) -> None:
+    """Open ``block``; one more than ``MAX_NESTING`` deep is reported once and opened
+    empty (its statements are dropped, its ``end`` still closes it)."""
+    if len(state.stack) > MAX_NESTING:
+        if len(state.stack) == MAX_NESTING + 1:
+            state.error(
+                block.loc,
+                f"blocks nested deeper than {MAX_NESTING} (repeat and define inside each "
+                "other); use define to name the inner part",
+            )
+        block = _Block(block.kind, block.loc, None)
+    state.stack.append(block)
 
 
 def _params(c: Cursor) -> tuple[str, ...]:
@@ -192,4 +224,5 @@ def _add(state: _State, stmt: Statement) -> None:
         state.headers[stmt.kind] = stmt.loc
     else:
         state.commands_seen = True
+    state.statements += 1
     state.stack[-1].body.append(stmt)

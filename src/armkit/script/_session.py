@@ -15,6 +15,7 @@ from pathlib import Path
 
 from .._errors import ArmkitError
 from .._files import write_atomic
+from .._input_limits import MAX_LINE_CHARS, LimitError
 from .._terminal import count
 from ..arm import Arm
 from ..model import ArmModel, load_model, shipped_models
@@ -89,6 +90,11 @@ class Session:
         if not self._pending:
             self.next_line = self._typed + 1
         self._typed += 1
+        if problem := _unreadable_line(line):
+            col, what = problem
+            if self._pending:
+                self._pending.append("")  # the block's lines keep the numbers they were typed on
+            return _error(f"error: <shell>:{self._typed}:{col}: {what}", more=bool(self._pending))
         words = line.split()
         if self._pending and ((words[:1] and words[0] in SHELL_WORDS) or _run_file(words)):
             return self._in_block(words)
@@ -297,11 +303,11 @@ class Session:
     def _run_file(self, name: str) -> Reply:
         path = (self.base_dir / name).expanduser()
         try:
-            text = path.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
+            source = Source.read(path)
+        except LimitError as exc:
             return _error(f"error: cannot run {path}: {_unreadable(exc)}")
         try:
-            run_source(self.arm, Source(str(path), text), scene=self.scene)
+            run_source(self.arm, source, scene=self.scene)
         except ScriptCheckError as exc:
             return _error(exc.report())
         except (ArmkitError, OSError, KeyboardInterrupt) as exc:
@@ -342,22 +348,37 @@ def _path_from(path: Path, here: Path) -> str:
         return str(path.resolve())
 
 
+def _unreadable_line(line: str) -> tuple[int, str] | None:
+    """(column, why) if a typed line cannot be read: longer than ``MAX_LINE_CHARS``, or
+    bytes that are not UTF-8 (read as lone surrogates, ``Shell`` reads so)."""
+    if len(line) > MAX_LINE_CHARS:
+        return MAX_LINE_CHARS + 1, (
+            f"a line longer than {MAX_LINE_CHARS} characters; break it into shorter lines"
+        )
+    bad = next((k for k, c in enumerate(line) if "\udc80" <= c <= "\udcff"), None)
+    if bad is not None:
+        byte = ord(line[bad]) - 0xDC00
+        return bad + 1, f"not UTF-8 text (byte {byte:02x}); type or pipe UTF-8"
+    return None
+
+
 def _run_file(words: list[str]) -> bool:
     """Whether ``words`` are the shell's ``run FILE`` (the language's run takes three)."""
     return len(words) == 2 and words[0] == "run"
 
 
-def _unreadable(exc: OSError | UnicodeDecodeError) -> str:
+def _unreadable(exc: LimitError) -> str:
     """Why a script cannot be read, in words, and what to give instead."""
-    if isinstance(exc, IsADirectoryError):
+    why = exc.__cause__ or exc.__context__
+    if isinstance(why, IsADirectoryError) or "is a directory" in exc.problem:
         return "it is a directory; give a script file (.arm) in it"
-    if isinstance(exc, FileNotFoundError):
+    if isinstance(why, FileNotFoundError):
         return "no such file; give a script file (.arm)"
-    if isinstance(exc, PermissionError):
+    if isinstance(why, PermissionError):
         return "reading it is not allowed (permission denied)"
-    if isinstance(exc, UnicodeDecodeError):
+    if exc.line:  # not UTF-8, or a NUL
         return "it is not a text file (UTF-8); give a script file (.arm)"
-    return f"it cannot be read ({(exc.strerror or type(exc).__name__).lower()})"
+    return exc.problem
 
 
 def _wrong_count(word: str, args: list[str]) -> str:

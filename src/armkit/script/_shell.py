@@ -10,6 +10,7 @@ an arm that cannot be opened)."""
 
 from __future__ import annotations
 
+import io
 import os
 import sys
 from collections.abc import Iterator
@@ -61,6 +62,8 @@ class Shell:
         """Read, check, run, until ``quit`` or end of input; the exit status (see the
         module doc: 1 if a line failed and the input is not a terminal, else 0)."""
         readline = self._readline()
+        if isinstance(self.stdin, io.TextIOWrapper):  # bytes not UTF-8: refused line by line
+            self.stdin.reconfigure(errors="surrogateescape")
         self._say(f"armkit shell on {self.session.arm.model.name}; help for the commands")
         more = False
         try:

@@ -59,6 +59,7 @@ class Walker:
         self.diagnostics: list[Diagnostic] = []
         self.steps = 0
         self.budget = CHECK_BUDGET
+        self.over_budget = False  # warned that the budget is spent
         self.broken: set[str] = set()  # procedures whose definition did not parse
         self.redefine = False  # a procedure may be defined again (the shell)
         self.first_error: Diagnostic | None = None  # the first met where it would run
@@ -260,6 +261,18 @@ class Walker:
             finally:
                 self.frames.pop()
 
+    def _over_budget(self, loc: Loc) -> None:
+        """Checking: the budget of simulated statements is spent; warn once, check no more
+        calls (each is checked as it runs)."""
+        if not self.over_budget:
+            self.over_budget = True
+            self._report(
+                loc,
+                f"checked the first {self.budget} statements only (procedures call "
+                "too many to simulate); the rest are checked as they run",
+                "warning",
+            )
+
     def _snapshot(self) -> Hashable | None:
         state = self.backend.snapshot()
         if state is None:
@@ -283,6 +296,9 @@ class Walker:
             raise Fail(
                 s.loc, f"{s.name} takes {len(proc.params)} arguments ({params}), got {len(s.args)}"
             )
+        if self.checking and self.steps > self.budget:
+            self._over_budget(s.loc)
+            return
         if sum(f.kind == "call" for f in self.frames) >= MAX_CALL_DEPTH:
             raise Fail(
                 s.loc,

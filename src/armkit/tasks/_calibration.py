@@ -9,12 +9,12 @@ File (TOML, millimetres): ``height_offset_mm = 2.0`` and
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
 from .._errors import ModelError
 from .._files import config_dir
+from .._toml_files import read_toml
 
 MAX_OFFSET_MM = 50.0
 
@@ -49,12 +49,7 @@ def load_calibration(path: str | Path) -> Calibration:
             number within +-50 mm.
     """
     p = Path(path).expanduser()
-    try:
-        data = tomllib.loads(p.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError) as exc:
-        raise CalibrationError(f"{p}: cannot read the task calibration file: {exc}") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise CalibrationError(f"{p}: not valid TOML: {exc}") from None
+    data, _text = read_toml(p, CalibrationError, "task calibration file")
     allowed = ("height_offset_mm", "perpendicular_offset_mm")
     values = []
     for key in data:

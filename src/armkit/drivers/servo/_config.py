@@ -19,13 +19,13 @@ A unit's measured tables (written by ``run_calibration``) live in
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from ..._errors import ModelError
 from ..._files import config_dir
+from ..._toml_files import read_toml
 from ...model import ArmModel
 from ._table import ServoCalibration, ideal_grip, ideal_joint
 
@@ -129,10 +129,9 @@ def _default_grip(model: ArmModel, section: dict[str, Any], channel: int) -> Ser
 def _apply_unit_file(
     path: Path, joints: tuple[ServoCalibration, ...], grip: ServoCalibration | None
 ) -> tuple[tuple[ServoCalibration, ...], ServoCalibration | None]:
-    try:
-        servos = tomllib.loads(path.read_text(encoding="utf-8")).get("servos", {})
-    except (OSError, tomllib.TOMLDecodeError) as exc:
-        raise ModelError(f"{path}: cannot read the calibration: {exc}") from None
+    servos = read_toml(path, ModelError, "calibration")[0].get("servos", {})
+    if not isinstance(servos, dict):
+        raise ModelError(f"{path}: [servos] must be tables [servos.NAME]")
     by_name = {c.name: c for c in (*joints, *([grip] if grip else []))}
     for name, entry in servos.items():
         if name not in by_name:
