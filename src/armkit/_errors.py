@@ -51,7 +51,16 @@ class ArmkitWarning(UserWarning):
 
 
 class ModelError(ArmkitError):
-    """An arm model file is missing, malformed or inconsistent."""
+    """An arm model file (or a scene file) is missing, malformed or inconsistent.
+
+    Attributes:
+        file: the file it is about, if one (None: a model made in code).
+        field: the dotted field it is about (``joints[1].limits_deg``), if one.
+    """
+
+    def __init__(self, message: str, *, file: str | None = None, field: str | None = None):
+        super().__init__(message)
+        self.file, self.field = file, field
 
 
 class UnreachableError(ArmkitError):

@@ -27,6 +27,8 @@ MAX_LINE_CHARS = 10_000  # one line of a script, the shell, TOML, G-code, a note
 MAX_NESTING = 32  # blocks in a script; tables and arrays in TOML
 MAX_SVG_DEPTH = 64  # elements inside elements in an SVG file
 MAX_NUMBER_CHARS = 40  # one number as written (digits, sign, point, exponent)
+MAX_NUMBER = 1e9  # a number in a script, in the units it is written in (and not NaN)
+MIN_NUMBER = 1e-9  # ... and one that is not 0 at least this large
 # counts
 MAX_STATEMENTS = 10_000  # statements in one script (a repeat's body counts once)
 MAX_OBJECTS = 200  # objects in one scene (cubes, boards, sheets, instruments, ...)

@@ -40,6 +40,8 @@ class Language:
         steps: the command lines run on a case file.
         companions: files put beside every case (a script's SVG, its tune).
         grammar: makes a case from the grammar instead of a seed (or None).
+        skip: mutations not made (the shell runs each line: a thousand copies of a
+            line that moves are a thousand moves, work, not a hang).
     """
 
     name: str
@@ -51,6 +53,7 @@ class Language:
     steps: Steps
     companions: dict[str, bytes] = field(default_factory=dict)
     grammar: Callable[[random.Random], bytes] | None = None
+    skip: frozenset[str] = frozenset()
 
     def case(self, i: int) -> Case:
         """Case number ``i`` (the same on every run)."""
@@ -64,7 +67,12 @@ class Language:
         else:
             seed = rng.choice(sorted(self.seeds))
             data, how = mutate(
-                rng, self.seeds[seed], list(self.seeds.values()), self.words, self.nesting
+                rng,
+                self.seeds[seed],
+                list(self.seeds.values()),
+                self.words,
+                self.nesting,
+                self.skip,
             )
             label = f"{self.name} #{i} {how} of {seed}"
         name = f"case{self.suffix}"

@@ -124,8 +124,10 @@ def mutate(
     others: Sequence[bytes],
     words: Sequence[str],
     nesting: Nest | None,
+    skip: frozenset[str] = frozenset(),
 ) -> tuple[bytes, str]:
-    """``data`` with one to four mutations; the bytes and their names."""
+    """``data`` with one to four mutations (none of those named in ``skip``); the bytes
+    and their names."""
     ops: list[tuple[str, float, Callable[[bytes], bytes]]] = [
         ("flip", 3, lambda d: flip(rng, d)),
         ("truncate", 1, lambda d: truncate(rng, d)),
@@ -141,6 +143,7 @@ def mutate(
     ]
     if nesting is not None:
         ops.append(("nest", 0.6, lambda d: nest(rng, d, nesting)))
+    ops = [op for op in ops if op[0] not in skip]
     names = []
     for _ in range(rng.choice((1, 1, 2, 3, 4))):
         name, _w, op = rng.choices(ops, weights=[w for _, w, _ in ops])[0]

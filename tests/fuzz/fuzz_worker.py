@@ -55,11 +55,12 @@ def _state(config: Path) -> dict[str, bytes]:
 
 
 def _listing(folder: Path) -> dict[str, int]:
-    """The files of the case's folder (its config folder left out) and their sizes."""
+    """The files of the case's folder and their sizes (its config folder and lock files
+    left out: a port's lock lies beside it by design, see armkit._lock)."""
     return {
         str(p.relative_to(folder)): p.stat().st_size
         for p in folder.rglob("*")
-        if p.is_file() and p.relative_to(folder).parts[0] != ".config"
+        if p.is_file() and p.relative_to(folder).parts[0] != ".config" and p.suffix != ".lock"
     }
 
 

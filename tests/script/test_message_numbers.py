@@ -19,10 +19,11 @@ LONG = re.compile(r"\d{10,}")
 @pytest.mark.parametrize(
     ("text", "shown"),
     [
-        ("turn waist by 1e308\n", "waist 1e+308 deg is outside its limits -180.00..180.00 deg"),
-        ("turn waist 1e20\n", "waist 1e+20 deg is outside its limits"),
-        ("joints 1e308 0 0 0\n", "waist 1e+308 deg is outside its limits"),
-        ("repeat 1e308\n  home\nend\n", "got 1e+308"),
+        ("turn waist by 1e9\n", "waist 1e+09 deg is outside its limits -180.00..180.00 deg"),
+        ("turn waist 1e9\n", "waist 1e+09 deg is outside its limits"),
+        ("joints 1e9 0 0 0\n", "waist 1e+09 deg is outside its limits"),
+        ("repeat 1e9\n  home\nend\n", "got 1e+09"),
+        ("turn waist by 1e308\n", "1e308 is larger than 1e+09"),  # as written: MAX_NUMBER
     ],
 )
 def test_check_shows_huge_numbers_in_three_digits(text: str, shown: str) -> None:
@@ -35,8 +36,8 @@ def test_the_shell_shows_them_so_too(tmp_path: Path) -> None:
     from script_arms import counting_arm
 
     a, driver = counting_arm()
-    reply = Session(a, base_dir=tmp_path).handle("turn waist by 1e308")
-    assert reply.text.startswith("<shell>:1:1: error: waist 1e+308 deg is outside its limits")
+    reply = Session(a, base_dir=tmp_path).handle("turn waist by 1e9")
+    assert reply.text.startswith("<shell>:1:1: error: waist 1e+09 deg is outside its limits")
     assert not LONG.search(reply.text) and reply.failed and driver.sent == 0
     a.close()
 

@@ -27,7 +27,8 @@ class Checker:
     def fail(self, where: str, message: str) -> ModelError:
         """The error for ``where`` (a dotted field name)."""
         source = f"{self.path}: " if self.path is not None else ""
-        return ModelError(f"{source}field '{where}': {message}")
+        file = None if self.path is None else str(self.path)
+        return ModelError(f"{source}field '{where}': {message}", file=file, field=where)
 
     def table(
         self, data: Any, where: str, schema: dict[str, Any], required: tuple[str, ...]

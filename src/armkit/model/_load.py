@@ -11,6 +11,7 @@ from numpy.typing import NDArray
 
 from .._errors import ModelError
 from .._toml_files import read_toml, resolve, shipped
+from .._toml_where import located
 from ._check import MAX_LENGTH_MM
 from ._check import NUM as _NUM
 from ._check import Checker as _Checker
@@ -83,8 +84,11 @@ def load_model(name_or_path: str | Path) -> ArmModel:
     if is_urdf(name_or_path):  # a URDF file: FILE.urdf or FILE.urdf#TIP_LINK
         return load_urdf(name_or_path)
     path = _resolve(name_or_path)
-    data, _text = read_toml(path, ModelError, "model file")
-    return _build(data, path)
+    data, text = read_toml(path, ModelError, "model file")
+    try:
+        return _build(data, path)
+    except ModelError as exc:
+        raise located(exc, text) from None
 
 
 def _resolve(name_or_path: str | Path) -> Path:

@@ -31,7 +31,9 @@ class Entry:
     def fail(self, key: str, message: str) -> SceneError:
         """A SceneError naming the file and ``where.key``."""
         field = f"{self.where}.{key}".strip(".")
-        return SceneError(f"{self.path}: field '{field}': {message}")
+        return SceneError(
+            f"{self.path}: field '{field}': {message}", file=str(self.path), field=field
+        )
 
     def has(self, key: str) -> bool:
         """True if the key is given."""

@@ -8,6 +8,7 @@ from typing import Any
 
 from .._input_limits import MAX_OBJECTS, position, where
 from .._toml_files import read_toml, resolve
+from .._toml_where import located
 from . import _kinds
 from ._errors import SceneError
 from ._fields import Entry
@@ -27,7 +28,10 @@ def load_scene(name_or_path: str | Path) -> Scene:
     path = _resolve(name_or_path)
     data, text = read_toml(path, SceneError, "scene file")
     _count_objects(data, text, path)
-    return build_scene(data, path)
+    try:
+        return build_scene(data, path)
+    except SceneError as exc:
+        raise located(exc, text) from None
 
 
 def _count_objects(data: dict[str, Any], text: str, path: Path) -> None:

@@ -11,7 +11,7 @@ import re
 from dataclasses import dataclass
 from typing import Literal
 
-from .._input_limits import MAX_NUMBER_CHARS
+from .._input_limits import MAX_NUMBER, MAX_NUMBER_CHARS, MIN_NUMBER
 
 Kind = Literal["word", "number", "string", "punct"]
 
@@ -107,8 +107,12 @@ def _word_or_number(line: str, i: int) -> Token:
                 "needs has that many digits",
             )  # fmt: skip
         value = float(m["num"])
-        if not math.isfinite(value):
-            raise LexError(i + 1, f"{m['num']} is too large to be a number")
+        if not (math.isfinite(value) and abs(value) <= MAX_NUMBER):
+            raise LexError(
+                i + 1, f"{m['num']} is larger than {MAX_NUMBER:g}; no value a script needs is"
+            )
+        if 0 < abs(value) < MIN_NUMBER:
+            raise LexError(i + 1, f"{m['num']} is smaller than {MIN_NUMBER:g} (and not 0)")
         return Token("number", m.group(0), i + 1, value, m["unit"])
     w = _WORD.match(line, i)
     if w is None:  # cannot happen: every other character starts a word
