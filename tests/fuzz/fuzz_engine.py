@@ -9,8 +9,9 @@ traceback or one of Python's own error words reached stderr, or the exit status
 was not 0, 1 or 2; it moved if a refused step changed the simulated arm's kept
 state or left a file behind.
 
-Budgets: ``ARMKIT_FUZZ_BUDGET`` cases per language (default ``SMALL``, what ``make
-test`` runs); ``.ci/run`` and ``benchmarks/fuzz.py`` run ``LARGE``. The time bound
+Budgets (``budget()``): ``SMALL`` cases per language in ``make test``, ``LARGE`` under
+``ARMKIT_PROFILE=ci`` (``.ci/run``) and in ``benchmarks/fuzz.py``; ``ARMKIT_FUZZ_BUDGET``
+sets another. The time bound
 is a hang detector, never a performance assertion: a step that uses more than
 ``ARMKIT_FUZZ_HANG_S`` (default ``HANG_S``) seconds of processor time is stopped in
 the worker (so a busy machine does not make a hang); a case that does not answer
@@ -45,8 +46,12 @@ When = Literal["always", "refused", "accepted", "short"]  # short: accepted, and
 
 
 def budget() -> int:
-    """Cases per language: ``$ARMKIT_FUZZ_BUDGET`` or ``SMALL``."""
-    return int(os.environ.get("ARMKIT_FUZZ_BUDGET") or SMALL)
+    """Cases per language: ``$ARMKIT_FUZZ_BUDGET`` if set, else ``LARGE`` under
+    ``ARMKIT_PROFILE=ci`` (.ci/run; the suite's profiles, tests/budget.py) and ``SMALL``
+    otherwise (``make test``)."""
+    if os.environ.get("ARMKIT_FUZZ_BUDGET"):
+        return int(os.environ["ARMKIT_FUZZ_BUDGET"])
+    return LARGE if os.environ.get("ARMKIT_PROFILE") == "ci" else SMALL
 
 
 def hang_s() -> float:
