@@ -152,17 +152,17 @@ class SimSSC32(PulseOutputs):
         self._answer += b"+" if self.busy(now) else b"."
 
     def _query_pulses(self, tokens: Tokens, now: float) -> None:
-        channels = [int(arg) for kind, arg in tokens if kind == "QP" and arg]
-        if len(channels) != len(tokens) or any(ch >= CHANNELS for ch in channels):
+        channels = [_whole(arg) for kind, arg in tokens if kind == "QP"]
+        if len(channels) != len(tokens) or not all(0 <= ch < CHANNELS for ch in channels):
             self.errors.append(f"bad pulse query: {tokens}")
             return
         self._answer += bytes(round(self.pulse(ch, now) / 10) for ch in channels)
 
     def _stop(self, tokens: Tokens, now: float) -> None:
-        if len(tokens) != 1 or not tokens[0][1] or int(tokens[0][1]) >= CHANNELS:
+        if len(tokens) != 1 or not 0 <= _whole(tokens[0][1]) < CHANNELS:
             self.errors.append(f"bad stop: {tokens}")
             return
-        self.servos[int(tokens[0][1])].hold(now)
+        self.servos[_whole(tokens[0][1])].hold(now)
 
     def _query_analog(self, tokens: Tokens, now: float) -> None:
         """``VA``..``VH``: one byte, the volts x 256/5 (SSC-32U user guide, "Analog
@@ -176,14 +176,14 @@ class SimSSC32(PulseOutputs):
     def _register(self, tokens: Tokens, now: float) -> None:
         """``R<r>``: the register's value in ASCII and CR; ``R<r>=<n>``: set it (SSC-32U
         user guide, "Register Read/Write", r = 0..255)."""
-        number = tokens[0][1]
-        if not number or int(number) >= REGISTERS or not number.lstrip("-").isdigit():
+        number = _whole(tokens[0][1])
+        if not 0 <= number < REGISTERS:
             self.errors.append(f"bad register: {tokens}")
             return
         if len(tokens) == 1:
-            self._answer += f"{self.registers[int(number)]}\r".encode("ascii")
-        elif tokens[1][0] == "=" and tokens[1][1].lstrip("-").isdigit():
-            self.registers[int(number)] = int(tokens[1][1])
+            self._answer += f"{self.registers[number]}\r".encode("ascii")
+        elif tokens[1][0] == "=" and tokens[1][1].lstrip("-").isdigit() and len(tokens[1][1]) < 12:
+            self.registers[number] = int(tokens[1][1])
         else:
             self.errors.append(f"bad register write: {tokens}")
 
@@ -209,6 +209,12 @@ class SimSSC32(PulseOutputs):
                 self._latched[name] = self.inputs[name]
             reply += "1" if level else "0"
         self._answer += reply.encode("ascii")
+
+
+def _whole(text: str) -> int:
+    """The number ``text`` writes in plain digits (a channel, a register), else -1: a
+    sign, no digits or a run too long to be either is no such number."""
+    return int(text) if text.isascii() and text.isdigit() and len(text) < 12 else -1
 
 
 def _tokenize(text: str) -> Tokens:

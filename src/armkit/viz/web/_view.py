@@ -33,6 +33,7 @@ from .._scene_shapes import scene_primitives
 from .._state import ObjectPose, Snapshot, StateSource
 from .._target import TargetCheck, check_target
 from ._render import Renderer
+from ._unreadable import quiet_unreadable
 
 F64 = NDArray[np.float64]
 OK_COLOUR = (30, 180, 60)
@@ -87,6 +88,7 @@ class View:
         self.rate_hz = rate_hz
         self.frames = frames
         self.server = _serve(host, port)
+        quiet_unreadable()  # a client's garbage is one line, not a traceback
         self.host = host
         self.renderer = Renderer(self.server.scene)
         self._trail: list[F64] = []
