@@ -26,7 +26,8 @@ from import_reader import SRC, imported, module_name
 FLOORS: tuple[tuple[str, ...], ...] = (
     ("armkit._errors", "armkit._clock", "armkit._closing", "armkit._progress",
      "armkit._terminal", "armkit._toml_files", "armkit._inputs", "armkit._files",
-     "armkit._polyline", "armkit._lock", "armkit._primitives"),  # the shared floor
+     "armkit._polyline", "armkit._lock", "armkit._primitives", "armkit._input_limits",
+     "armkit._toml_shape", "armkit._toml_where"),  # the shared floor
     ("armkit.model",),
     ("armkit.kinematics", "armkit.devices"),
     ("armkit.drivers", "armkit.scene", "armkit.sensing", "armkit.sim", "armkit.interchange"),
