@@ -12,15 +12,17 @@ $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
-$(STAMP): $(BIN)/python pyproject.toml  # the demo's own environment: its hints need plot and web
+KERNEL := setup.py src/armkit/kinematics/_numeric/_lmc.c  # compiled by pip install -e
+
+$(STAMP): $(BIN)/python pyproject.toml $(KERNEL)  # the demo's own environment: its hints need plot and web
 	$(BIN)/python -m pip install --quiet -e ".[plot,web]"
 	touch $(STAMP)
 
-$(DEVSTAMP): $(BIN)/python pyproject.toml
+$(DEVSTAMP): $(BIN)/python pyproject.toml $(KERNEL)
 	$(BIN)/python -m pip install --quiet -e ".[dev]"
 	touch $(DEVSTAMP) $(STAMP)
 
-$(DOCSTAMP): $(BIN)/python pyproject.toml
+$(DOCSTAMP): $(BIN)/python pyproject.toml $(KERNEL)
 	$(BIN)/python -m pip install --quiet -e ".[docs]"
 	touch $(DOCSTAMP) $(STAMP)
 
@@ -56,3 +58,4 @@ bench: $(DEVSTAMP)
 
 clean:
 	rm -rf $(VENV) site build *.egg-info src/*.egg-info .pytest_cache .mypy_cache .ruff_cache
+	rm -f src/armkit/kinematics/_numeric/*.so

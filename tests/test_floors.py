@@ -44,7 +44,12 @@ def _imports(path: Path) -> set[str]:
     return {m for _, m in imported(path) if m == "armkit" or m.startswith("armkit.")}
 
 
-PATHS = {module_name(p): p for p in sorted((SRC / "armkit").rglob("*.py"))}
+# modules: the .py files, and the compiled ones by their .pyi stubs (kinematics/_numeric/_lmc)
+PATHS = {
+    module_name(p): p
+    for p in sorted((SRC / "armkit").rglob("*.py*"))
+    if p.suffix == ".py" or (p.suffix == ".pyi" and not p.with_suffix(".py").exists())
+}
 MODULES = {m: _imports(p) for m, p in PATHS.items()}
 
 

@@ -6,16 +6,16 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
+import lm_reference as _lm
 import numpy as np
 import pytest
 from numeric_cases import ARMS, TOL_ANG, TOL_POS, joint_vectors, masks_for, target_for
 
 from armkit.kinematics import fk, jacobian
 from armkit.kinematics._chain import chain_of
-from armkit.kinematics._numeric import _lm
 from armkit.kinematics._numeric._sampling import clamp
-from armkit.kinematics._numeric._turn import best_turn, turn_first_joint
-from armkit.kinematics._residual import Task, costs, residual
+from armkit.kinematics._numeric._turn import best_turn
+from armkit.kinematics._residual import Task, residual
 from armkit.model import load_model
 
 
@@ -79,31 +79,6 @@ def test_facing_away_reaches_targets_behind_the_al5d_without_restarts() -> None:
     prob = _problem(model, task_of(model, target))
     _, res, _ = _lm.lm_run(prob, model.home.tolist())
     assert res.position_error <= TOL_POS
-
-
-@pytest.mark.parametrize("arm", ARMS)
-def test_batch_turn_agrees_with_the_scalar_turn(arm: str) -> None:
-    model = load_model(arm)
-    qs = joint_vectors(model, 60, seed=5)
-    q, qt = qs[:30], qs[30:]
-    for mask in masks_for(model):
-        targets = [target_for(model, t, mask) for t in qt]
-        P = np.array([t.position for t in targets])
-        pitch = np.array([t.pitch for t in targets]) if mask == "position+pitch" else None
-        R = np.array([t.orientation for t in targets]) if mask == "pose" else None
-        R9 = None if R is None else tuple(R.reshape(len(R), 9).T.copy())
-        task = Task(tuple(P.T.copy()), pitch, R9, chain_of(model).weight)
-        turned = turn_first_joint(chain_of(model), task, q)
-        for i, target in enumerate(targets):
-            prob = _problem(model, task_of(model, target))
-            st = prob.state(q[i].tolist())
-            res = residual(prob.task, st, jac=False)
-            expect, _, _ = _lm._turn_first_joint(prob, q[i].tolist(), st, res)
-            np.testing.assert_allclose(turned[i], expect, atol=1e-9)
-        cost = costs(chain_of(model).lanes, task, turned)
-        for i, target in enumerate(targets):  # the lanes' costs are the scalar costs
-            one = residual(task_of(model, target), chain_of(model).state(turned[i].tolist()))
-            assert cost[i] == pytest.approx(one.cost, rel=1e-9, abs=1e-15)
 
 
 def test_scalar_chain_with_a_tool_that_is_not_square() -> None:

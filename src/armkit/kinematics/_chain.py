@@ -35,6 +35,7 @@ from ._family import (
     wrist_range,
 )
 from ._near import Near, near_of
+from ._packed import pack_chain
 from ._pose import pitch_scalar
 from ._state import Lanes, Pose, State, compile_state
 from ._steps import Fixed, Step, dense_frames, frames_of, steps_of
@@ -81,6 +82,7 @@ class Chain:
             closed form (``_wrist``), else None.
         near: an arm of the family up to rounding, with a last roll carrying the tool
             point beside its axis (``_near``; solved by ``_near_ik``), else None.
+        packed: the chain as the compiled LM kernel reads it (``_packed``).
     """
 
     name: str
@@ -113,6 +115,7 @@ class Chain:
     shift: tuple[float, float] | None
     wrist: WristFamily | None
     wrist_solve: WristSolver | None
+    packed: bytes
     near: Near | None = None
 
     def based(self, x: float, y: float, pitch: float | None) -> tuple[float, float, float | None]:
@@ -222,6 +225,7 @@ def compile_chain(model: ArmModel) -> Chain:
         shift=shift if fam is not None and shift != (0.0, 0.0) else None,
         wrist=wf if isinstance(wf, WristFamily) else None,
         wrist_solve=wrist_solver(wf, lower, upper) if isinstance(wf, WristFamily) else None,
+        packed=pack_chain(steps, tool, lower, upper, reach, 0.5 * reach),
         near=near,
     )
 

@@ -20,10 +20,9 @@ from typing import Any, Generic
 import numpy as np
 from numpy.typing import NDArray
 
-from ._forward import chunks
 from ._lanes import FLOATS, LANES, Ops
 from ._pose import pitch_lanes, pitch_scalar
-from ._state import ChainState, Lanes, N, Vec3
+from ._state import ChainState, N, Vec3
 
 F64 = NDArray[np.float64]
 
@@ -93,14 +92,6 @@ def residual(task: Task[N], st: ChainState[N], jac: bool = True) -> Residual[N]:
         ang2 = r0 * r0 + r1 * r1 + r2 * r2
         return Residual(e, cols, ops.sqrt(pos2), ops.sqrt(ang2), pos2 + w * w * ang2)
     return Residual([e0, e1, e2], cols, ops.sqrt(pos2), 0.0 * pos2, pos2)
-
-
-def costs(lanes: Lanes, task: Task[F64], q: F64) -> F64:
-    """|e|^2 of joint vectors q (k, dof) [rad] for the k targets of ``task``, shape (k,)."""
-    out = np.empty(len(q))
-    for at in chunks(len(q)):
-        out[at] = residual(task.take(at), lanes(list(q[at].T)), jac=False).cost
-    return out
 
 
 def task_jacobian(task: Task[N], st: ChainState[N]) -> list[tuple[N, ...]]:

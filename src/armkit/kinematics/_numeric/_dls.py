@@ -1,11 +1,10 @@
-"""The damped least-squares step dq = argmin |J dq - e|^2 + lam |dq|^2, for one target
-in plain floats (``dls_step``) or for k targets at once in numpy (``damped_steps``).
+"""The damped least-squares step dq = argmin |J dq - e|^2 + lam |dq|^2 for one target in
+plain floats: the Jacobian-iteration baseline's step, and the LM reference's
+(tests/numeric/lm_reference.py; production LM runs compiled, ``_lmc.c``).
 
-Both solve in the smaller of the two spaces (m x m with J J^T, or n x n with
-J^T J). The batch form factors by ``cholesky_solve``, written over lanes (each
-entry an array of shape (k,), one lane per target). On floats that loop costs
-about 11 us for 4 task rows and 20 us for 6, where unrolled code costs 3 us and
-``np.linalg.solve`` 10 us (the PUMA's LM per call 40-70 % slower through it), so
+It solves in the smaller of the two spaces (m x m with J J^T, or n x n with
+J^T J). A Cholesky loop on floats costs about 11 us for 4 task rows and 20 us
+for 6, where unrolled code costs 3 us and ``np.linalg.solve`` 10 us, so
 ``dls_step`` has three variants (3 task rows by the adjugate, 4 rows unrolled,
 the rest by numpy); tests pin every one to the definition. Joints marked frozen
 (at a limit, pushing outwards) get no motion.
@@ -14,8 +13,6 @@ the rest by numpy); tests pin every one to the definition. Joints marked frozen
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
-from operator import mul
 from typing import Any
 
 import numpy as np
@@ -66,48 +63,6 @@ def advance(
         t = v + k * d
         out.append(a if t < a else (b if t > b else t))
     return out
-
-
-def damped_steps(J: F64, e: F64, lam: F64, free: NDArray[np.bool_] | None = None) -> F64:
-    """Damped least-squares steps dq [rad], shape (k, dof), for J (k, m, dof), e (k, m).
-
-    Joints where ``free`` (k, dof) is False get no motion. The small systems are
-    formed and factored entry by entry, each entry a contiguous array over the k
-    targets: far fewer, cheaper numpy calls than batched matmul and
-    ``np.linalg.solve`` on thousands of 4 x 4 matrices.
-    """
-    if free is not None:
-        J = J * free[:, None, :]
-    Jc = np.ascontiguousarray(J.transpose(1, 2, 0))  # (m, dof, k)
-    ec = np.ascontiguousarray(e.T)  # (m, k)
-    if Jc.shape[0] <= Jc.shape[1]:  # dq = J^T (J J^T + lam I)^-1 e
-        tri = [[(a * b).sum(axis=0) for b in Jc[: r + 1]] for r, a in enumerate(Jc)]
-        y = np.stack(cholesky_solve(tri, list(ec), lam))
-        return np.asarray((Jc * y[:, None, :]).sum(axis=0).T, dtype=np.float64)
-    Jn = Jc.transpose(1, 0, 2)  # (dof, m, k): dq = (J^T J + lam I)^-1 J^T e
-    tri = [[(a * b).sum(axis=0) for b in Jn[: r + 1]] for r, a in enumerate(Jn)]
-    rhs = [(c * ec).sum(axis=0) for c in Jn]
-    return np.asarray(np.stack(cholesky_solve(tri, rhs, lam)).T, dtype=np.float64)
-
-
-def cholesky_solve(tri: list[list[Lane]], b: Sequence[Lane], lam: Lane) -> list[Lane]:
-    """x with (A + lam I) x = b in every lane, by Cholesky: A symmetric positive
-    semi-definite given by its lower triangle ``tri[r][c]`` (c <= r), lam > 0."""
-    L: list[list[Lane]] = []  # rows of the factor, the diagonal last in each
-    for i, tri_row in enumerate(tri):
-        row: list[Lane] = []
-        for j in range(i):
-            row.append((tri_row[j] - sum(map(mul, row, L[j]))) / L[j][j])
-        s = tri_row[i] + lam - sum(map(mul, row, row))
-        row.append((abs(s) + 1e-300) ** 0.5)
-        L.append(row)
-    y: list[Lane] = []
-    for row, bi in zip(L, b, strict=True):  # L y = b
-        y.append((bi - sum(map(mul, row, y))) / row[-1])
-    for i in reversed(range(len(L))):  # L^T x = y, from the last row up, x over y
-        xi = y[i] = y[i] / L[i][i]
-        y[:i] = [v - lv * xi for v, lv in zip(y[:i], L[i], strict=False)]
-    return y
 
 
 def _step3(cols: list[tuple[float, ...]], e: list[float], lam: float) -> list[float]:

@@ -1,67 +1,52 @@
-"""Levenberg-Marquardt (damped least squares) IK with joint limits in the step.
+"""Levenberg-Marquardt (damped least squares) IK with joint limits in the step, run by
+the compiled kernel ``_lmc`` (``_lmc.c``): one target, or N targets in one call.
 
-Each step solves (J J^T + lam I) y = e, dq = J^T y for the task's masked,
-weighted Jacobian; joints sitting at a limit and pushed outwards are frozen
-and the step recomputed without them (an active-set projection), then the
-new q is clamped into the box. lam = mu |e|^2 (Sugihara's choice) with mu
-adapted Marquardt-style: accepted steps shrink it, rejected ones grow it.
-Every run starts by turning the first joint alone to its exact best angle
-(``_turn_first_joint``); a run that stops improving restarts from a seeded
-random q inside the limits. Plain floats on the chain's scalar fast path; the
-batch form (``_lm_batch``) runs the same method on arrays.
+The method: each step solves (J J^T + lam I) y = e, dq = J^T y for the task's masked,
+weighted Jacobian (or the n x n form when fewer joints than task rows); joints sitting
+at a limit and pushed outwards are frozen and the step recomputed without them, then
+the new q is clamped into the box. lam = mu |e|^2 (Sugihara's choice), mu adapted
+Marquardt-style. Every run starts by turning the first joint alone to its exact best
+angle (on even restarts stopping at its limit where the best angle is outside them);
+a run that stops improving restarts from a seeded random q inside the limits
+(splitmix64 from ``rng_seed``: the same seed, the same answer, and row i of a batch is
+the single call on target i). Why compiled: each iteration of this method in Python
+costs 20-40 us of interpreter time for under 1 us of arithmetic, 5-10x Robotics
+Toolbox's C++ per call. tests/numeric/lm_reference.py is the same method in Python;
+tests pin the kernel to it.
 """
 
 from __future__ import annotations
 
-import math
-from collections.abc import Callable
+import struct
 from dataclasses import dataclass
-from operator import ge, le
 
+import numpy as np
+from numpy.typing import NDArray
+
+from ..._errors import ArmkitError
 from .._chain import Chain
-from .._residual import Residual, Task, residual, task_jacobian
-from .._state import ChainState, State
-from ._dls import advance, dls_step
-from ._outcome import Attempt, beyond_reach, within
-from ._sampling import clamp, joint_sampler
-from ._turn import best_turn
+from .._residual import Residual, Task
+from ._outcome import Attempt
+
+try:
+    from ._lmc import solve_many, solve_one
+except ImportError:  # a source tree whose extension was not built: say so when LM is used
+    KERNEL_MISSING = True
+else:
+    KERNEL_MISSING = False
+
+F64 = NDArray[np.float64]
+_TARGET = struct.Struct("13d")  # p (3) [m], pitch [rad], R (9, row-major)
+_NO_R = (0.0,) * 9
+MISSING = (
+    "armkit's compiled LM solver (kinematics/_numeric/_lmc.c) is not built in this "
+    "installation; run `pip install -e .` (or `make lint`) in the armkit folder to build it"
+)
 
 
-@dataclass(frozen=True, slots=True)
-class LMSettings:
-    """Budgets of the LM solver.
-
-    Attributes:
-        run_iterations: iterations per run before it counts as stalled.
-        stall_iterations: iterations without a 5 % improvement that end a run.
-        max_restarts: restarts from random seeds after the first run.
-        max_step: largest joint change per step [rad].
-        mu: initial damping factor, lam = mu |e|^2.
-        mu_down, mu_up: factors on mu after an accepted / a rejected step.
-    """
-
-    run_iterations: int = 20
-    stall_iterations: int = 4
-    max_restarts: int = 150
-    max_step: float = 1.0
-    mu: float = 0.1
-    mu_down: float = 0.1
-    mu_up: float = 8.0
-
-
-DEFAULT_SETTINGS = LMSettings()
-CANDIDATES = 8  # random joint vectors drawn per restart; the best one starts the run
-
-
-@dataclass(slots=True)
-class _Problem:
-    state: State
-    task: Task[float]
-    lower: tuple[float, ...]
-    upper: tuple[float, ...]
-    tol_pos: float
-    tol_ang: float
-    settings: LMSettings
+def mode_of(pitch: object, R: object) -> int:
+    """The kernel's task mode: 0 position, 1 position + pitch, 2 pose."""
+    return 1 if pitch is not None else (2 if R is not None else 0)
 
 
 def solve_lm(
@@ -73,110 +58,45 @@ def solve_lm(
     Returns:
         The converged ``Attempt``, or the best one found when the budget ran out.
     """
-    settings = DEFAULT_SETTINGS
-    lower, upper = chain.lower, chain.upper
-    prob = _Problem(chain.state, task, lower, upper, tol_pos, tol_ang, settings)
-    q, res, total = lm_run(prob, clamp(q_seed, lower, upper))
-    if within(res, tol_pos, tol_ang):
-        return Attempt(q, res, total, 0, True)
-    best = Attempt(q, res, total, 0, False)
-    sample = joint_sampler(chain, rng_seed)
-    restarts = settings.max_restarts if not beyond_reach(chain, task) else 0
-    for k in range(1, restarts + 1):
-        q, res, its = lm_run(prob, _restart_point(prob, sample, k))
-        total += its
-        done = within(res, tol_pos, tol_ang)
-        if done or res.cost < best.residual.cost:
-            best = Attempt(q, res, total, k, done)
-        if done:
-            break
-    best.iterations = total
-    return best
+    if KERNEL_MISSING:
+        raise ArmkitError(MISSING)
+    p, pitch, R = task.p, task.pitch, task.R
+    target = _TARGET.pack(*p, 0.0 if pitch is None else pitch, *(_NO_R if R is None else R))
+    q, ok, its, restarts, pos, ang, cost = solve_one(
+        chain.packed, mode_of(pitch, R), target, q_seed, tol_pos, tol_ang, rng_seed
+    )
+    return Attempt(list(q), Residual([], None, pos, ang, cost), its, restarts, bool(ok))
 
 
-def _restart_point(prob: _Problem, sample: Callable[[], list[float]], k: int) -> list[float]:
-    """Where restart k begins: odd k, the lowest-cost of CANDIDATES random joint
-    vectors (finds the right neighbourhood fast); even k, one uniform sample
-    (reaches basins that look bad from afar, such as corners of the limits)."""
-    best, cost = sample(), math.inf
-    if k % 2 == 0:
-        return best
-    for _ in range(CANDIDATES):
-        q = sample()
-        c = residual(prob.task, prob.state(q), jac=False).cost
-        if c < cost:
-            best, cost = q, c
-    return best
+@dataclass(frozen=True)
+class BatchOutcome:
+    """q [rad] (N, dof), converged (N,), restarts (N,), and far (N,): True where the
+    target is beyond the chain's reach."""
+
+    q: F64
+    converged: NDArray[np.bool_]
+    restarts: NDArray[np.int64]
+    far: NDArray[np.bool_]
 
 
-def lm_run(prob: _Problem, q: list[float]) -> tuple[list[float], Residual[float], int]:
-    """One LM run from q [rad] (first joint turned, see ``_turn_first_joint``):
-    (final q, its residual, iterations)."""
-    task, state, settings = prob.task, prob.state, prob.settings
-    st = state(q)
-    res = residual(task, st, jac=False)
-    if not within(res, prob.tol_pos, prob.tol_ang):
-        q, st, res = _turn_first_joint(prob, q, st, res)
-    mu, best, since = settings.mu, res.cost, 0
-    cols: list[tuple[float, ...]] | None = None  # the Jacobian at q, once needed
-    for it in range(settings.run_iterations):
-        if res.position_error <= prob.tol_pos and res.angle_error <= prob.tol_ang:
-            return q, res, it
-        if cols is None:
-            cols = task_jacobian(task, st)
-        trial = _step(prob, q, cols, res.e, mu * res.cost + 1e-12)
-        trial_st = state(trial)
-        new = residual(task, trial_st, jac=False)
-        if new.cost < res.cost:
-            q, st, res, cols = trial, trial_st, new, None
-            mu = max(mu * settings.mu_down, 1e-4)
-        else:
-            mu = mu * settings.mu_up
-        if res.cost < 0.95 * best:
-            best, since = res.cost, 0
-        else:
-            since += 1
-            if since >= settings.stall_iterations:
-                return q, res, it + 1
-    return q, res, settings.run_iterations
-
-
-def _turn_first_joint(
-    prob: _Problem, q: list[float], st: ChainState[float], res: Residual[float]
-) -> tuple[list[float], ChainState[float], Residual[float]]:
-    """q with joint 0 alone turned to its best angle, if that lowers the cost.
-
-    The turn is exact at any angle, where a linearised step is not: a target
-    far round the base costs LM several short steps, and this one turn saves
-    them (median iterations 7 -> 4 on the OpenManipulator-X from home). Where
-    the best angle is outside the joint's limits, the joint faces the opposite
-    way instead (if that is inside them): the arm must then reach back over
-    its base, and LM finds that from there far more often than from the
-    limit (first-run failures 14 % -> 3 % on the AL5D).
-    """
-    lo, hi = prob.lower[0], prob.upper[0]
-    turned = [q[0] + best_turn(prob.task, st, 0), *q[1:]]
-    flip = not lo <= turned[0] <= hi
-    if flip:
-        turned[0] += -math.pi if turned[0] > hi else math.pi
-        if not lo <= turned[0] <= hi:
-            return q, st, res
-    turned_st = prob.state(turned)
-    new = residual(prob.task, turned_st, jac=False)
-    return (turned, turned_st, new) if flip or new.cost < res.cost else (q, st, res)
-
-
-def _step(
-    prob: _Problem, q: list[float], cols: list[tuple[float, ...]], e: list[float], lam: float
-) -> list[float]:
-    """q + the damped step [rad], with outward-pushing joints at a limit frozen, clamped."""
-    lo, hi = prob.lower, prob.upper
-    dq = dls_step(cols, e, lam, None)
-    if any(map(le, q, lo)) or any(map(ge, q, hi)):  # some joint at a limit
-        free = [
-            not ((v <= a and d < 0.0) or (v >= b and d > 0.0))
-            for v, d, a, b in zip(q, dq, lo, hi, strict=True)
-        ]
-        if not all(free):
-            dq = dls_step(cols, e, lam, free)
-    return advance(q, dq, prob.settings.max_step, lo, hi)
+def solve_lm_batch(
+    chain: Chain, P: F64, pitch: F64 | None, R: F64 | None, seeds: F64, tol_pos: float,
+    tol_ang: float, rng_seed: int,
+) -> BatchOutcome:  # fmt: skip
+    """LM on N targets: positions P (N, 3) [m], pitches (N,) [rad] or orientations
+    (N, 3, 3) or neither, from seeds (N, dof) [rad]; each target as ``solve_lm``'s."""
+    if KERNEL_MISSING:
+        raise ArmkitError(MISSING)
+    n = len(P)
+    targets = np.zeros((n, 13))
+    targets[:, :3] = P
+    if pitch is not None:
+        targets[:, 3] = pitch
+    if R is not None:
+        targets[:, 4:] = R.reshape(n, 9)
+    q = np.empty((n, chain.dof))
+    info = np.empty((n, 5))
+    seeds = np.ascontiguousarray(seeds, dtype=np.float64)
+    solve_many(chain.packed, mode_of(pitch, R), targets, seeds, q, info, tol_pos, tol_ang, rng_seed)
+    far = np.einsum("ij,ij->i", P, P) > chain.reach * chain.reach
+    return BatchOutcome(q, info[:, 0] > 0.0, info[:, 2].astype(np.int64), far)

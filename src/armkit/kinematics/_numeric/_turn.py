@@ -7,7 +7,7 @@ are (tool point, target point) about the joint, plus the tool's approach axis
 and the target approach (pitch), or all three tool axes (pose), weighted by
 w^2 [m^2/rad^2]. Exact for any angle: no linearisation. ``turn_angle`` is
 written once over lanes: vectors are 3-tuples of floats (one target,
-``best_turn``) or of arrays of shape (k,) (k targets, ``turn_first_joint``).
+``best_turn``) or of arrays of shape (k,) (k targets).
 """
 
 from __future__ import annotations
@@ -18,10 +18,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from .._chain import Chain
-from .._forward import chunks
 from .._lanes import Ops
-from .._residual import Task, costs
+from .._residual import Task
 from .._state import ChainState, N
 
 F64 = NDArray[np.float64]
@@ -35,21 +33,6 @@ def best_turn(task: Task[N], st: ChainState[N], i: int) -> N:
     pairs = axis_pairs(st.R, goal_axes, task.pitch, task.p, ops)
     turn: N = turn_angle(st.jw[i], st.origins[i], st.p, task.p, task.weight, pairs, ops.atan2)
     return turn
-
-
-def turn_first_joint(chain: Chain, task: Task[F64], q: F64) -> F64:
-    """q (k, dof) [rad] with joint 0 turned to its best angle where that helps (as
-    ``_lm._turn_first_joint``: where the best angle is outside the limits, the joint faces
-    the opposite way instead, if that is inside them)."""
-    lo, hi = chain.lower[0], chain.upper[0]
-    turned = q.copy()
-    for at in chunks(len(q)):
-        turned[at, 0] += best_turn(task.take(at), chain.lanes(list(q[at].T)), 0)
-    flip = (turned[:, 0] < lo) | (turned[:, 0] > hi)
-    turned[flip, 0] += np.where(turned[flip, 0] > hi, -np.pi, np.pi)
-    inside = (turned[:, 0] >= lo) & (turned[:, 0] <= hi)
-    better = costs(chain.lanes, task, turned) < costs(chain.lanes, task, q)
-    return np.where((inside & (flip | better))[:, None], turned, q)
 
 
 def turn_angle(
