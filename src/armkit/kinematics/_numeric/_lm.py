@@ -39,8 +39,10 @@ F64 = NDArray[np.float64]
 _TARGET = struct.Struct("13d")  # p (3) [m], pitch [rad], R (9, row-major)
 _NO_R = (0.0,) * 9
 MISSING = (
-    "armkit's compiled LM solver (kinematics/_numeric/_lmc.c) is not built in this "
-    "installation; run `pip install -e .` (or `make lint`) in the armkit folder to build it"
+    "numeric IK (method 'lm') needs armkit's compiled solver (kinematics/_numeric/_lmc.c), "
+    "which was not built when armkit was installed (no C compiler?); install a C compiler "
+    "(e.g. `apt install gcc`) and reinstall armkit (`pip install -e .` or `make lint` in its "
+    "folder); closed-form arms and the methods ccd, jacobian and random work without it"
 )
 
 
