@@ -49,6 +49,7 @@ LINKED = (
     "docs",
     "Makefile",
     "pyproject.toml",
+    "setup.py",
     "mkdocs.yml",
     ".venv",
 )
