@@ -1,6 +1,6 @@
 """An armkit installed without its compiled LM kernel (an sdist on a machine with no C
 compiler: setup.py builds the extension as optional) still imports and runs everything
-but numeric LM IK, which raises one ArmkitError saying how to build it; the CLI says it
+but numeric LM IK (ik and ik_batch with method 'lm', and arms with no closed form), which raises one ArmkitError saying how to build it; the CLI says it
 in one line. Run in a child process with the kernel's import made to fail."""
 
 from __future__ import annotations
@@ -25,15 +25,15 @@ CHILD = textwrap.dedent(
     print("ccd", r.method)
     for call in (
         lambda: ik(om, Target((0.2, 0.0, 0.1), pitch=0.0), method="lm"),
-        lambda: ik(load_model("so101"), Target((0.2, 0.0, 0.1))),
-        lambda: ik_batch(load_model("so101"), np.array([[0.2, 0.0, 0.1]])),
+        lambda: ik(load_model("so101"), Target((0.2, 0.0, 0.1)), method="lm"),
+        lambda: ik_batch(load_model("so101"), np.array([[0.2, 0.0, 0.1]]), method="lm"),
     ):
         try:
             call()
         except ArmkitError as e:
             print("refused", "C compiler" in str(e))
     from armkit.cli import main
-    sys.exit(main(["--arm", "so101", "ik", "200", "0", "100"]))
+    sys.exit(main(["--arm", "so101", "ik", "200", "0", "100", "--method", "lm"]))
     """
 )
 
