@@ -98,3 +98,25 @@ def test_a_state_file_for_another_arm_is_refused(config_dir: Path) -> None:
     with pytest.raises(Exception, match="unreadable simulator state"):
         open_driver(omx, "sim", keep=True)
     open_driver(load_model("lynx6"), "sim", keep=True).close()  # other arms are unaffected
+
+
+@pytest.mark.parametrize(
+    "tool",
+    [
+        "pen",
+        [1, 2],
+        {"name": "pen", "tool_length_mm": -5, "width_mm": 24},
+        {"name": "pen", "tool_length_mm": 116, "width_mm": 2000},
+        {"name": "pen", "width_mm": 24},
+    ],
+)
+def test_a_kept_tool_that_makes_no_sense_is_refused(config_dir: Path, tool: object) -> None:
+    omx = load_model("openmanipulator_x")
+    config_dir.mkdir()
+    kept = {"arm": "openmanipulator_x", "q_deg": [0] * 4, "grip_mm": 24, "tool": tool}
+    sim_state_file(omx).write_text(json.dumps(kept))
+    with pytest.raises(Exception, match="unreadable simulator state"):
+        open_driver(omx, "sim", keep=True)
+    kept["tool"] = {"name": "pen", "tool_length_mm": 116, "width_mm": 24}
+    sim_state_file(omx).write_text(json.dumps(kept))
+    open_driver(omx, "sim", keep=True).close()  # a sound one is taken

@@ -130,3 +130,37 @@ def test_a_move_that_only_takes_the_arm_out_is_allowed_and_one_deeper_is_not() -
     refused = move_refusal(model, low, deeper[None], None)
     assert refused is not None and "goes deeper" in str(refused) and "straight up" in str(refused)
     assert move_refusal(model, low, aside[None], None) is not None  # along the table: not out
+
+
+@pytest.mark.parametrize("name", ["draw", "play"])
+def test_an_interrupted_job_leaves_its_tool_kept_with_the_joints(name: str, files: Path) -> None:
+    """Interrupted half-way (the pen on the paper, the mallet over the bars), the tool is
+    kept in the state file with the joints: the next arm on that file plans with its tip
+    (the tool point is not under the table), goes home, and a drawing resumed with the pen
+    in the gripper does not pick it up again but puts it back."""
+    arm_name, scene_name, job = JOBS[name]
+    scene, state = load_scene(scene_name), files / "kept.json"
+    whole, _ = _run(name, files, None)
+    world = World()
+    with Arm(arm_name, "sim", str(state), world=world, scene=scene) as arm:
+        undo = _interrupt_at(world, world.now() + whole / 2)
+        with pytest.raises(KeyboardInterrupt), warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            job(arm, scene, files)
+        undo()
+        tool = arm.tool
+        assert tool is not None and tool.name == ("pen" if name == "draw" else "mallet")
+    with Arm(arm_name, "sim", str(state), scene=scene) as arm:
+        assert arm.tool == tool and arm.start().tool == tool
+        assert arm.position()[2] > -1.0  # [mm]: the tip kept, not the jaws' point under it
+        arm.home()
+        assert arm.tool == tool  # home lets nothing go
+        if name == "draw":
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                done = drawing.draw(arm, scene, files / "square.svg")
+            grips = [s for s in done.segments if type(s).__name__ == "GripMove"]
+            assert len(grips) == 1 and arm.tool is None  # only put back
+    if name == "draw":
+        with Arm(arm_name, "sim", str(state), scene=scene) as arm:
+            assert arm.tool is None

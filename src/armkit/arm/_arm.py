@@ -25,7 +25,7 @@ from ..drivers import Driver
 from ..kinematics import fk, ik, pitch_follows, pitch_of
 from ..model import ArmModel, load_model
 from ..motion import JointPath, Streamer, TimedStreaming, approach, clock_of, retreat
-from ..scene import Held, Scene, load_scene
+from ..scene import Held, HeldTool, Scene, load_scene
 from ._carry import Say, carry_out, check_start
 from ._plan import Plan
 from ._planner import (
@@ -106,6 +106,7 @@ class Arm:
         self.held: Held | None = None  # a cube in the gripper: checked with the links
         self._opening: float | None = None  # the jaws' opening [m], once set
         self._limp = False  # relaxed: the next move holds again first
+        self._tool: HeldTool | None = None  # a pen or mallet held, on real hardware
 
     @property
     def world(self) -> World | None:
@@ -129,8 +130,25 @@ class Arm:
         jaws = sim.grip() if self._opening is None and sim is not None else None
         return Start(
             self.model, self.read(), self._opening, self.held, self.scene, jaws,
-            self.motor_s(), self.driver,
+            self.motor_s(), self.driver, self.tool,
         )  # fmt: skip
+
+    @property
+    def tool(self) -> HeldTool | None:
+        """The tool in the gripper (a pen, a mallet; its tip is then the tool point every
+        move is planned with), or None. A simulated arm keeps it with its joints."""
+        sim = self.sim
+        return sim.tool if sim is not None else self._tool
+
+    def hold_tool(self, tool: HeldTool | None) -> None:
+        """The gripper now holds ``tool`` (a job that picks a pen or takes the mallet
+        says so), or nothing (None); a simulated gripper's jaws stop on it."""
+        if tool is not None and not isinstance(tool, HeldTool):
+            raise InputError(f"tool must be a scene.HeldTool or None, got {tool!r}")
+        sim = self.sim
+        if sim is not None:
+            sim.hold_tool(tool)
+        self._tool = tool
 
     def plan_move_to(
         self,
@@ -348,6 +366,8 @@ class Arm:
         finally:
             self.held = plan.end.held if plan.end.held is not None else self._held_after(plan)
         self._opening = plan.end.grip
+        if plan.start.tool is not None and plan.end.tool is None:  # a grip let it go
+            self.hold_tool(None)
 
     def _held_after(self, plan: Plan) -> Held | None:
         """What the gripper holds after (part of) ``plan``: as before unless a gripper

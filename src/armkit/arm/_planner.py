@@ -84,8 +84,8 @@ def _path_plan(start: Start, path: JointPath, streamer: Streamer, label: str) ->
 
 
 def plan_grip(start: Start, width: float, label: str = "grip") -> Plan:
-    """The gripper to ``width`` [m]; a held cube narrower than it by more than the
-    margin is let go (``Held.released_by``). A gripper that is only open or closed
+    """The gripper to ``width`` [m]; a held cube or tool narrower than it by more than
+    the margin is let go (``Held.released_by``, ``HeldTool.released_by``). A gripper that is only open or closed
     (the OWI's) takes its closed or its open width and nothing in between.
 
     Raises:
@@ -104,8 +104,9 @@ def plan_grip(start: Start, width: float, label: str = "grip") -> Plan:
     seconds = start.timer.forecast_grip(start.opening, stop)
     if held is not None and held.released_by(width):
         held = None
+    tool = None if start.tool is not None and start.tool.released_by(width) else start.tool
     step = Step(label, grip=width, holding=_holding(start), seconds=seconds)
-    return Plan(label, start, (step,), start.then(grip=width, jaws=None, held=held))
+    return Plan(label, start, (step,), start.then(grip=width, jaws=None, held=held, tool=tool))
 
 
 def refuse(start: Start, poses: F64) -> None:

@@ -14,7 +14,7 @@ from .._inputs import joints, shown
 from ..connect import forecaster
 from ..drivers import Forecaster
 from ..model import ArmModel
-from ..scene import Held, Scene
+from ..scene import Held, HeldTool, Scene
 
 F64 = NDArray[np.float64]
 
@@ -38,6 +38,8 @@ class Start:
         motor_s: motor-seconds the batteries have given [s] (timed motors slow with it).
         forecaster: how the arm's driver times its moves (``armkit.drivers.Forecaster``);
             None: the model's own driver kind's (``armkit.connect.forecaster``).
+        tool: the tool in the gripper (a pen, a mallet), or None: while it is held its
+            tip is the tool point every move is planned and checked with.
     """
 
     model: ArmModel
@@ -48,6 +50,7 @@ class Start:
     jaws: float | None = None
     motor_s: float = 0.0
     forecaster: Forecaster | None = None
+    tool: HeldTool | None = None
 
     def __post_init__(self) -> None:
         if not isinstance(self.model, ArmModel):
@@ -61,8 +64,10 @@ class Start:
 
     @cached_property
     def kin(self) -> ArmModel:
-        """The model with the grip point at the commanded opening (scissor grippers)."""
-        return self.model if self.grip is None else self.model.with_grip_width(self.grip)
+        """The model with the grip point at the commanded opening (scissor grippers), or
+        at the held tool's tip."""
+        kin = self.model if self.grip is None else self.model.with_grip_width(self.grip)
+        return kin if self.tool is None else kin.with_tool_length(self.tool.tool_length)
 
     @property
     def opening(self) -> float | None:

@@ -6,12 +6,9 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING
 
-import numpy as np
-from numpy.typing import NDArray
-
-from ..scene import Scene
+from ..scene import HeldTool, Scene
 from ._errors import DrawingError
 from ._fit import Fit
 from ._job import DrawJob, DrawOptions, plan_draw
@@ -26,15 +23,6 @@ if TYPE_CHECKING:
     from ..arm import Arm, Step
 
 DrawProgress = Callable[["DrawJob", int], None]  # (the job, strokes drawn so far)
-
-
-class SimArm(Protocol):
-    """What the job uses of ``armkit.sim.SimArm`` (by protocol: drawing stays below sim)."""
-
-    name: str
-
-    def q(self) -> NDArray[np.float64]: ...
-    def grip_stop(self, width: float | None) -> None: ...
 
 
 def draw(
@@ -95,9 +83,11 @@ def run_job(arm: Arm, job: DrawJob, progress: DrawProgress | None = None) -> Dra
     trace and metrics; ``progress(job, n)`` after each move (n: the strokes drawn so far)."""
     world, sim = arm.world, arm.sim
     tracer = PenTracer(job.tip, job.sheet, job.T_world_base, sim.name if sim else None)
-    tracer.holding = job.options.held
+    tracer.holding = job.options.held or job.motion.start.tool is not None
+    if tracer.holding:
+        arm.hold_tool(pen_held(job))
     detach = world.attach(tracer) if world is not None else None
-    done = _Progress(job, tracer, sim, progress)
+    done = _Progress(job, tracer, arm, progress)
     try:
         arm.run(job.motion, say=done.before)
         done.after(len(job.segments))
@@ -110,14 +100,20 @@ def run_job(arm: Arm, job: DrawJob, progress: DrawProgress | None = None) -> Dra
     return replace(job, trace=trace, metrics=measure(job.plan, trace, job.sheet))
 
 
+def pen_held(job: DrawJob) -> HeldTool:
+    """``job``'s pen as the arm holds it: its tip the tool point, the jaws on its holder."""
+    return HeldTool(job.pen.name, job.tip.tool_length, job.pen.diameter)
+
+
 class _Progress:
     """What the job does around each of its moves: the pen held or not (the tracer, the
-    simulated jaws stopped on it), the strokes counted for ``progress``."""
+    arm's held tool, so an interrupted job leaves it kept), the strokes counted for
+    ``progress``."""
 
     def __init__(
-        self, job: DrawJob, tracer: PenTracer, sim: SimArm | None, progress: DrawProgress | None
+        self, job: DrawJob, tracer: PenTracer, arm: Arm, progress: DrawProgress | None
     ) -> None:
-        self.job, self.tracer, self.sim, self.progress = job, tracer, sim, progress
+        self.job, self.tracer, self.arm, self.progress = job, tracer, arm, progress
         self.strokes = 0
 
     def before(self, k: int, step: Step) -> None:
@@ -127,8 +123,7 @@ class _Progress:
         seg = self.job.segments[k - 1]
         if isinstance(seg, GripMove):
             self.tracer.holding = self.tracer.holding and seg.holds
-            if self.sim is not None:
-                self.sim.grip_stop(self.job.pen.diameter if seg.holds else None)
+            self.arm.hold_tool(pen_held(self.job) if seg.holds else None)
 
     def after(self, k: int) -> None:
         """Move ``k`` (1-based) is done."""

@@ -150,7 +150,7 @@ def plan_draw(
     start = arm if isinstance(arm, Start) else arm.start()
     q0 = start.q
     segments: list[Segment] = []
-    if stand is not None and not opts.held:
+    if stand is not None and not opts.held and not pen_in_hand(start, the_pen):
         segments += pick_pen(rig, stand, the_pen, q0, opts.clearance / 1000.0)
     q = end_q(segments, q0)
     runs, note = _reachable(rig, plan, q, arm.model.name)
@@ -164,6 +164,20 @@ def plan_draw(
     return DrawJob(
         plan, the_sheet, the_pen, tuple(segments), steps, rig.tip, scene.T_world_base, opts
     )
+
+
+def pen_in_hand(start: Start, pen: Pen) -> bool:
+    """Whether the gripper at ``start`` holds ``pen`` already (an interrupted drawing
+    left it there: it is not picked up again, only put back); DrawingError if it holds
+    another tool."""
+    if start.tool is None:
+        return False
+    if start.tool.name != pen.name:
+        raise DrawingError(
+            f"the gripper holds the {start.tool.name}, not the {pen.name}: "
+            "open the gripper to let it go first (armkit grip WIDTH_MM), or armkit scene reset"
+        )
+    return True
 
 
 def plan_on_sheet(

@@ -24,7 +24,7 @@ from .._errors import InputError, UnreachableError
 from .._inputs import is_number, shown
 from ..arm import Plan, Start, Step, plan_steps
 from ..model import ArmModel
-from ..scene import move_refusal
+from ..scene import HeldTool, move_refusal
 from ._chords import check_chords, one_line
 from ._layout import Instrument, RangeError, map_notes
 from ._listen import Listener
@@ -289,6 +289,15 @@ def mallet_model(model: ArmModel, scene: Scene) -> ArmModel:
     return model.with_tool_length(model.tool_length + extra) if extra else model
 
 
+def mallet_held(start: Start, scene: Scene) -> HeldTool | None:
+    """The scene's mallet as the arm at ``start`` holds it while it plays (its head the
+    tool point, the jaws at their opening), or None: the scene has no mallet."""
+    if not any(p.name == MALLET for p in scene.pens):
+        return None
+    width = start.opening if start.opening is not None else start.model.gripper.width_min
+    return HeldTool(MALLET, mallet_model(start.model, scene).tool_length, width)
+
+
 def collision(perf: Performance, scene: Scene, q0: F64) -> UnreachableError | None:
     """Why the piece is refused on clearance, naming the note, or None: a pose of it, or
     the way to it from the one before (from ``q0`` [rad] for the first), putting a link
@@ -337,16 +346,19 @@ def _step(perf: Performance, move: Move, hobby: bool, seconds: float) -> Step:
 
 def perform(arm: Arm, scene: Scene, perf: Performance) -> Played:
     """Send every move of ``perf`` at its time (``Arm.run``); in the simulator, listen."""
-    plan = performance_plan(arm.start(), perf, scene)
+    start = arm.start()
+    plan = performance_plan(start, perf, scene)
     world, clock = arm.world, arm.clock
     listener = Listener(perf.model, scene.instruments, scene.T_world_base)
     detach = world.attach(listener) if world is not None else None
     began: list[float] = []
+    arm.hold_tool(mallet_held(start, scene))  # kept so, if the piece is interrupted
     try:
         arm.run(plan, say=lambda k, _: began.append(clock.now()) if k == 1 else None)
     finally:
         if detach is not None:
             detach()
+    arm.hold_tool(None)  # the piece is over: the mallet is put down
     if world is None:
         return Played(perf)
     heard = tuple(_shifted(c, began[0]) for c in listener.contacts)

@@ -49,6 +49,7 @@ if TYPE_CHECKING:  # what the names below are, for type checkers (loaded on firs
     from ._object import Solid as Solid
     from ._object import Support as Support
     from ._object import support_under as support_under
+    from ._pen import HeldTool as HeldTool
     from ._pen import Pen as Pen
     from ._pen import PenStand as PenStand
     from ._physics import EventKind as EventKind
@@ -256,6 +257,7 @@ _LAZY = {
     "Support": _object_module,
     "support_under": _object_module,
     "Pen": _pen_module,
+    "HeldTool": _pen_module,
     "PenStand": _pen_module,
     "SceneEvent": _physics_module,
     "EventKind": _physics_module,

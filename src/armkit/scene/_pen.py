@@ -19,6 +19,7 @@ from ._rect import Rect
 F64 = NDArray[np.float64]
 STAND_COLOUR: RGB = (90, 90, 100)
 PEN_COLOUR: RGB = (240, 200, 30)  # yellow
+RELEASE_EPS = 0.2e-3  # [m]: as the clearance check's WIDTH_EPS for a held cube
 PEN_KEYS = (
     "name",
     "length_mm",
@@ -67,6 +68,28 @@ class Pen:
     def primitives(self, scene: Placed) -> list[Primitive]:
         """None of its own: its stand draws it standing in it."""
         return []
+
+
+@dataclass(frozen=True)
+class HeldTool:
+    """A tool in the gripper (a pen, a mallet): what a plan's tool point is while it is
+    held, and what a simulated arm keeps with its joints between processes.
+
+    Attributes:
+        name: the scene's pen it is (``"pen"``, ``"mallet"``).
+        tool_length: the arm's tool length while it is held, from its last joint frame
+            to the tool's tip [m] (``ArmModel.with_tool_length``).
+        width: where the jaws hold it [m]: opening them wider by more than the margin
+            lets it go (``released_by``).
+    """
+
+    name: str
+    tool_length: float
+    width: float
+
+    def released_by(self, width: float) -> bool:
+        """Whether opening the jaws to ``width`` [m] lets it go (as ``Held.released_by``)."""
+        return width > self.width + RELEASE_EPS
 
 
 @dataclass(frozen=True, eq=False)

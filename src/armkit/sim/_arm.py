@@ -6,7 +6,7 @@ import contextlib
 import math
 import threading
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
@@ -20,7 +20,7 @@ from ._recording import Recorder, Recording
 from ._sensor import SimulatedSensor
 
 if TYPE_CHECKING:
-    from ..scene import ScenePhysics
+    from ..scene import HeldTool, ScenePhysics
     from ..sensing import SensorMount
 
 F64 = NDArray[np.float64]
@@ -33,11 +33,13 @@ class Truth:
     Attributes:
         q: joint angles [rad], shape (dof,).  grip: gripper opening [m].
         motor_s: motor-seconds used since the batteries were new (the OWI's fade), [s].
+        tool: the tool in the gripper (a pen, a mallet) or None.
     """
 
     q: tuple[float, ...]
     grip: float
     motor_s: float = 0.0
+    tool: HeldTool | None = None
 
 
 class Body(Protocol):
@@ -88,6 +90,7 @@ class SimArm:
         self.analog: dict[int, Callable[[], float]] = {}
         self._lock: contextlib.AbstractContextManager[object] = threading.RLock()
         self._recorder = Recorder(model.joint_names, 2)
+        self._tool: HeldTool | None = None
 
     def join(self, lock: contextlib.AbstractContextManager[object], rows: int, now: float) -> None:
         """Called by ``World.add_arm``: share the world's ``lock``, keep ``rows`` samples of
@@ -137,6 +140,22 @@ class SimArm:
             )
         with self._lock:
             self.body.grip_stop(None if width is None else float(width))
+
+    @property
+    def tool(self) -> HeldTool | None:
+        """The tool in the gripper (a pen, a mallet), or None."""
+        return self._tool
+
+    def hold_tool(self, tool: HeldTool | None) -> None:
+        """The jaws hold ``tool`` (they stop on it at its width), or nothing (None: free)."""
+        with self._lock:
+            self._tool = tool
+            self.body.grip_stop(None if tool is None else tool.width)
+
+    def truth(self) -> Truth:
+        """What is kept between processes: the body's state and the tool held."""
+        with self._lock:
+            return replace(self.body.truth(), tool=self._tool)
 
     def push(self, q: F64) -> None:
         """Move the arm by hand to joint angles ``q`` [rad], shape (dof,), as a person does

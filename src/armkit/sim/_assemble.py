@@ -118,14 +118,16 @@ class Persistence:
 
     def closer(self, world: World, arm: SimArm) -> Callable[[], None]:
         """The action that settles ``arm``, writes its truth if it changed since now, and
-        gives the file back."""
-        self.start = arm.body.truth()
+        gives the file back; the kept tool is put back in ``arm``'s gripper first."""
+        if self.truth is not None and self.truth.tool is not None:
+            arm.hold_tool(self.truth.tool)
+        self.start = arm.truth()
 
         def close() -> None:
             try:
                 with contextlib.suppress(Exception):
                     settle(world, arm)
-                truth = arm.body.truth()
+                truth = arm.truth()
                 if truth != self.start:  # a refused command leaves no file behind
                     save_truth(self.path, self.model, truth)
             finally:

@@ -2,7 +2,9 @@
 
 ``armkit move`` in one process and ``armkit where`` in the next must see the
 same simulated arm, so a simulation opened with a state file starts where the
-file says and writes its truth back when its device is closed. The file is
+file says and writes its truth back when its device is closed: the joints, the gripper's
+opening and the tool it holds (a pen, a mallet: the tool point a plan starts from),
+in one file written at once. The file is
 keyed by the model FILE, not the model's name: a shipped arm's file is
 ``sim_<name>.json``; a user's model file gets ``sim_<name>-<hash of its path>.json``,
 so two files that both say ``name = "myarm"`` never share a pose. Files live in
@@ -24,6 +26,7 @@ import numpy as np
 from .._errors import DeviceError
 from .._files import config_dir, write_atomic
 from ..model import ArmModel
+from ..scene import HeldTool
 from ._arm import Truth
 
 VERSION = 1
@@ -71,7 +74,10 @@ def load_truth(path: Path, model: ArmModel) -> Truth | None:
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
         q = tuple(math.radians(float(a)) for a in data["q_deg"])
-        truth = Truth(q, float(data["grip_mm"]) / 1000.0, float(data.get("motor_s", 0.0)))
+        truth = Truth(
+            q, float(data["grip_mm"]) / 1000.0, float(data.get("motor_s", 0.0)),
+            _tool(data.get("tool")),
+        )  # fmt: skip
         arm, version = str(data["arm"]), data.get("version", VERSION)
     except (OSError, ValueError, KeyError, TypeError) as exc:
         raise DeviceError(f"{path}: unreadable simulator state ({exc}); delete the file") from None
@@ -90,5 +96,27 @@ def save_truth(path: Path, model: ArmModel, truth: Truth) -> None:
         "q_deg": [round(math.degrees(a), 6) for a in truth.q],
         "grip_mm": truth.grip * 1000.0,
         "motor_s": truth.motor_s,
+        "tool": None if truth.tool is None else _tool_data(truth.tool),
     }
     write_atomic(path, json.dumps(data, indent=1) + "\n", durable=False)
+
+
+def _tool_data(tool: HeldTool) -> dict[str, object]:
+    """The held tool as the state file keeps it [mm]."""
+    return {
+        "name": tool.name,
+        "tool_length_mm": tool.tool_length * 1000.0,
+        "width_mm": tool.width * 1000.0,
+    }
+
+
+def _tool(data: object) -> HeldTool | None:
+    """The held tool from the state file (None: nothing held); ValueError if malformed."""
+    if data is None:
+        return None
+    if not isinstance(data, dict):
+        raise ValueError(f"tool is {data!r}, not a table")
+    length, width = float(data["tool_length_mm"]) / 1000.0, float(data["width_mm"]) / 1000.0
+    if not (0.0 < length <= 10.0 and 0.0 <= width <= 1.0):
+        raise ValueError(f"tool {data!r} out of range")
+    return HeldTool(str(data["name"]), length, width)
