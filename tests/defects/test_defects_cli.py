@@ -63,7 +63,7 @@ def test_help_of_commands_with_coordinates(cli, argv: list[str]) -> None:  # typ
          "argument pulse: must be 500..2500 µs, got nan"),
         (["joints", "10", "-60", "20", "40", "--duration", "100"],
          "argument --duration: must be 0..30 s, got 100"),
-        (["joints", "10", "-60", "20", "40", "--speed", "0.0001"], "at most 30 s: raise the speed"),
+        (["joints", "10", "-60", "20", "40", "--speed", "0.01"], "at most 30 s: raise the speed"),
         (["--arm", "nosucharm", "arms"], "unknown arm 'nosucharm'"),
         (["--driver", "nosuchdriver", "arms"], "unknown driver 'nosuchdriver'"),
         (["where", "--arm", "lynx6"],

@@ -54,7 +54,7 @@ def test_move_then_where_in_a_new_invocation(
 
 
 def test_joints_and_grip(capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["--arm", "lynx6", "joints", "80", "100", "70", "95", "90", "--speed", "0.5"]) == 0
+    assert main(["--arm", "lynx6", "joints", "80", "100", "70", "95", "90", "--speed", "50%"]) == 0
     assert _angles(capsys.readouterr().out) == pytest.approx([80, 100, 70, 95, 90], abs=SETTLE_DEG)
     assert main(["--arm", "lynx6", "grip", "25"]) == 0
     assert "25.0 mm" in capsys.readouterr().out
@@ -67,7 +67,10 @@ def test_joints_and_grip(capsys: pytest.CaptureFixture[str]) -> None:
         (["joints", "0", "0", "0", "200"], "wrist 200.00 deg is outside"),
         (["joints", "0", "0"], "give 4 angles"),
         (["grip", "500"], "grip width"),
-        (["move", "200", "0", "100", "--speed", "3"], "speed"),
+        (
+            ["move", "200", "0", "100", "--speed", "300"],
+            "argument --speed: must be > 0 and <= 100 %, got 300",
+        ),
         (
             ["draw", "circle", "--center", "250", "0", "50", "--radius", "60", "--pitch", "-90"],
             "point ",

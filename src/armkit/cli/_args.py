@@ -64,6 +64,12 @@ def number(
     return parse
 
 
+def percent(text: str) -> float:
+    """An argparse type: a percentage > 0 and <= 100, written ``50`` or ``50%`` as in a
+    script (``speed 50%``) [%]."""
+    return number("%", 0.0, 100.0, low_open=True)(text.strip().removesuffix("%"))
+
+
 def integer(what: str, low: int, high: int) -> Callable[[str], int]:
     """An argparse type: an integer in [low, high]."""
 

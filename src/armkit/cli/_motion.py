@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from .._terminal import fixed
 from ..model import MAX_MOVE_S
-from ._args import angle, coordinate, number
+from ._args import angle, coordinate, number, percent
 from ._draw_shapes import MODES as MODES
 from ._draw_shapes import add_draw
 from ._open_arm import open_arm
@@ -66,9 +66,10 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 def _timing_options(p: argparse.ArgumentParser) -> None:
     p.add_argument(
         "--speed",
-        type=number("", 0.0, 1.0, low_open=True),
-        metavar="FRACTION",
-        help="fraction of each joint's max speed, (0, 1] (default 1: full speed)",
+        type=percent,
+        metavar="PERCENT",
+        help="percent of each joint's top speed, > 0 and <= 100 %% (default 100: full speed), "
+        "as a script's 'speed 50%%'",
     )
     p.add_argument(
         "--duration",
@@ -80,14 +81,16 @@ def _timing_options(p: argparse.ArgumentParser) -> None:
 
 def _move(args: argparse.Namespace) -> int:
     with open_arm(args) as arm:
-        arm.move_to(args.x, args.y, args.z, args.pitch, speed=args.speed, duration=args.duration)
+        speed = None if args.speed is None else args.speed / 100.0  # [%] -> the fraction Arm takes
+        arm.move_to(args.x, args.y, args.z, args.pitch, speed=speed, duration=args.duration)
         _print_where(arm, args)
     return 0
 
 
 def _joints(args: argparse.Namespace) -> int:
     with open_arm(args) as arm:
-        arm.move_joints(args.angles, speed=args.speed, duration=args.duration)
+        speed = None if args.speed is None else args.speed / 100.0  # [%] -> the fraction Arm takes
+        arm.move_joints(args.angles, speed=speed, duration=args.duration)
         _print_where(arm, args)
     return 0
 

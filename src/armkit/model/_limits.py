@@ -204,8 +204,8 @@ def move_time(
         seconds = (shortest_time if ramps else constant_speed_time)(model, q0, q1, frac)
         if longest is not None and seconds > longest:  # a tiny speed: refuse rather than crawl
             raise InputError(
-                f"this move would take {seconds:.0f} s at speed {frac:g}; a move may "
-                f"take at most {longest:g} s: raise the speed"
+                f"this move would take {seconds:.0f} s at {frac * 100.0:g} % of the joints' "
+                f"top speed; a move may take at most {longest:g} s: raise the speed"
             )
         return seconds
     duration = check_duration(duration, longest)
