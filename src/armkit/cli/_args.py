@@ -64,10 +64,16 @@ def number(
     return parse
 
 
-def percent(text: str) -> float:
-    """An argparse type: a percentage > 0 and <= 100, written ``50`` or ``50%`` as in a
-    script (``speed 50%``) [%]."""
-    return number("%", 0.0, 100.0, low_open=True)(text.strip().removesuffix("%"))
+def percent(low: float, high: float, *, low_open: bool = False) -> Callable[[str], float]:
+    """An argparse type: a percentage in [low, high] (``(low, high]`` with ``low_open``),
+    written ``50`` or ``50%`` as in a script (``speed 50%``) [%]."""
+    parse = number("%", low, high, low_open=low_open)
+
+    def percentage(text: str) -> float:
+        return parse(text.strip().removesuffix("%"))
+
+    percentage.__name__ = parse.__name__
+    return percentage
 
 
 def integer(what: str, low: int, high: int) -> Callable[[str], int]:

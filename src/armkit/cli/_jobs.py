@@ -14,7 +14,7 @@ from typing import Any
 
 from .._errors import InputError
 from ..jobs import CLI_JOBS, JOBS, METAVAR, JobParam, JobSpec, as_function_gets, job_spec
-from ._args import integer, number
+from ._args import integer, number, percent
 from ._watch import add_watch_options, watched_arm
 
 Handler = Callable[[argparse.Namespace], int]
@@ -81,14 +81,7 @@ def _type_of(param: JobParam) -> Callable[[str], Any]:
     wide = WIDEST[param.kind]
     low = -wide if param.low is None else param.low
     high = wide if param.high is None else param.high
-    parse = number(param.unit, low, high)
-    if param.kind != "percent":
-        return parse
-
-    def percent(text: str) -> float:  # '70' and '70%' both say 70 %
-        return parse(text.strip().removesuffix("%"))
-
-    return percent
+    return percent(low, high) if param.kind == "percent" else number(param.unit, low, high)
 
 
 def job_arguments(args: argparse.Namespace) -> dict[str, Any]:

@@ -66,7 +66,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 def _timing_options(p: argparse.ArgumentParser) -> None:
     p.add_argument(
         "--speed",
-        type=percent,
+        type=percent(0.0, 100.0, low_open=True),
         metavar="PERCENT",
         help="percent of each joint's top speed, > 0 and <= 100 %% (default 100: full speed), "
         "as a script's 'speed 50%%'",
