@@ -105,7 +105,8 @@ def test_the_batch_solves_as_ik_does() -> None:
     ("p", "pitch", "reason", "words"),
     [
         ((0.6, 0.0, 0.2), 0.0, "too_far", "too far away"),
-        ((0.1, 0.0, -0.05), 0.5, "joint_limit", "shoulder_lift would be"),
+        ((0.05, 0.0, 0.2), 1.0, "joint_limit", "shoulder_lift would be"),
+        ((0.02, 0.0, 0.3), 1.5, "joint_limit", "elbow_flex would be"),
         ((0.2, 0.1, 0.1), -1.5, "joint_limit", "wrist_flex would be"),
         ((0.0, 0.0, 0.1), -1.5, "too_close", "too close to the base"),
     ],

@@ -138,10 +138,10 @@ def test_fk_equals_the_urdf_to_a_nanometre(arm: str, tmp_path) -> None:
 def test_the_world_origin_is_on_the_pan_axis_on_the_table(arm: str) -> None:
     """DESIGN.md: origin at the centre of the base on the table, x forward, z up: turning
     shoulder_pan moves no point of its axis, which is the world's z axis; at pan 0 the
-    arm faces +x."""
+    arm faces +x (the wrist_roll at 0: there the tool point is in the arm's plane)."""
     model = load_model(arm)
     q = model.home.copy()
-    q[0] = 0.0
+    q[0] = q[-1] = 0.0
     tool = fk(model, q)[:3, 3]
     assert tool[0] > 0.1 and abs(tool[1]) < 1e-3
     for pan in np.linspace(model.lower[0], model.upper[0], 7):
