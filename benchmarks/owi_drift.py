@@ -2,7 +2,7 @@
 
 On the simulated arm (gravity, gear slip and coast, a draining battery, seeded
 randomness), each unit is calibrated by the routine a user runs
-(``run_calibration`` with an automatic operator), its estimate is set to the
+(``calibrate_owi535`` with an automatic operator), its estimate is set to the
 truth, and it makes 20 random reachable moves (gripper level, above the
 table). After each move the estimated gripper position (forward kinematics of
 the driver's angles) is compared with the true one, for
@@ -26,7 +26,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from armkit.devices.owi535 import open_device
-from armkit.drivers.timed import TimedDriver, constant_rate, run_calibration, state_path
+from armkit.drivers.timed import TimedDriver, calibrate_owi535, constant_rate, state_path
 from armkit.drivers.timed._order import lowest_point
 from armkit.kinematics import fk
 from armkit.model import ArmModel, load_model
@@ -55,7 +55,7 @@ def drift(model: ArmModel, seed: int, targets: list[F64], kind: str, workdir: Pa
     path = workdir / f"{kind}-{seed}.json"
     driver = TimedDriver(model, open_device(sim.backend), sim.clock, path, durable=False)
     operator = SimOperator(sim, seed)
-    run_calibration(model, driver, operator.ask, operator.say)
+    calibrate_owi535(model, driver, operator.ask, operator.say)
     state = driver.state
     if kind == "000":
         state = state.with_(timing=constant_rate(model, state.extra["traverse_s"]))

@@ -18,7 +18,7 @@ import pytest
 from armkit import ArmkitError
 from armkit.cli import main
 from armkit.connect import (
-    Calibration,
+    CalibrationRoutine,
     DriverKind,
     driver_kind,
     driver_kinds,
@@ -60,7 +60,7 @@ def test_every_kind_has_every_part(kind: DriverKind) -> None:
     assert (kind.emulate is not None) == (kind.port == "serial")
     # a kind whose unit cannot report its position is calibrated by a person
     if kind.traits & {"timed", "hobby"}:
-        assert isinstance(kind.calibrate, Calibration) and callable(kind.calibrate.run)
+        assert isinstance(kind.calibrate, CalibrationRoutine) and callable(kind.calibrate.run)
 
 
 @pytest.mark.parametrize("kind", driver_kinds(), ids=lambda kind: kind.name)
@@ -128,7 +128,7 @@ def clone() -> Iterator[DriverKind]:
         name="clone32",
         device="an SSC-32 clone",
         title="SSC-32 clone",
-        calibrate=Calibration(_calibrate_clone),
+        calibrate=CalibrationRoutine(_calibrate_clone),
     )
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(registry, "KINDS", (*registry.KINDS, added))

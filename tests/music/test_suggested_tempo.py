@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 from armkit import Arm
+from armkit.arm import Start
 from armkit.model import load_model
 from armkit.music import PerformanceError, load_score, plan_play, play
 from armkit.music._performance import fastest_tempo
@@ -106,8 +107,8 @@ def test_plan_play_on_the_model_refuses_as_play_on_the_arm(arm_name: str, t_txt:
         q = arm.driver.read()
         on_arm = _refused(arm, t_txt, 1.0)
     with pytest.raises(PerformanceError) as on_model:
-        plan_play(load_model(arm_name), SCENE, t_txt, start=q)
+        plan_play(Start(load_model(arm_name), q), SCENE, t_txt)
     assert str(on_model.value) == str(on_arm) and on_model.value.tempo == on_arm.tempo
     with pytest.raises(PerformanceError) as scripted:
-        plan_play(load_model(arm_name), SCENE, t_txt, start=q, script=True)
+        plan_play(Start(load_model(arm_name), q), SCENE, t_txt, script=True)
     assert f"(tempo {on_arm.tempo * 100:g}% plays it)" in str(scripted.value)

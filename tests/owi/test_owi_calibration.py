@@ -11,10 +11,10 @@ import pytest
 from armkit.devices.owi535 import open_device
 from armkit.drivers.timed import (
     TimedDriver,
+    calibrate_owi535,
     constant_rate,
     load_state,
     rehome,
-    run_calibration,
     state_path,
 )
 from armkit.kinematics import fk
@@ -41,7 +41,7 @@ def calibrated(owi: ArmModel, seed: int, name: str = "cal") -> tuple[TimedDriver
         owi, open_device(sim.backend), sim.clock, state_path(f"{name}{seed}"), durable=False
     )
     operator = SimOperator(sim, seed)
-    assert run_calibration(owi, driver, operator.ask, operator.say) == driver.path
+    assert calibrate_owi535(owi, driver, operator.ask, operator.say) == driver.path
     return driver, sim
 
 

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from armkit._errors import DeviceError
-from armkit.drivers.servo import ServoArmDriver, open_ssc32, run_calibration
+from armkit.drivers.servo import ServoArmDriver, calibrate_servos, open_ssc32
 from armkit.model import ArmModel
 from armkit.sim import World
 from armkit.sim._pulses import MoveRecord, VirtualServo
@@ -78,7 +78,7 @@ def test_measured_tables_make_the_real_arm_reach_the_asked_angles(
 ) -> None:
     person, said = Person(ssc32_emu), list[str]()
     driver = ssc32_emu.open(lynx6)
-    path = run_calibration(lynx6, driver, person, said.append)
+    path = calibrate_servos(lynx6, driver, person, said.append)
     driver.close()
     assert path == config_dir / "lynx6-ssc32.toml"
     assert path.stat().st_mode & 0o777 == 0o644
@@ -100,7 +100,7 @@ def test_enter_keeps_the_point_and_bad_input_is_asked_again(
 ) -> None:
     person = Person(ssc32_emu, answers=["fifteen", "15"])
     driver = ssc32_emu.open(lynx6)
-    path = run_calibration(lynx6, driver, person, lambda _: None)
+    path = calibrate_servos(lynx6, driver, person, lambda _: None)
     driver.close()
     assert "not a number" in person.prompts[1]
     base = tomllib.loads(path.read_text())["servos"]["base"]
@@ -112,7 +112,7 @@ def test_no_number_after_three_tries_writes_nothing(
 ) -> None:
     driver = ssc32_emu.open(lynx6)
     with pytest.raises(ValueError, match="no reading within 45 degrees of the point for base"):
-        run_calibration(lynx6, driver, Person(ssc32_emu, ["x", "y", "z"]), lambda _: None)
+        calibrate_servos(lynx6, driver, Person(ssc32_emu, ["x", "y", "z"]), lambda _: None)
     driver.close()
     assert not config_dir.exists()
 
@@ -120,7 +120,7 @@ def test_no_number_after_three_tries_writes_nothing(
 def test_measurements_that_go_backwards_are_refused(lynx6: ArmModel, ssc32_emu: Board) -> None:
     driver = ssc32_emu.open(lynx6)
     with pytest.raises(ValueError, match="must increase"):
-        run_calibration(lynx6, driver, Person(ssc32_emu, ["15", "10"]), lambda _: None)
+        calibrate_servos(lynx6, driver, Person(ssc32_emu, ["15", "10"]), lambda _: None)
     driver.close()
 
 
@@ -145,7 +145,7 @@ def test_the_file_is_replaced_atomically(
     monkeypatch.setattr(os, "replace", failing_replace)
     driver = ssc32_emu.open(lynx6)
     with pytest.raises(OSError, match="disk full"):
-        run_calibration(lynx6, driver, Person(ssc32_emu), lambda _: None)
+        calibrate_servos(lynx6, driver, Person(ssc32_emu), lambda _: None)
     driver.close()
     assert calls == [("fsync", ""), ("replace", str(config_dir))]
     assert old.read_text() == "# the old calibration\n"
@@ -154,7 +154,7 @@ def test_the_file_is_replaced_atomically(
 
 def test_only_a_servo_driver_can_be_calibrated(lynx6: ArmModel) -> None:
     with pytest.raises(DeviceError, match="--driver ssc32"):
-        run_calibration(lynx6, object(), input, print)
+        calibrate_servos(lynx6, object(), input, print)
 
 
 def test_a_broken_unit_file_names_the_field(
@@ -176,7 +176,7 @@ def test_a_reading_far_from_its_point_is_asked_again(lynx6: ArmModel, ssc32_emu:
     """The Lynx6 calibration accepted -500 deg for the 15 deg point (issue 28)."""
     person = Person(ssc32_emu, answers=["-500", "nan", "15"])
     driver = ssc32_emu.open(lynx6)
-    path = run_calibration(lynx6, driver, person, lambda _: None)
+    path = calibrate_servos(lynx6, driver, person, lambda _: None)
     driver.close()
     assert "-500 degrees is more than 45 degrees from 15.0" in person.prompts[1]
     assert "more than 45 degrees" in person.prompts[2]  # nan: no number to keep either

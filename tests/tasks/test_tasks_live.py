@@ -17,7 +17,7 @@ import pytest
 
 from armkit import Arm, tasks
 from armkit.cli import main
-from armkit.drivers.timed import TimedDriver, run_calibration
+from armkit.drivers.timed import TimedDriver, calibrate_owi535
 from armkit.model import ArmModel, load_model
 from armkit.scene import Cube, Place, Scene, load_scene
 from armkit.scene._state import load_physics, scene_state_file
@@ -95,7 +95,7 @@ def _calibrated_owi(model: ArmModel) -> Arm:
     assert isinstance(driver, TimedDriver)
     operator = auto_operator(driver)
     assert operator is not None
-    run_calibration(model, driver, operator.ask, operator.say)
+    calibrate_owi535(model, driver, operator.ask, operator.say)
     return arm
 
 

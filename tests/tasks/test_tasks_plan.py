@@ -181,7 +181,7 @@ def test_move_item_lifts_before_travelling() -> None:
 def test_calibration_offsets_move_the_commanded_points(tmp_path: Path) -> None:
     arm, _ = _arm()
     scene = load_scene("board_001")
-    cal = Calibration(height=0.002, perpendicular=-0.003)
+    cal = Calibration(height=2.0, perpendicular=-3.0)  # mm
     plain = tasks.pick(arm, scene, "red", dry_run=True)
     shifted = tasks.pick(arm, scene, "red", calibration=cal, dry_run=True)
     for a, b in zip(plain.steps, shifted.steps, strict=True):

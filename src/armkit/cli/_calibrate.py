@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any
 from .._closing import closing
 from .._errors import ArmkitError, InputError
 from .._files import config_dir
-from ..connect import Ask, Calibration, driver_kinds, native_kind
+from ..connect import Ask, CalibrationRoutine, driver_kinds, native_kind
 from ._args import check_folder
 from ._kept import open_kept
 
@@ -30,7 +30,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     p.set_defaults(func=run_calibrate)
 
 
-def _calibration(model: ArmModel, driver: str) -> Calibration:
+def _calibration(model: ArmModel, driver: str) -> CalibrationRoutine:
     """How ``driver`` calibrates ``model``: its kind's, or on the simulator (``sim``) the
     native kind's where an automatic operator answers for the person."""
     name = native_kind(model) if driver == "sim" else driver

@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, Any
 
 from .._errors import InputError, NoSuchName
 from ._kind import Ask as Ask
-from ._kind import Calibration as Calibration
+from ._kind import CalibrationRoutine as CalibrationRoutine
 from ._kind import DriverKind as DriverKind
 from ._kind import PortRule as PortRule
 from ._kind import Trait as Trait
@@ -240,7 +240,7 @@ def simulated_bus(baudrate: int, retries: int = 3) -> DynamixelBus:
 
 __all__ = [
     "Ask",
-    "Calibration",
+    "CalibrationRoutine",
     "DriverKind",
     "PortRule",
     "SimArm",

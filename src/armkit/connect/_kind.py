@@ -74,7 +74,7 @@ class Calibrator(Protocol):
 
 
 @dataclass(frozen=True)
-class Calibration:
+class CalibrationRoutine:
     """How a kind's unit is calibrated.
 
     Attributes:
@@ -118,4 +118,4 @@ class DriverKind:
     forecast: Forecasting
     simulate: Simulator
     emulate: Emulated | None
-    calibrate: Calibration | None
+    calibrate: CalibrationRoutine | None

@@ -21,7 +21,7 @@ from ..model import (
     OWI535_SECTION,
     SSC32_SECTION,
 )
-from ._kind import Ask, Calibration, DriverKind, Say, Trait
+from ._kind import Ask, CalibrationRoutine, DriverKind, Say, Trait
 
 if TYPE_CHECKING:
     from ..drivers import Driver, Forecaster
@@ -56,9 +56,9 @@ def _simulate_owi535(
 
 
 def _calibrate_owi535(model: ArmModel, driver: Any, ask: Ask, say: Say) -> Path:
-    from ..drivers.timed import run_calibration
+    from ..drivers.timed import calibrate_owi535
 
-    return run_calibration(model, driver, ask, say)
+    return calibrate_owi535(model, driver, ask, say)
 
 
 def _owi535_operator(driver: Driver) -> Ask | None:
@@ -124,9 +124,9 @@ def _emulate_maestro(model: ArmModel | None, world: World) -> Rig:
 
 
 def _calibrate_servos(model: ArmModel, driver: Any, ask: Ask, say: Say) -> Path:
-    from ..drivers.servo import run_calibration
+    from ..drivers.servo import calibrate_servos
 
-    return run_calibration(model, driver, ask, say)
+    return calibrate_servos(model, driver, ask, say)
 
 
 # Dynamixel smart servos on one Protocol 2.0 bus.
@@ -200,7 +200,7 @@ KINDS: tuple[DriverKind, ...] = (
         forecast=_forecast_owi535,
         simulate=_simulate_owi535,
         emulate=None,
-        calibrate=Calibration(_calibrate_owi535, operator=_owi535_operator),
+        calibrate=CalibrationRoutine(_calibrate_owi535, operator=_owi535_operator),
     ),
     DriverKind(
         name="ssc32",
@@ -213,7 +213,7 @@ KINDS: tuple[DriverKind, ...] = (
         forecast=_forecast_ssc32,
         simulate=_simulate_ssc32,
         emulate=_emulate_ssc32,
-        calibrate=Calibration(_calibrate_servos),
+        calibrate=CalibrationRoutine(_calibrate_servos),
     ),
     DriverKind(
         name="maestro",
@@ -226,7 +226,7 @@ KINDS: tuple[DriverKind, ...] = (
         forecast=_forecast_maestro,
         simulate=_simulate_maestro,
         emulate=_emulate_maestro,
-        calibrate=Calibration(_calibrate_servos),
+        calibrate=CalibrationRoutine(_calibrate_servos),
     ),
     DriverKind(
         name="dynamixel",

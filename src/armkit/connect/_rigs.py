@@ -12,8 +12,8 @@ from dataclasses import dataclass
 
 from .._errors import ArmkitError
 from ..drivers import Forecaster
-from ..drivers.dynamixel import DynamixelForecaster, calibration_points
-from ..drivers.feetech import calibration_points as feetech_points
+from ..drivers.dynamixel import DynamixelForecaster, dynamixel_points
+from ..drivers.feetech import feetech_points
 from ..drivers.servo import load_setup
 from ..model import FEETECH_SECTION, ArmModel, DynamixelSection, dynamixel_section
 from ..sim import SimArm, Truth, World
@@ -78,7 +78,7 @@ def dynamixel_rig(
     """XM430s on a Dynamixel bus driving ``model``'s joints and gripper, set up by its
     ``[drivers.dynamixel]`` table (or ``config``)."""
     cfg = config if config is not None else dynamixel_section(model)
-    points = calibration_points(model, cfg)
+    points = dynamixel_points(model, cfg)
     device = SimDynamixelBus(
         [sid for sid, *_ in points], clock=world.device_time, baudrate=cfg.baudrate
     )

@@ -79,8 +79,10 @@ def draw(
 
 
 def run_job(arm: Arm, job: DrawJob, progress: DrawProgress | None = None) -> DrawJob:
-    """Carry ``job`` out on ``arm`` (``Arm.run`` of its motion); on a simulator, with its
-    trace and metrics; ``progress(job, n)`` after each move (n: the strokes drawn so far)."""
+    """Carry ``job`` out on ``arm`` (``Arm.run`` of its motion, as ``plan_draw`` planned
+    it: ``DrawOptions`` in millimetres, degrees and mm/s); on a simulator, with its trace
+    and metrics (``DrawingMetrics``); ``progress(job, n)`` after each move (n: the
+    strokes drawn so far)."""
     world, sim = arm.world, arm.sim
     tracer = PenTracer(job.tip, job.sheet, job.T_world_base, sim.name if sim else None)
     tracer.holding = job.options.held or job.motion.start.tool is not None

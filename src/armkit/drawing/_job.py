@@ -136,7 +136,9 @@ def plan_draw(
     options: DrawOptions | None = None,
     fit: Fit | bool | None = None,
 ) -> DrawJob:
-    """Plan the job from the arm's joints now; nothing moves (errors as ``draw``).
+    """Plan the job from the arm's joints now; nothing moves (errors as ``draw``). The
+    sheet and pen stand where the scene puts them (millimetres and degrees, as every scene
+    file gives them); ``options`` are in millimetres, degrees and mm/s (``DrawOptions``).
 
     ``arm`` may be an ``armkit.tasks.Start`` (a model and joint angles, as the tasks
     take it): the job is planned from there, as ``armkit check`` plans a script's

@@ -7,7 +7,7 @@ import math
 from ..model import ArmModel, DynamixelSection, dynamixel_section
 
 
-def calibration_points(
+def dynamixel_points(
     model: ArmModel, config: DynamixelSection | None = None
 ) -> list[tuple[int, int, tuple[float, float], tuple[float, float]]]:
     """The calibration as this driver uses it, as points: (servo ID, joint index or -1

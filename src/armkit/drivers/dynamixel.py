@@ -53,7 +53,7 @@ from ._driver import Forecast, pieces
 from ._dxl_forecast import MAX_PROFILE_MS
 from ._dxl_forecast import DynamixelForecaster as DynamixelForecaster
 from ._dxl_hold import describe, hold, hold_here
-from ._dxl_points import calibration_points as calibration_points
+from ._dxl_points import dynamixel_points as dynamixel_points
 from ._dxl_wait import stopped, wait_arrival
 from ._sent import SentProfile
 

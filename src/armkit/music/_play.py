@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import NDArray
 
 from .._errors import InputError, UnreachableError
 from .._inputs import is_number, shown
@@ -86,7 +86,7 @@ def play(
 
     Args:
         arm: the arm, holding the mallet (the scene's pen ``mallet``, if any, says how
-            much longer it makes the tool [m]).
+            much longer it makes the tool, in mm in the scene file).
         scene: the instruments (``armkit.scene``), in the scene frame.
         file: the score (a file, or a Score).  on: play on this instrument only.
         tempo: speed factor, ``MIN_TEMPO..MAX_TEMPO`` (0.8 = 80 %, slower), default 1.
@@ -126,16 +126,15 @@ def prepare(
     hover: float | None = None,
     chords: str = "top",
 ) -> Performance:
-    """Plan and check the whole piece (see ``play``) from where the arm is: ``plan_play``
-    with its model, its servos and its joints now; the Performance to send."""
+    """Plan and check the whole piece (see ``play``: the instruments where the scene puts
+    them in millimetres and degrees, ``hover`` [mm]) from where the arm is: ``plan_play``
+    from ``arm.start()``, its model, its servos and its joints now; the Performance to send."""
     check_tempo(tempo)
     check_transpose(transpose)
     instruments(scene, on)
-    start = arm.start()
     return plan_play(
-        arm.model, scene, file, on, tempo, transpose,
-        servos=servo_kind(start), start=start.q, latency=latency, params=params, hover=hover,
-        chords=chords,
+        arm.start(), scene, file, on, tempo, transpose,
+        latency=latency, params=params, hover=hover, chords=chords,
     )  # fmt: skip
 
 
@@ -148,7 +147,6 @@ def plan_play(
     transpose: int | None = None,
     *,
     servos: str | None = None,
-    start: ArrayLike | None = None,
     latency: LatencyTable | None = None,
     params: StrikeParams | None = None,
     hover: float | None = None,
@@ -157,13 +155,16 @@ def plan_play(
 ) -> Performance:
     """The ``play`` job planned and checked whole on an arm known by its model alone:
     what ``play`` refuses before it moves, refused the same way (``armkit check`` plans a
-    script's ``play`` so). Nothing moves; no arm is needed.
+    script's ``play`` so). Nothing moves; no arm is needed. The instruments stand where
+    the scene puts them (millimetres and degrees, as every scene file gives them).
 
     Args:
-        model: the arm's model (the scene's mallet lengthens its tool), or a ``Start``
-            (``armkit.arm``): its model, its joints and its driver's servos.
-        servos: ``"dynamixel"`` or ``"hobby"`` (default: the model's own driver's).
-        start: the arm's joints when the piece starts [rad] (default: home).
+        model: the arm's model at home (the scene's mallet lengthens its tool), or a
+            ``Start`` (``armkit.arm``, as ``Arm.start()`` gives it): its model, its joints
+            when the piece starts and its driver's servos.
+        servos: ``"dynamixel"`` or ``"hobby"`` (default: the Start's driver's, else the
+            model's own driver's).
+        hover: as ``play``, in millimetres.
         script: errors say a tempo and a transposition as a script writes them
             (``tempo 46%``, ``transpose 12``) rather than ``--tempo 46``.
         The rest as ``play``.
@@ -172,25 +173,22 @@ def plan_play(
         ScoreError, RangeError, PerformanceError (every late note, and the fastest tempo
             the planner plays the piece at), UnreachableError, InputError.
     """
-    if isinstance(model, Start):
-        servos = servos or servo_kind(model)
-        start = model.q if start is None else start
-        model = model.model
+    start = model if isinstance(model, Start) else Start(model, model.home)
+    servos = servos or servo_kind(start)
+    model = start.model
     factor = check_tempo(tempo, script=script)
     score, layout = score_on(scene, file, on, transpose, chords=chords, script=script)
     mallet = mallet_model(model, scene)
-    kind = servos or servo_kind(Start(model, model.home))
-    predictor, rebound, lag, lead = predictors(kind, mallet)
+    predictor, rebound, lag, lead = predictors(servos, mallet)
     perf = plan_performance(
         score, layout, mallet, predictor,
         params=strike_params(params or StrikeParams(rebound_delay=lag - lead), hover),
-        latency=latency or LatencyTable(default=lag), start=start,
+        latency=latency or LatencyTable(default=lag), start=start.q,
         T_world_base=scene.T_world_base, tempo=factor, rebound=rebound,
-        loop=lag if kind == "hobby" else 0.0,
+        loop=lag if servos == "hobby" else 0.0,
     )  # fmt: skip
-    q0 = model.home if start is None else np.asarray(start, dtype=np.float64)
-    check_performance(perf, lambda p: collision(p, scene, q0) is None, script=script)
-    hit = collision(perf, scene, q0)
+    check_performance(perf, lambda p: collision(p, scene, start.q) is None, script=script)
+    hit = collision(perf, scene, start.q)
     if hit is not None:
         raise hit
     return perf
@@ -318,7 +316,8 @@ def collision(perf: Performance, scene: Scene, q0: F64) -> UnreachableError | No
 
 
 def performance_plan(start: Start, perf: Performance, scene: Scene) -> Plan:
-    """``perf`` as a plan from ``start`` (checked as ``plan_play`` checks it): every move
+    """``perf`` (the strikes ``plan_play`` planned where the scene puts the instruments, in
+    millimetres and degrees) as a plan from ``start`` (checked as ``plan_play`` checks it): every move
     sent at its time without waiting, the servos' own ramps doing the rest (hobby servos
     and rebounds: each move lasting its predicted time; else at its speed), then
     ``TAIL_S`` listening after the last move has ended."""
@@ -345,7 +344,9 @@ def _step(perf: Performance, move: Move, hobby: bool, seconds: float) -> Step:
 
 
 def perform(arm: Arm, scene: Scene, perf: Performance) -> Played:
-    """Send every move of ``perf`` at its time (``Arm.run``); in the simulator, listen."""
+    """Send every move of ``perf`` at its time (``Arm.run`` of ``performance_plan``: the
+    strikes where the scene puts the instruments, in millimetres and degrees); in the
+    simulator, listen."""
     start = arm.start()
     plan = performance_plan(start, perf, scene)
     world, clock = arm.world, arm.clock

@@ -167,4 +167,4 @@ def play(
         score_on(scene, file, on, transpose, script=True)
     if arm is not None:
         with _about():
-            plan_play(arm.model, scene, file, on, tempo, transpose, start=arm.q, script=True)
+            plan_play(arm, scene, file, on, tempo, transpose, script=True)

@@ -9,7 +9,7 @@ from .owi_sim import OwiSim
 
 
 class SimOperator:
-    """``ask``/``say`` for :func:`armkit.drivers.timed.run_calibration` on a simulated arm.
+    """``ask``/``say`` for :func:`armkit.drivers.timed.calibrate_owi535` on a simulated arm.
 
     Args:
         sim: the simulated arm (its clock must be simulated, or waiting is real).

@@ -12,7 +12,6 @@ from ._calibration import load_calibration as load_calibration
 from ._jobs import move_item as move_item
 from ._jobs import pick as pick
 from ._jobs import place as place
-from ._jobs import plan_task as plan_task
 from ._jobs import rotate_cube as rotate_cube
 from ._jobs import stack as stack
 from ._jobs import stack_names as stack_names

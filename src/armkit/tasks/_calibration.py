@@ -25,7 +25,8 @@ class CalibrationError(ModelError, ValueError):
 
 @dataclass(frozen=True)
 class Calibration:
-    """Offsets added to every commanded grasp and release point [m]."""
+    """Offsets added to every commanded grasp and release point [mm]: ``height`` up,
+    ``perpendicular`` away from the base axis."""
 
     height: float = 0.0
     perpendicular: float = 0.0
@@ -65,7 +66,7 @@ def load_calibration(path: str | Path) -> Calibration:
             raise CalibrationError(
                 f"{p}: field '{key}': must be within +-{MAX_OFFSET_MM:g} mm, got {v}"
             )
-        values.append(float(v) / 1000.0)
+        values.append(float(v))
     return Calibration(values[0], values[1])
 
 

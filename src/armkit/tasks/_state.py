@@ -227,9 +227,9 @@ def _calibrated(ctx: Context, kin: ArmModel, st: State, point: F64, pitch: float
     cal = ctx.options.calibration
     radial = np.array([base[0], base[1], 0.0])
     norm = float(np.linalg.norm(radial))
-    shifted = base + np.array([0.0, 0.0, cal.height])
+    shifted = base + np.array([0.0, 0.0, cal.height / 1000.0])
     if norm > 1e-9:
-        shifted = shifted + radial / norm * cal.perpendicular
+        shifted = shifted + radial / norm * (cal.perpendicular / 1000.0)
     return solve(kin, shifted, pitch, q, ctx.task, "a point moved by the calibration offsets")
 
 

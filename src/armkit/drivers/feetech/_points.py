@@ -11,7 +11,7 @@ from ...model import FEETECH_SECTION, ArmModel, FeetechSection
 GRIP_POINTS = 17  # the chord law in as many points (piecewise linear between them)
 
 
-def calibration_points(
+def feetech_points(
     model: ArmModel, config: FeetechSection | None = None
 ) -> list[tuple[int, int, tuple[float, ...], tuple[float, ...]]]:
     """(servo ID, joint index or -1 for the gripper, steps, the angles [rad] or openings

@@ -2,12 +2,12 @@
 
 ``open_ssc32(model, port)`` / ``open_maestro(model, port)`` return a driver that
 turns joint angles into pulses through each servo's ``ServoCalibration`` table;
-``run_calibration`` measures a unit's tables. pyserial is imported only when a
+``calibrate_servos`` measures a unit's tables. pyserial is imported only when a
 port is opened.
 """
 
 from ._arm import ServoArmDriver as ServoArmDriver
-from ._calibrate import run_calibration as run_calibration
+from ._calibrate import calibrate_servos as calibrate_servos
 from ._config import load_setup as load_setup
 from ._forecast import ServoForecaster as ServoForecaster
 from ._forecast import servo_forecaster as servo_forecaster

@@ -28,7 +28,7 @@ ASK_TRIES = 3
 MOST_OFF = {"deg": 45.0, "mm": 20.0}
 
 
-def run_calibration(
+def calibrate_servos(
     model: ArmModel, driver: object, ask: Callable[[str], str], say: Callable[[str], None]
 ) -> Path:
     """Calibrate every servo of ``driver`` and write ``<config dir>/<arm>-<driver>.toml``.

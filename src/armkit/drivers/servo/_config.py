@@ -11,7 +11,7 @@ Maestro falls back to the SSC-32's) gives:
     settle_ms     how long the servos take to catch up with their pulses after a move
                   [ms] (default 100): the controller cannot tell, so a waiting move waits
 
-A unit's measured tables (written by ``run_calibration``) live in
+A unit's measured tables (written by ``calibrate_servos``) live in
 ``<config dir>/<arm>-<driver>.toml``; the config dir is ``$ARMKIT_CONFIG_DIR``, else
 ``$XDG_CONFIG_HOME/armkit``, else ``~/.config/armkit``.
 """

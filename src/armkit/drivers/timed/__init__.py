@@ -12,7 +12,7 @@ from __future__ import annotations
 from ..._clock import Clock as Clock
 from ..._clock import WallClock as WallClock
 from ...model import ArmModel
-from ._calibrate import run_calibration as run_calibration
+from ._calibrate import calibrate_owi535 as calibrate_owi535
 from ._config import constant_rate as constant_rate
 from ._config import default_timing as default_timing
 from ._driver import TimedDriver as TimedDriver
@@ -52,6 +52,7 @@ __all__ = [
     "TurnForecast",
     "UncertainEstimateWarning",
     "UnitState",
+    "calibrate_owi535",
     "constant_rate",
     "default_timing",
     "forecast_move",
@@ -62,7 +63,6 @@ __all__ = [
     "path_waypoints",
     "plan_path_runs",
     "rehome",
-    "run_calibration",
     "run_keys",
     "state_path",
     "status_line",

@@ -23,7 +23,7 @@ Ask = Callable[[str], str]
 Say = Callable[[str], None]
 
 
-def run_calibration(
+def calibrate_owi535(
     model: ArmModel,
     driver: TimedDriver,
     ask: Ask,
