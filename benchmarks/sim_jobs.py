@@ -43,6 +43,9 @@ class Pace:
             self.marks.append((t, time.process_time()))
             self.next = t + 1.0
 
+    def on_steps(self, world: World, times: np.ndarray) -> None:
+        self.on_step(world, float(times[-1]))  # a stretch stepped at once: its end
+
     def may_skip(self) -> bool:
         return True  # never keeps the world stepping
 

@@ -80,6 +80,11 @@ class Register:
     default: int = 0
     rule: Rule | None = None  # the Range column: what a WRITE may put here
 
+    def __hash__(self) -> int:
+        """Its address: registers key the values of every simulated write (the generated
+        hash of every field, the rule's too, was a tenth of a simulated packet's cost)."""
+        return hash(self.address)
+
     @property
     def eeprom(self) -> bool:
         """True for EEPROM registers (address < 64): locked while torque is on."""

@@ -21,6 +21,8 @@ CONTACT = 0.5e-3  # [m]: the tip within this of the paper leaves ink (the issue'
 class _SimArm(Protocol):
     def q(self) -> F64: ...
 
+    def recent(self, count: int) -> F64: ...
+
 
 class _World(Protocol):
     def arm(self, name: str | None = None) -> _SimArm: ...
@@ -50,6 +52,14 @@ class PenTracer:
         if self.holding:
             self._t.append(t)
             self._p.append((self.T @ fk(self.tip, world.arm(self.arm).q()))[:3, 3])
+
+    def on_steps(self, world: _World, times: F64) -> None:
+        """Record the tip at every step of a stretch (times [s], shape (N,)) if the pen is
+        held: the angles each step recorded, the tips in one batch."""
+        if self.holding:
+            q = world.arm(self.arm).recent(len(times))
+            self._t.extend(times.tolist())
+            self._p.extend(list((self.T @ fk(self.tip, q))[:, :3, 3]))
 
     def trace(self) -> PenTrace | None:
         """What was recorded, or None if nothing."""

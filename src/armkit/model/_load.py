@@ -72,6 +72,11 @@ def shipped_models() -> list[str]:
     return shipped("armkit.model", "arms")
 
 
+def is_urdf(name_or_path: str | Path) -> bool:
+    """True for ``*.urdf`` and ``*.urdf#tip_link``."""
+    return str(name_or_path).split("#", 1)[0].lower().endswith(".urdf")
+
+
 def load_model(name_or_path: str | Path) -> ArmModel:
     """Load a shipped model by name (``"owi535"``) or a user's TOML file by path.
 
@@ -79,9 +84,9 @@ def load_model(name_or_path: str | Path) -> ArmModel:
         ModelError: the file is missing, is not TOML, or a field is wrong; the
             message names the file, the field and what is allowed.
     """
-    from ._urdf import is_urdf, load_urdf
-
     if is_urdf(name_or_path):  # a URDF file: FILE.urdf or FILE.urdf#TIP_LINK
+        from ._urdf import load_urdf  # xml.etree only for a URDF
+
         return load_urdf(name_or_path)
     path = _resolve(name_or_path)
     data, text = read_toml(path, ModelError, "model file")

@@ -28,11 +28,6 @@ MOVING = ("revolute", "continuous")
 MAX_ORIGIN = 100.0  # [m]: a joint origin farther from its parent is no arm (lengths in mm?)
 
 
-def is_urdf(name_or_path: str | Path) -> bool:
-    """True for ``*.urdf`` and ``*.urdf#tip_link``."""
-    return str(name_or_path).split("#", 1)[0].lower().endswith(".urdf")
-
-
 def load_urdf(name_or_path: str | Path) -> ArmModel:
     """The serial arm of a URDF file, ``path`` or ``path#tip_link``.
 

@@ -111,6 +111,11 @@ class ScenePhysics:
         elif self.holding is None:
             self._closing(sim, width, t)
 
+    def on_steps(self, world: WorldView, times: F64) -> None:
+        """A stretch of steps at ``times`` [s] in which the jaws stayed still (the world
+        steps those only): nothing to grasp or release, so the last step says it all."""
+        self.on_step(world, float(times[-1]))
+
     def may_skip(self) -> bool:
         """The world may skip steps while nothing moves (a still gripper grasps nothing)."""
         return not self._stop_pending

@@ -179,10 +179,34 @@ class SimArm:
         with self._lock:
             return self._recorder.recording()
 
+    def begin(self) -> None:
+        """Before a run of steps (the world calls this, holding its lock): the body takes
+        its controller's outputs as they stand, where it can (``ServoBody.begin``)."""
+        begin = getattr(self.body, "begin", None)
+        if begin is not None:
+            begin()
+
     def step(self, t: float, dt: float) -> None:
         """One simulation step (the world calls this, holding its lock)."""
         self.body.step(t, dt)
         self._recorder.add(t, self.body.q())
+
+    def runnable(self, times: F64) -> bool:
+        """Whether the body can step through ``times`` [s] at once (``ServoBody.runnable``:
+        its outputs say a stretch, its jaws stay still); an OWI's cannot."""
+        runnable = getattr(self.body, "runnable", None)
+        return runnable is not None and bool(runnable(times))
+
+    def run(self, times: F64, dt: float) -> None:
+        """The steps ending at ``times`` [s] at once (after ``runnable`` said yes): each
+        recorded as ``step`` records it."""
+        self._recorder.add_many(times, self.body.run(times, dt))  # type: ignore[attr-defined]
+
+    def recent(self, count: int) -> F64:
+        """The last ``count`` recorded joint angles [rad], shape (count, dof), oldest first
+        (an observer of a stretch of steps reads what each step recorded)."""
+        with self._lock:
+            return self._recorder.last(count)
 
     def hold(self, t: float, dt: float, count: int) -> None:
         """``count`` steps of ``dt`` [s] from ``t`` [s] in which nothing moves (the world

@@ -73,6 +73,22 @@ class Recorder:
         self._q[i] = q
         self._count += 1
 
+    def add_many(self, t: F64, q: F64) -> None:
+        """Append the samples at times ``t`` [s], shape (N,), angles ``q`` [rad], shape
+        (N, dof) (as N calls of ``add``, at once)."""
+        if len(t) >= self.capacity:  # the buffer fills with these samples alone
+            self._t, self._q = t[-self.capacity :].copy(), q[-self.capacity :].copy()
+            self._count = self.capacity
+            return
+        self._put(t, q)
+
+    def last(self, count: int) -> F64:
+        """The last ``count`` samples' angles [rad], shape (count, dof), oldest first
+        (``count`` at most the samples kept)."""
+        rows = self._t.shape[0]
+        at = (self._count - count + np.arange(count)) % rows
+        return self._q[at]
+
     def hold(self, t: float, dt: float, count: int, q: F64) -> None:
         """Append ``count`` samples at times ``t``, ``t + dt``, ... [s], all at angles ``q``
         [rad], shape (dof,) (as ``count`` calls of ``add``, at once)."""
@@ -84,13 +100,18 @@ class Recorder:
             self._q = np.tile(np.asarray(q, dtype=np.float64), (rows, 1))
             self._count = rows
             return
-        rows = self._t.shape[0]
+        self._put(t + dt * np.arange(count, dtype=np.float64), q)
+
+    def _put(self, t: F64, q: F64) -> None:
+        """Append samples at times ``t`` [s], shape (N,) (N below the capacity), angles
+        ``q`` [rad], shape (N, dof) or (dof,) for all."""
+        count, rows = len(t), self._t.shape[0]
         need = min(self.capacity, self._count + count)
         if self._count <= rows < need:
             self._grow(min(self.capacity, max(2 * rows, need)))
             rows = self._t.shape[0]
         at = (self._count + np.arange(count)) % rows
-        self._t[at] = t + dt * np.arange(count)
+        self._t[at] = t
         self._q[at] = q
         self._count += count
 

@@ -17,21 +17,22 @@ object blocks it (``grip_stop``).
 
 from __future__ import annotations
 
-import bisect
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Protocol
+from typing import Protocol, cast
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..model import ArmModel
 from ._arm import Truth
+from ._mount import GRIPPER as GRIPPER
+from ._mount import Mount as Mount
 
 F64 = NDArray[np.float64]
-GRIPPER = -1
-_SNAP = 1e-12  # [rad]: a motor this close to its setpoint lands on it (the lag never would)  # Mount.joint of the gripper's servo
+_SNAP = 1e-12  # [rad]: a motor this close to its setpoint lands on it (the lag never would)
+_MANY = 32  # a stretch of at least this many steps evaluates its setpoints as arrays
 
 
 class Outputs(Protocol):
@@ -47,47 +48,31 @@ class Outputs(Protocol):
         ...
 
 
-@dataclass(frozen=True)
-class Mount:
-    """One controller channel turning one joint (``joint`` index) or the gripper (GRIPPER).
+class Stretch(Protocol):
+    """Outputs that can say a stretch of steps at once (``_xm430_drive.Drives``)."""
 
-    ``units`` (device units, strictly monotonic) and ``values`` ([rad] or [m],
-    increasing) are corresponding points; between and beyond them the relation is
-    linear (the end segments extend).
-    """
+    def setpoint(self, channel: int, t: float) -> float | None: ...
 
-    channel: int
-    joint: int
-    units: tuple[float, ...]
-    values: tuple[float, ...]
+    def setpoints(self, channel: int, times: F64) -> F64 | None:
+        """``setpoint`` at every time of ``times`` [s], shape (N,); None: nothing."""
+        ...
 
-    def __post_init__(self) -> None:
-        if len(self.units) < 2 or len(self.units) != len(self.values):
-            raise ValueError(f"channel {self.channel}: a mount needs >= 2 matching points")
+    def settled(self, channel: int, t: float) -> bool:
+        """True when ``channel``'s setpoint stays what it is at ``t`` [s] from then on."""
+        ...
 
-    def to_si(self, unit: float) -> float:
-        """Device units -> [rad] or [m]."""
-        xs, ys = self.units, self.values
-        if xs[0] > xs[-1]:
-            xs, ys = xs[::-1], ys[::-1]
-        return _interp(unit, xs, ys)
-
-    def from_si(self, value: float) -> float:
-        """[rad] or [m] -> device units."""
-        return _interp(value, self.values, self.units)
-
-    @property
-    def slope(self) -> float:
-        """Device units per [rad] or [m] (of the first segment)."""
-        return (self.units[1] - self.units[0]) / (self.values[1] - self.values[0])
+    def busy(self, t: float) -> bool: ...
 
 
-def _interp(x: float, xs: Sequence[float], ys: Sequence[float]) -> float:
-    i = min(max(bisect.bisect_right(xs, x), 1), len(xs) - 1)
-    x0, x1, y0, y1 = xs[i - 1], xs[i], ys[i - 1], ys[i]
-    if x1 == x0:  # a degenerate table (a gripper 0..0 mm wide, that never opens): its start
-        return y0
-    return y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+def frozen(outputs: Outputs) -> Outputs:
+    """``outputs`` as they stand until the host's next bytes: the controller's
+    ``frozen()`` where it has one (a Dynamixel bus: each servo's drive taken once),
+    else the controller itself (pulse outputs are already functions of time)."""
+    freeze = getattr(outputs, "frozen", None)
+    if freeze is None:
+        return outputs
+    taken: Outputs = freeze()
+    return taken
 
 
 @dataclass(frozen=True)
@@ -109,7 +94,12 @@ class ServoParams:
 
 
 class ServoBody:
-    """Servos on every joint of ``model`` (and a gripper servo if mounted), see module doc."""
+    """Servos on every joint of ``model`` (and a gripper servo if mounted), see module doc.
+
+    The state is kept as Python floats (a handful of joints: cheaper than numpy per step);
+    ``step`` integrates one step, ``run`` a stretch of them at once (the world's choice),
+    with the same arithmetic: the same angles to the bit.
+    """
 
     def __init__(
         self, model: ArmModel, params: ServoParams, truth: Truth, mounts: Sequence[Mount]
@@ -118,14 +108,12 @@ class ServoBody:
         self.outputs: Outputs | None = None
         self.mounts = tuple(m for m in mounts if m.joint != GRIPPER)
         self.grip_mount = next((m for m in mounts if m.joint == GRIPPER), None)
-        self.motor = np.array(truth.q, dtype=np.float64)
-        self.velocity = np.zeros_like(self.motor)  # of the motors [rad/s]
-        self.joint = self.motor.copy()
-        self.setpoint = self.motor.copy()
-        self.lower, self.upper = model.lower, model.upper
-        self.motor_vmax = np.array([j.peak_velocity for j in model.joints]) * (  # the servo's own
-            params.motor_speed_margin
-        )
+        self.motor = [float(a) for a in truth.q]
+        self.velocity = [0.0] * len(self.motor)  # of the motors [rad/s]
+        self.joint = list(self.motor)
+        self.setpoint = list(self.motor)
+        self.lower, self.upper = model.lower.tolist(), model.upper.tolist()
+        self.motor_vmax = [j.peak_velocity * params.motor_speed_margin for j in model.joints]
         self.grip_width = truth.grip
         self.grip_goal = truth.grip
         self.grip_velocity = 0.0  # [m/s]
@@ -134,10 +122,19 @@ class ServoBody:
         self._busy = False
         self._moving = False
         self._t = 0.0  # the end of the last step [s]
+        self._now: Outputs | None = None  # the outputs as taken by ``begin``
+        self._stretch: Stretch | None = None  # the same, if they say a stretch at once
+
+    def begin(self) -> None:
+        """Take the controller's outputs as they stand (``frozen``): the world calls this
+        before each run of steps, as they change only when the host's bytes arrive."""
+        self._now = None if self.outputs is None else frozen(self.outputs)
+        says_stretch = callable(getattr(self._now, "settled", None))
+        self._stretch = cast("Stretch", self._now) if says_stretch else None
 
     def step(self, t: float, dt: float) -> None:
         """Integrate one step of ``dt`` [s] ending at ``t``."""
-        outputs, self._t = self.outputs, t
+        outputs, self._t = self.outputs if self._now is None else self._now, t
         if outputs is not None:
             for mount in self.mounts:
                 si = self._target(outputs, mount, t)
@@ -163,23 +160,25 @@ class ServoBody:
         return si
 
     def _move_motors(self, dt: float) -> None:
-        error = self.setpoint - self.motor
-        if not error.any():  # at rest on the setpoint: nothing to integrate
+        motor, setpoint = self.motor, self.setpoint
+        if motor == setpoint:  # at rest on the setpoint: nothing to integrate
             if self._moving:
-                self.velocity[:] = 0.0
+                self.velocity = [0.0] * len(motor)
                 self._moving = False
             return
-        lag = self.params.lag
+        lag, half = self.params.lag, self.params.backlash / 2.0
         alpha = 1.0 - math.exp(-dt / lag) if lag > 0 else 1.0
-        cap = self.motor_vmax * dt
-        move = np.minimum(np.maximum(error * alpha, -cap), cap)
-        move[np.abs(error) < _SNAP] = error[np.abs(error) < _SNAP]  # land exactly
-        self.motor += move
-        self.velocity = move / dt
+        joint, velocity, vmax = self.joint, self.velocity, self.motor_vmax
+        lower, upper = self.lower, self.upper
+        for j, goal in enumerate(setpoint):
+            error = goal - motor[j]
+            cap = vmax[j] * dt
+            move = error if abs(error) < _SNAP else min(max(error * alpha, -cap), cap)
+            m = motor[j] = motor[j] + move
+            velocity[j] = move / dt
+            held = min(max(joint[j], m - half), m + half)
+            joint[j] = min(max(held, lower[j]), upper[j])
         self._moving = True
-        half = self.params.backlash / 2.0
-        joint = np.minimum(np.maximum(self.joint, self.motor - half), self.motor + half)
-        self.joint = np.minimum(np.maximum(joint, self.lower), self.upper)
 
     def _move_gripper(self, dt: float) -> None:
         step = self.params.grip_speed * dt
@@ -189,9 +188,73 @@ class ServoBody:
         self.grip_velocity = (width - self.grip_width) / dt
         self.grip_width = width
 
+    # -- a stretch of steps at once ------------------------------------------------
+    def runnable(self, times: F64) -> bool:
+        """Whether ``run`` can do the steps ending at ``times`` [s]: the outputs say a
+        stretch at once and the jaws stay still through it (the world steps any other
+        stretch one by one, for the observers that watch the jaws close)."""
+        outputs = self._stretch
+        if outputs is None:
+            return False
+        goal = self._grip_goal(outputs, float(times[0]))
+        return goal is not None and self._jaws_still(goal)
+
+    def run(self, times: F64, dt: float) -> F64:
+        """The steps of ``dt`` [s] ending at ``times`` [s], shape (N,), as ``step`` at each
+        (after ``runnable`` said yes); returns the joint angles after each, (N, dof) [rad]."""
+        outputs, setpoint = self._stretch, self.setpoint
+        if outputs is None:  # not runnable: nothing to do
+            return np.empty((0, len(self.joint)))
+        goal = self._grip_goal(outputs, float(times[0]))
+        self.grip_goal, self.grip_velocity = self.grip_goal if goal is None else goal, 0.0
+        columns: list[tuple[int, list[float]]] = []
+        for mount in self.mounts:
+            column = self._column(outputs, mount, times)
+            if isinstance(column, list):
+                columns.append((mount.joint, column))
+            elif column is not None:
+                setpoint[mount.joint] = column
+        rows = []
+        for k in range(len(times)):
+            for j, column in columns:
+                setpoint[j] = column[k]
+            self._move_motors(dt)
+            rows.append(list(self.joint))
+        self._t = float(times[-1])
+        self._busy = outputs.busy(self._t)
+        return np.array(rows, dtype=np.float64)
+
+    def _column(self, outputs: Stretch, mount: Mount, times: F64) -> list[float] | float | None:
+        """``mount``'s setpoints [rad] through ``times`` [s]: one (it stays), one per step,
+        or None (its servo holds nothing). A few steps go one by one, many at once
+        (``to_si_many``: the same numbers)."""
+        if outputs.settled(mount.channel, float(times[0])):
+            return self._target(outputs, mount, float(times[0]))
+        if len(times) < _MANY:
+            units = [outputs.setpoint(mount.channel, t) for t in times.tolist()]
+            return [mount.to_si(u) for u in units if u is not None]
+        many = outputs.setpoints(mount.channel, times)
+        return None if many is None else mount.to_si_many(many).tolist()
+
+    def _grip_goal(self, outputs: Stretch, t: float) -> float | None:
+        """The gripper's goal from ``t`` [s] on, if it stays one (None: it changes)."""
+        mount = self.grip_mount
+        if mount is None:
+            return self.grip_goal
+        if not outputs.settled(mount.channel, t):
+            return None
+        goal = self._target(outputs, mount, t)
+        return self.grip_goal if goal is None else goal
+
+    def _jaws_still(self, goal: float) -> bool:
+        """Whether the jaws stay where they are with ``goal`` [m] (there, or stopped on an
+        object they close on)."""
+        width = self.grip_width
+        return goal == width or (self._stop is not None and goal < width == self._stop)
+
     def q(self) -> F64:
         """True joint angles [rad], shape (dof,)."""
-        return self.joint
+        return np.array(self.joint, dtype=np.float64)
 
     def grip(self) -> float:
         """True gripper opening [m]."""
@@ -219,10 +282,11 @@ class ServoBody:
         """A hand moves the joints to ``q`` [rad], shape (dof,), stopped by the mechanical
         limits. ValueError (nothing moved) if a joint that would move is held by its servo."""
         q = np.minimum(np.maximum(np.asarray(q, dtype=np.float64), self.lower), self.upper)
-        if q.shape != self.joint.shape:
+        if q.shape != (len(self.joint),):
             raise ValueError(f"push takes {len(self.joint)} joint angles [rad], got {q.shape}")
         free = self.limp()
-        held = [j for j in np.flatnonzero(np.abs(q - self.joint) > 1e-9) if j not in free]
+        moved = np.flatnonzero(np.abs(q - np.array(self.joint)) > 1e-9).tolist()
+        held = [j for j in moved if j not in free]
         if held:
             names = ", ".join(self.model.joint_names[j] for j in held)
             raise ValueError(f"{names}: the servo holds it (torque on); turn the torque off first")
@@ -240,7 +304,8 @@ class ServoBody:
 
     def at_rest(self) -> bool:
         """Setpoints steady and every motor within ``settle`` of its setpoint."""
-        near = float(np.max(np.abs(self.motor - self.setpoint), initial=0.0)) <= self.params.settle
+        gap = max((abs(m - s) for m, s in zip(self.motor, self.setpoint, strict=True)), default=0.0)
+        near = gap <= self.params.settle
         grip_still = abs(self.grip_goal - self.grip_width) < 1e-6 or self._stop is not None
         return not self._busy and near and grip_still
 

@@ -50,7 +50,13 @@ F64 = NDArray[np.float64]
 
 
 class Observer(Protocol):
-    """Something that watches the world: called after every simulation step."""
+    """Something that watches the world: called after every simulation step.
+
+    An observer may also have ``on_steps(world, times)``: the world then steps a
+    stretch in which no gripper moves at once and calls it once, with the stretch's step
+    times [s], shape (N,) (the arms' recordings hold every step: ``SimArm.recent``);
+    while any observer lacks it, every step is stepped and observed one by one.
+    """
 
     def on_step(self, world: World, t: float) -> None:
         """The world has just stepped to time ``t`` [s]; read it, or change the scene."""
@@ -59,6 +65,7 @@ class Observer(Protocol):
 
 MAX_RATE_HZ = 100_000.0  # simulation steps per simulated second, at most
 STILL_CHECK = 100  # steps stepped between looks at whether the world is still
+MIN_STRETCH = 8  # steps that go at once (``SimArm.run``) rather than one by one, at least
 
 
 def _may_skip(observer: Observer) -> bool:
@@ -277,27 +284,51 @@ class World:
         if not self._arms and not self._observers:
             self._steps += count  # nothing to integrate: jump
             return
-        arms, observers, dt = tuple(self._arms.values()), tuple(self._observers), self.dt
+        arms, observers = tuple(self._arms.values()), tuple(self._observers)
+        stretches = all(callable(getattr(o, "on_steps", None)) for o in observers)
         self._in_step = True
         try:
             while count > 0:
                 n = min(count, STILL_CHECK)
                 before = [(arm.q(), arm.grip()) for arm in arms] if count > n + 1 else None
-                for _ in range(n):
-                    self._steps += 1
-                    t = self._steps * dt
-                    for arm in arms:
-                        arm.step(t, dt)
-                    for observer in observers:
-                        observer.on_step(self, t)
+                for arm in arms:
+                    arm.begin()
+                if not (stretches and n >= MIN_STRETCH and self._stretch(arms, observers, n)):
+                    self._one_by_one(arms, observers, n)
                 count -= n
                 if before is not None and _still(arms, observers, before):
                     for arm in arms:
-                        arm.hold((self._steps + 1) * dt, dt, count - 1)
+                        arm.hold((self._steps + 1) * self.dt, self.dt, count - 1)
                     self._steps += count - 1
                     count = 1
         finally:
             self._in_step = False
+
+    def _one_by_one(
+        self, arms: tuple[SimArm, ...], observers: tuple[Observer, ...], n: int
+    ) -> None:
+        """``n`` steps, each arm then each observer at each."""
+        dt = self.dt
+        for _ in range(n):
+            self._steps += 1
+            t = self._steps * dt
+            for arm in arms:
+                arm.step(t, dt)
+            for observer in observers:
+                observer.on_step(self, t)
+
+    def _stretch(self, arms: tuple[SimArm, ...], observers: tuple[Observer, ...], n: int) -> bool:
+        """``n`` steps at once, if every arm can (``SimArm.runnable``: no jaws move in
+        them) and every observer takes a stretch (``on_steps``); False: nothing done."""
+        times = np.arange(self._steps + 1, self._steps + n + 1, dtype=np.float64) * self.dt
+        if not all(arm.runnable(times) for arm in arms):
+            return False
+        for arm in arms:
+            arm.run(times, self.dt)
+        self._steps += n
+        for observer in observers:
+            observer.on_steps(self, times)  # type: ignore[attr-defined]
+        return True
 
     def _run_to(self, t: float) -> None:
         """Move the clock to ``t`` [s] and step the arms over every grid time up to it."""

@@ -18,10 +18,12 @@ register by name but the Bus Watchdog's list of locked goals (``_xm430_notes``).
 
 from __future__ import annotations
 
+import functools
+from dataclasses import dataclass
+
 from ..devices import dxl_packet as pkt
 from ..devices import xm430 as xm
 from ..devices import xm430_notes
-from ._xm430_memory import merged
 
 _OWNER: dict[int, xm.Register] = {
     a: reg for reg in xm.XM430_W350.values() for a in range(reg.address, reg.address + reg.size)
@@ -31,14 +33,28 @@ _LOCKED = frozenset(xm.register(name) for name in xm430_notes.WATCHDOG_LOCKS)
 Written = dict[xm.Register, int]  # register -> the value the write gives it
 
 
-def _touched(start: int, size: int) -> list[xm.Register]:
-    """The registers with at least one byte in ``start .. start + size``, in order."""
+@dataclass(frozen=True, slots=True)
+class _Span:
+    """What a write of some bytes at some address covers (from the table alone)."""
+
+    regs: tuple[xm.Register, ...]  # the registers with a byte in it, in order
+    open: bool  # every one writable
+    eeprom: bool  # one of them in the EEPROM area
+    whole: bool  # it starts and ends on register boundaries
+
+
+@functools.cache
+def _span(start: int, size: int) -> _Span:
+    """The registers with at least one byte in ``start .. start + size`` (see ``_Span``)."""
     found: list[xm.Register] = []
     for address in range(start, start + size):
         reg = _OWNER.get(address)
         if reg is not None and (not found or found[-1] is not reg):
             found.append(reg)
-    return found
+    regs = tuple(found)
+    whole = bool(regs) and regs[0].address >= start
+    whole = whole and regs[-1].address + regs[-1].size <= start + size
+    return _Span(regs, all(r.writable for r in regs), any(r.eeprom for r in regs), whole)
 
 
 def check_write(
@@ -54,13 +70,14 @@ def check_write(
     ID."""
     written: Written = {}
     for start, chunk in pieces:
-        regs = _touched(start, len(chunk))
-        if not regs or any(not r.writable or (r.eeprom and eeprom_locked) for r in regs):
+        span = _span(start, len(chunk))
+        if not span.regs or not span.open or (span.eeprom and eeprom_locked):
             return pkt.ACCESS_ERROR, {}
-        if regs[0].address < start or regs[-1].address + regs[-1].size > start + len(chunk):
+        if not span.whole:
             return pkt.DATA_LENGTH_ERROR, {}
-        for reg in regs:
-            written[reg] = merged(memory, reg, start, chunk)
+        for reg in span.regs:  # each one whole: its value is its bytes of the chunk
+            at = reg.address - start
+            written[reg] = reg.decode(chunk[at : at + reg.size])
     if watchdog_tripped and any(reg in _LOCKED for reg in written):
         return pkt.DATA_RANGE_ERROR, {}
 

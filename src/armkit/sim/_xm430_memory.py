@@ -41,6 +41,8 @@ def read_through(memory: bytearray, address: int, size: int) -> bytes:
 def runs(memory: bytearray, address: int, data: bytes) -> list[tuple[int, bytes]]:
     """A write as runs of consecutive target bytes: an Indirect Data byte goes where its
     Indirect Address points."""
+    if address + len(data) <= _FIRST_INDIRECT:  # no Indirect Data: one run, where it says
+        return [(address, bytes(data))]
     found: list[tuple[int, bytearray]] = []
     for i, byte in enumerate(data):
         target = _target(memory, address + i)
@@ -49,12 +51,3 @@ def runs(memory: bytearray, address: int, data: bytes) -> list[tuple[int, bytes]
         else:
             found.append((target, bytearray((byte,))))
     return [(start, bytes(chunk)) for start, chunk in found]
-
-
-def merged(memory: bytearray, reg: xm.Register, start: int, chunk: bytes) -> int:
-    """``reg``'s value after writing ``chunk`` at ``start`` (a partial write keeps the
-    register's other bytes)."""
-    raw = bytearray(memory[reg.address : reg.address + reg.size])
-    part = chunk[reg.address - start : reg.address - start + reg.size]
-    raw[: len(part)] = part
-    return reg.decode(raw)

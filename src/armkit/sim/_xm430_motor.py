@@ -16,11 +16,13 @@ its next packet and as every simulation step sees it (``setpoint`` only reads).
 from __future__ import annotations
 
 import math
+import struct
 from collections.abc import Callable
 from typing import Protocol
 
 from ..devices import xm430 as xm
 from ..devices import xm430_notes as notes
+from ._xm430_drive import Drive
 from ._xm430_profile import (
     TICKS_PER_S2_PER_UNIT,
     TICKS_PER_S_PER_UNIT,
@@ -47,13 +49,27 @@ class Servo(Protocol):
 
 TURN = xm.TICKS_PER_TURN
 NO_LOAD_TICKS_PER_S = notes.NO_LOAD_RPM * TURN / 60.0
-_PRESENT = {  # the registers every read refreshes, looked up once
-    name: xm.register(name)
-    for name in (
-        "Present Position", "Present Velocity", "Present Current", "Present PWM",
-        "Position Trajectory", "Velocity Trajectory", "Realtime Tick", "Moving", "Moving Status",
+_PRESENT = tuple(  # the registers every read refreshes, by address: one block of the table
+    sorted(
+        (xm.register(name) for name in (
+            "Present Position", "Present Velocity", "Present Current", "Present PWM",
+            "Position Trajectory", "Velocity Trajectory", "Realtime Tick", "Moving",
+            "Moving Status",
+        )),
+        key=lambda reg: reg.address,
     )
-}  # fmt: skip
+)  # fmt: skip
+_FIRST = _PRESENT[0].address
+_CODE = {
+    (1, False): "B",
+    (1, True): "b",
+    (2, False): "H",
+    (2, True): "h",
+    (4, False): "I",
+    (4, True): "i",
+}
+# the block's layout, from the table (little-endian, no gaps: Realtime Tick .. Position Trajectory)
+_BLOCK = struct.Struct("<" + "".join(_CODE[r.size, r.signed] for r in _PRESENT))
 
 
 class Motor:
@@ -81,17 +97,12 @@ class Motor:
         feedback = self.servo.feedback
         return self.motion.at(now) if feedback is None else feedback()
 
-    def setpoint(self, now: float) -> float:
-        """Where the motion drives the shaft at ``now`` [tick] (stopped where an expired
-        Bus Watchdog stopped it). Reads only: a simulation step calls it from the
-        world's thread while the bus's thread may be answering the host."""
-        expired = self.expiry()
-        return self.motion.at(now if expired is None else min(now, expired))[0]
-
-    def busy(self, now: float) -> bool:
-        """True while the motion runs (reads only, as ``setpoint``)."""
-        expired = self.expiry()
-        return self.motion.running(now) and (expired is None or now <= expired)
+    def drive(self) -> Drive:
+        """What the motor is driven to until the next packet: the motion, stopped where
+        an armed Bus Watchdog will stop it, torque on or off. Reads only: a simulation
+        step calls it from the world's thread while the bus's thread may be answering
+        the host."""
+        return Drive(self.motion, self.expiry(), bool(self.servo.value("Torque Enable")))
 
     def refresh(self, now: float) -> None:
         """Write the present-state registers from the shaft and the motion at ``now``."""
@@ -120,10 +131,12 @@ class Motor:
             "Moving": int(running or abs(units) > servo.value("Moving Threshold")),
             "Moving Status": status | motion.kind << xm.PROFILE_SHIFT,
         }
-        memory = servo.memory
-        for name, value in values.items():
-            reg = _PRESENT[name]
-            memory[reg.address : reg.address + reg.size] = reg.encode(value)
+        try:  # the block at once
+            _BLOCK.pack_into(servo.memory, _FIRST, *(values[r.name] for r in _PRESENT))
+        except struct.error:  # a value that does not fit: InputError naming its register
+            for reg in _PRESENT:
+                reg.encode(values[reg.name])
+            raise
 
     # -- what changes it ------------------------------------------------------------
     def place(self, position: float, now: float) -> None:

@@ -16,8 +16,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+from numpy.typing import NDArray
+
 from ..devices import xm430 as xm
 
+F64 = NDArray[np.float64]
 TICKS_PER_S_PER_UNIT = xm.VELOCITY_UNIT_RPM * xm.TICKS_PER_TURN / 60.0
 TICKS_PER_S2_PER_UNIT = xm.ACCELERATION_UNIT_RPM2 * xm.TICKS_PER_TURN / 3600.0
 
@@ -52,6 +56,22 @@ class Profile:
             self.start + self.distance - 0.5 * peak / self.ramp * left * left,
             peak * left / self.ramp,
         )
+
+    def positions(self, times: F64) -> F64:
+        """``at(t)[0]`` for every time of ``times`` [s], shape (N,) [tick]: the same
+        arithmetic, element by element, so each equals the scalar's to the bit."""
+        t = np.maximum(0.0, times - self.t0)
+        end = self.start + self.distance
+        if self.total <= 0.0:
+            return np.full(t.shape, end)
+        peak = self.distance / (self.total - self.ramp)
+        left = self.total - t
+        bend = 0.5 * peak / self.ramp if self.ramp > 0.0 else 0.0  # no ramp: rows unused
+        rising = self.start + bend * t * t
+        falling = end - bend * left * left
+        cruise = self.start + peak * (t - 0.5 * self.ramp)
+        conditions = [t >= self.total, t < self.ramp, t <= self.total - self.ramp]
+        return np.select(conditions, [np.full(t.shape, end), rising, cruise], falling)
 
     def running(self, now: float) -> bool:
         """True while the profile is still generating motion."""
@@ -89,6 +109,10 @@ class Spin:
         return self.start + 0.5 * (self.v0 + self.v1) * self.ramp + self.v1 * (
             t - self.ramp
         ), self.v1
+
+    def positions(self, times: F64) -> F64:
+        """``at(t)[0]`` for every time of ``times`` [s], shape (N,) [tick]."""
+        return np.array([self.at(t)[0] for t in times.tolist()])
 
     def running(self, now: float) -> bool:
         """True while it turns or still changes speed."""

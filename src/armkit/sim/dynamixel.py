@@ -34,9 +34,12 @@ from ..devices import xm430 as xm
 from ..devices import xm430_notes as notes
 from ._dxl_groups import GroupInstructions, u16
 from ._outbox import Outbox, log
+from ._xm430_drive import Drives
 from .xm430 import Servo
 
 FAULTS = ("drop", "corrupt", "late", "vanish", "overload")
+_ID = xm.register("ID").address  # one-byte registers read on every packet, by address
+_PROTOCOL_TYPE = xm.register("Protocol Type").address
 OPENMANIPULATOR_X_IDS = (11, 12, 13, 14, 15)
 Reply = tuple[int, bytes, Callable[[], None] | None]  # error, data, what to do after replying
 Handler = Callable[[Servo, pkt.Packet, bool], Reply]  # (servo, packet, by its secondary ID)
@@ -121,6 +124,11 @@ class SimDynamixelBus(GroupInstructions):
         """True while any servo's profile is running."""
         return any(servo.busy(t) for servo in self.servos.values())
 
+    def frozen(self) -> Drives:
+        """The servos' outputs as they stand until the host's next bytes (one ``Drive``
+        per servo, taken now): what a run of simulation steps evaluates."""
+        return Drives({sid: servo.drive() for sid, servo in self.servos.items()})
+
     # -- the wire --------------------------------------------------------------
     def hear(self, data: bytes, now: float, baudrate: int | None) -> bool:
         """Bytes from a host at ``baudrate`` [bit/s] (None: unknown, every servo hears);
@@ -199,7 +207,7 @@ class SimDynamixelBus(GroupInstructions):
         """Whether the servo kept under ``sid`` is present (see ``present``)."""
         return (
             sid not in self._vanished
-            and servo.value("Protocol Type") == 2
+            and servo.memory[_PROTOCOL_TYPE] == 2
             and (self._rate is None or servo.baudrate == self._rate)
         )
 
@@ -211,7 +219,7 @@ class SimDynamixelBus(GroupInstructions):
             (
                 s
                 for sid, s in self.servos.items()
-                if s.value("ID") == servo_id and self._hears(sid, s)
+                if s.memory[_ID] == servo_id and self._hears(sid, s)
             ),
             None,
         )

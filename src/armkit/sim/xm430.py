@@ -24,6 +24,7 @@ from ..devices import dxl_packet as pkt
 from ..devices import xm430 as xm
 from ..devices import xm430_notes as notes
 from ._xm430_checks import Written, check_write
+from ._xm430_drive import Drive
 from ._xm430_memory import read_through, runs
 from ._xm430_motor import Motor
 from ._xm430_profile import Motion, Profile, velocity_profile_times
@@ -31,6 +32,8 @@ from ._xm430_profile import Motion, Profile, velocity_profile_times
 __all__ = ["Profile", "Servo", "velocity_profile_times"]
 
 _TORQUE_ENABLE = xm.register("Torque Enable").address
+# name -> (first byte, past the last, signed): the table looked up once, not per access
+_SLOTS = {r.name: (r.address, r.address + r.size, r.signed) for r in xm.XM430_W350.values()}
 _REGISTERS = sorted(xm.XM430_W350.values(), key=lambda r: r.address)
 _RAM = [r for r in _REGISTERS if not r.eeprom and r.writable and not r.name.startswith("Indirect")]
 _KEPT_BY_BACKUP = [
@@ -89,9 +92,15 @@ class Servo:
         self.memory[reg.address : reg.address + reg.size] = reg.encode(value)
 
     def value(self, name: str) -> int:
-        """Register value as stored (no refresh)."""
-        reg = xm.register(name)
-        return reg.decode(self.memory[reg.address : reg.address + reg.size])
+        """Register value as stored (no refresh); InputError for an unknown name."""
+        slot = _SLOTS.get(name)
+        if slot is None:  # not in the table: xm.register raises, naming those that are
+            reg = xm.register(name)
+            return reg.decode(self.memory[reg.address : reg.address + reg.size])
+        start, stop, signed = slot
+        if stop - start == 1 and not signed:  # a byte register: the byte itself
+            return self.memory[start]
+        return int.from_bytes(self.memory[start:stop], "little", signed=signed)
 
     def has(self, feature: str) -> bool:
         """True when its firmware has ``feature`` (a key of ``notes.FROM_FIRMWARE``)."""
@@ -125,15 +134,17 @@ class Servo:
         self.motor.refresh(self.clock())
         return read_through(self.memory, address, size)
 
+    def drive(self) -> Drive:
+        """What the motor is driven to until the next packet (``_xm430_drive``)."""
+        return self.motor.drive()
+
     def setpoint(self, now: float) -> float | None:
         """Where the motor is driven to at ``now`` [tick, shaft]; None: torque off."""
-        if not self.memory[_TORQUE_ENABLE]:
-            return None
-        return self.motor.setpoint(now)
+        return self.motor.drive().setpoint(now)
 
     def busy(self, now: float) -> bool:
         """True while the motor's motion is running."""
-        return self.motor.busy(now)
+        return self.motor.drive().busy(now)
 
     def hold_at(self, tick: int) -> None:
         """Put the shaft at ``tick`` (its frame unshifted), at rest, goal there (assembly)."""
@@ -164,9 +175,10 @@ class Servo:
         off, turns torque on first."""
         if self._torque_by_goal(written):
             self.motor.torque(True)
-        before = {reg: self.value(reg.name) for reg in written}
+        memory = self.memory
+        before = {reg: reg.decode(memory[reg.address : reg.address + reg.size]) for reg in written}
         for reg, value in written.items():
-            self.memory[reg.address : reg.address + reg.size] = reg.encode(value)
+            memory[reg.address : reg.address + reg.size] = reg.encode(value)
         for reg in sorted(written, key=lambda r: r.address):
             effect = self.effects.get(reg.name)
             if effect is not None:
