@@ -140,7 +140,7 @@ def search_once(scene: Scene, cube: Cube, seed: int) -> tuple[bool, bool, float 
     physics = tasks.attached(arm)
     if result is None or not result.found or result.position is None or physics is None:
         return result is not None and result.found, False, None
-    error = float(np.linalg.norm(result.position[:2] - cube.position[:2])) * 1000
+    error = float(np.linalg.norm(result.position[:2] - cube.position[:2] * 1000))  # mm
     box = scene.container("bin")
     inside = bool(np.all(np.abs(physics.cube("object").center[:2] - box.position[:2]) < 0.04))
     return True, inside, error

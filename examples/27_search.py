@@ -15,8 +15,6 @@ Run: .venv/bin/python examples/27_search.py
 
 from __future__ import annotations
 
-import math
-
 from armkit import Arm, tasks
 from armkit.scene import load_scene
 
@@ -27,4 +25,4 @@ with Arm("lynx6", "sim") as arm:
     truth = scene.cube("object").position * 1000
     print(f"the object really was at ({truth[0]:.1f}, {truth[1]:.1f}) mm")
     for angle, volts in result.readings[:5]:
-        print(f"  {math.degrees(angle):5.1f} deg  {volts:.2f} V")
+        print(f"  {angle:5.1f} deg  {volts:.2f} V")

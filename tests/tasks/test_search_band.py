@@ -35,7 +35,7 @@ def test_a_search_that_sees_nothing_says_the_band_it_saw() -> None:
     with Arm("lynx6", "sim", world=World(), scene=scene) as arm:
         result = tasks.search(arm, scene, start=100.0, stop=120.0)
     assert not result.found
-    near, far = (round(b * 1000) for b in result.band)
+    near, far = (round(b) for b in result.band)  # mm
     assert (near, far) == (130, 390)  # held 90 mm out, the sensor's 4..30 cm beyond
     assert result.lines()[-1] == "nothing found 130..390 mm from the base axis along the arc"
 
@@ -43,5 +43,5 @@ def test_a_search_that_sees_nothing_says_the_band_it_saw() -> None:
 def test_an_object_in_the_band_is_found(tmp_path: Path) -> None:
     result = _search(tmp_path, float(np.hypot(170.0, -60.0)))  # where the file has it
     assert result.found and result.position is not None
-    near, far = (b * 1000 for b in result.band)
-    assert near < float(np.linalg.norm(result.position[:2])) * 1000 < far
+    near, far = result.band
+    assert near < float(np.linalg.norm(result.position[:2])) < far  # mm

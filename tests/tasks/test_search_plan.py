@@ -3,8 +3,6 @@ same scan algorithm as the run, its readings predicted from the scene; nothing m
 
 from __future__ import annotations
 
-import math
-
 import pytest
 
 from armkit import Arm, tasks
@@ -21,7 +19,7 @@ def test_the_planned_search_scans_as_the_run_does_and_finds_the_object(name: str
         assert (arm.read() == before).all()  # planning moved nothing
         result = tasks.search(arm, scene)
     scans = [s.label for s in plan.steps if s.label.startswith("scan at")]
-    assert scans == [f"scan at {math.degrees(a):.0f} deg" for a, _ in result.readings]
+    assert scans == [f"scan at {a:.0f} deg" for a, _ in result.readings]
     assert [s.label for s in plan.steps[-2:]] == ["drop it in bin", "home"]
     assert plan.end.held is None and plan.seconds > 0.0
 

@@ -51,7 +51,7 @@ def _search(args: argparse.Namespace) -> int:
         result = tasks.search(arm, scene, **job_arguments(args))
         if not result.found:
             arc = _arc(args.start, args.stop, args.step)
-            near, far = (round(b * 1000) for b in result.band)
+            near, far = (round(b) for b in result.band)
             todo = (
                 f"widen --from/--to (0..180), lower --step, or put the object {near}..{far} mm "
                 f"from the base on that arc (nearer than {near} mm it is inside the sensor's "

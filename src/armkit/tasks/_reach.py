@@ -32,8 +32,8 @@ class ReachResult:
     """What the reach did.
 
     Attributes:
-        found: a hand was seen.  angle: where [rad] (002's servo convention).
-        distance: the sensor's distance at the end of the approach [m].
+        found: a hand was seen.  angle: where [deg] (002's servo convention).
+        distance: the sensor's distance at the end of the approach [mm].
         steps: approach steps taken.  shakes: up-and-down shakes done.  via: the sensor's line.
     """
 
@@ -50,8 +50,8 @@ class ReachResult:
             return [f"sensor read through {self.via}", "no hand within 30 cm along the arc"]
         return [
             f"sensor read through {self.via}",
-            f"hand at {math.degrees(self.angle):.1f} deg; came {count(self.steps, 'step')} nearer, "
-            f"to {self.distance * 1000:.0f} mm; shook {count(self.shakes, 'time')}",
+            f"hand at {self.angle:.1f} deg; came {count(self.steps, 'step')} nearer, "
+            f"to {self.distance:.0f} mm; shook {count(self.shakes, 'time')}",
         ]
 
 
@@ -90,7 +90,8 @@ def reach(
     arm.home()
     if done is None:
         return ReachResult(False, None, None, 0, 0, via)
-    return ReachResult(True, done[0], done[1], done[2], shakes, via)
+    angle, distance, steps = done
+    return ReachResult(True, math.degrees(angle), 1000.0 * distance, steps, shakes, via)
 
 
 def plan_reach(

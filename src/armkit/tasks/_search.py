@@ -44,14 +44,14 @@ class SearchResult:
 
     Attributes:
         found: an object was seen within the sensor's range.
-        angle: the base angle it was seen at, 002's servo convention [rad].
-        distance: the sensor's distance to it there [m].
-        position: where its bottom face's centre is estimated, scene frame [m], (3,).
-        readings: (angle [rad], output [V]) of every reading, in order.
+        angle: the base angle it was seen at, 002's servo convention [deg].
+        distance: the sensor's distance to it there [mm].
+        position: where its bottom face's centre is estimated, scene frame [mm], (3,).
+        readings: (angle [deg], output [V]) of every reading, in order.
         plan: the pick-and-drop plan carried out, or None.
         servos_off: the motors were switched off at the end (False: the driver cannot).
         via: how the sensor was read.
-        band: how far from the arm's base axis [m] (near, far) the sensor sees along the
+        band: how far from the arm's base axis [mm] (near, far) the sensor sees along the
             arc: where it is held plus its 4..30 cm (an object nearer is inside its minimum).
     """
 
@@ -69,12 +69,12 @@ class SearchResult:
         """The result for people (mm, deg)."""
         out = [f"sensor read through {self.via}; {count(len(self.readings), 'reading')}"]
         if not self.found or self.position is None or self.angle is None:
-            near, far = (round(b * 1000) for b in self.band)
+            near, far = (round(b) for b in self.band)
             return [*out, f"nothing found {near}..{far} mm from the base axis along the arc"]
-        x, y, z = (float(v) * 1000 for v in self.position)
+        x, y, z = (float(v) for v in self.position)
         assert self.distance is not None
         out.append(
-            f"found at {math.degrees(self.angle):.1f} deg, {self.distance * 1000:.1f} mm from "
+            f"found at {self.angle:.1f} deg, {self.distance:.1f} mm from "
             f"the sensor: ({x:.1f}, {y:.1f}, {z:.1f}) mm"
         )
         if self.plan is not None:
@@ -117,22 +117,31 @@ def search(
         found = locate(ArmEye(arm, sensor), scan, start, stop, step)
         via = sensor.via
     if found is None:
-        return SearchResult(
-            False, None, None, None, tuple(scan.readings), None, _rest(arm), via, _band(scan)
-        )
+        return _result(scan, None, None, None, _rest(arm), via)
     angle, dist = found
     position = scan.object_at(arm.read(), angle, dist, _size(attached_cubes(arm)))
     plan = _fetch(arm, scene, position, bin_name)
     run_verified(arm, plan, poses=False, allow=("dropped", "tipped"))
     _check_inside(arm, plan, scene.container(bin_name))
-    readings = tuple(scan.readings)
-    return SearchResult(True, angle, dist, position, readings, plan, _rest(arm), via, _band(scan))
+    return _result(scan, (angle, dist), position, plan, _rest(arm), via)
 
 
-def _band(scan: Scan) -> tuple[float, float]:
-    """How far from the base axis [m] the sensor held as ``scan`` sees: its 4..30 cm
-    beyond the point it is held at."""
-    return scan.radius + RANGE[0], scan.radius + RANGE[1]
+def _result(
+    scan: Scan,
+    found: tuple[float, float] | None,
+    position: F64 | None,
+    plan: Plan | None,
+    servos_off: bool,
+    via: str,
+) -> SearchResult:
+    """The search's result in mm and degrees from the scan's [rad, m]: ``found`` (angle,
+    distance) where it saw the object at ``position`` (None: nothing seen)."""
+    readings = tuple((math.degrees(a), v) for a, v in scan.readings)
+    band = (1000.0 * (scan.radius + RANGE[0]), 1000.0 * (scan.radius + RANGE[1]))
+    if found is None or position is None:
+        return SearchResult(False, None, None, None, readings, None, servos_off, via, band)
+    angle, dist = math.degrees(found[0]), 1000.0 * found[1]
+    return SearchResult(True, angle, dist, position * 1000.0, readings, plan, servos_off, via, band)
 
 
 def check_angles(start: float, stop: float, step: float) -> tuple[float, float, float]:
