@@ -20,6 +20,7 @@ produced it by the pose it carries, which gives:
 - draws/s: frames the page's renderer drew (requestAnimationFrame).
 
     .venv/bin/python benchmarks/view.py [--seconds 5] [--rates 30 60] [--follow-rates 30 45]
+        [--job-rates 45]   (a drawing in another process: armkit draw svg lines.svg)
 """
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ from __future__ import annotations
 import argparse
 import base64
 import os
+import signal
 import subprocess
 import sys
 import tempfile
@@ -45,6 +47,7 @@ from armkit.viz.web import Chromium, View
 from armkit.viz.web._picture import connected_client, wait_for_camera
 
 POSES = (np.radians([-60.0, 10.0, 10.0, -20.0]), np.radians([60.0, -20.0, 30.0, 10.0]))
+DRAWING = os.path.join(os.path.dirname(__file__), "..", "examples", "drawings", "lines.svg")
 PROBE = "/arm/link_4"  # the node whose position identifies a state
 COUNT_DRAWS = "window.__draws = 0; (function tick(){ window.__draws++; requestAnimationFrame(tick); })(); true"
 
@@ -127,6 +130,34 @@ def measure_follow(rate: float, seconds: float) -> Row:
             del os.environ["ARMKIT_CONFIG_DIR"]
 
 
+def measure_job(rate: float, seconds: float) -> Row:
+    """A job in another process (``armkit --scene drawing draw svg lines.svg``, as a
+    teacher runs it beside ``armkit view --follow``), interrupted ``seconds`` after it
+    starts moving."""
+    with tempfile.TemporaryDirectory(prefix="armkit-bench-") as config:
+        os.environ["ARMKIT_CONFIG_DIR"] = config
+        model = armkit.load_model("openmanipulator_x")
+        source = LiveSource(model, sim_state_file(model))
+        source.state()
+
+        def draw(start: float) -> None:
+            argv = [sys.executable, "-m", "armkit.cli", "--scene", "drawing", "draw", "svg"]
+            with subprocess.Popen(
+                [*argv, DRAWING], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True
+            ) as job:
+                assert job.stdout is not None
+                job.stdout.readline()  # "draw lines.svg on A5 ...": planned, it starts moving
+                time.sleep(seconds)
+                job.send_signal(signal.SIGINT)
+                job.communicate()
+
+        try:
+            return _measure("job (draw)", source, rate, draw)
+        finally:
+            source.close()
+            del os.environ["ARMKIT_CONFIG_DIR"]
+
+
 def _measure(what: str, source: StateSource, rate: float, swing: Callable[[float], None]) -> Row:
     model = source.model
     sent: dict[tuple[float, ...], float] = {}
@@ -187,9 +218,12 @@ def _lags(frames: list[object], sent: dict[tuple[float, ...], float], start: flo
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=5.0, help="motion per rate [s]")
-    parser.add_argument("--rates", type=float, nargs="+", default=[30.0, 60.0], help="[Hz]")
+    parser.add_argument("--rates", type=float, nargs="*", default=[30.0, 60.0], help="[Hz]")
     parser.add_argument(
-        "--follow-rates", type=float, nargs="+", default=[30.0, 45.0], help="[Hz], --follow"
+        "--follow-rates", type=float, nargs="*", default=[30.0, 45.0], help="[Hz], --follow"
+    )
+    parser.add_argument(
+        "--job-rates", type=float, nargs="*", default=[45.0], help="[Hz], --follow of a job"
     )
     args = parser.parse_args()
     print(f"load average {' '.join(f'{v:.2f}' for v in os.getloadavg())} ({os.cpu_count()} cores)")
@@ -200,6 +234,7 @@ def main() -> None:
     print(header)
     print("-" * len(header))
     rows = [(measure, r) for r in args.rates] + [(measure_follow, r) for r in args.follow_rates]
+    rows += [(measure_job, r) for r in args.job_rates]
     for how, rate in rows:
         r = how(rate, args.seconds)
         p50, p95, worst = r.lag_ms

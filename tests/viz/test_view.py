@@ -57,9 +57,9 @@ def test_the_trail_follows_the_tool(view: View, arm: armkit.Arm) -> None:
     for waist in (10.0, 20.0, 30.0):
         arm.move_joints([waist, 0.0, 0.0, 0.0])
         view.update()
-    assert "/trail" in view.renderer.names
+    assert "/trail/0" in view.renderer.names
     view.clear_trail()
-    assert "/trail" not in view.renderer.names
+    assert not [n for n in view.renderer.names if n.startswith("/trail")]
 
 
 def test_target_marker_is_green_or_red_with_the_reason(view: View) -> None:
@@ -135,7 +135,9 @@ def test_what_the_tool_draws_on_paper_is_inked() -> None:
             view.update()
         arm.move_to(180, 10, 30, -90)
         view.update()
-        assert [n for n in view.renderer.names if n.startswith("/ink/")] == ["/ink/paper/1"]
-        ((sheet, points),) = view.ink.strokes
-        assert sheet is paper and len(points) >= 4
-        np.testing.assert_allclose(np.array(points)[:, 1], [-0.02, -0.01, 0.0, 0.01], atol=5e-4)
+        assert [n for n in view.renderer.names if n.startswith("/ink/")] == ["/ink/paper/1/0"]
+        ((sheet, line),) = view.ink.strokes
+        assert sheet is paper and len(line.points) >= 4
+        np.testing.assert_allclose(
+            np.array(line.points)[:, 1], [-0.02, -0.01, 0.0, 0.01], atol=5e-4
+        )

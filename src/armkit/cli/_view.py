@@ -62,7 +62,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         "port given here and busy is refused); the driver's port is the global --port "
         "before 'view'",
     )
-    p.add_argument("--rate", type=float, metavar="HZ", help="updates per second [Hz] (default 30; 45 with --follow, so that at least 30 new states a second reach the page from a file another process writes)")  # fmt: skip
+    p.add_argument("--rate", type=float, metavar="HZ", help="updates per second [Hz] (default 30; 45 with --follow, where another process writes the states: 40 new ones a second reach the page on a quiet machine, fewer under load, see docs/performance.md)")  # fmt: skip
     p.add_argument(
         "--frames", action="store_true", help="draw every joint frame's axes (default: off)"
     )

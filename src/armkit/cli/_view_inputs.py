@@ -13,7 +13,7 @@ from .._errors import InputError
 from .._files import check_output_path
 
 RATE = 30.0  # [Hz] updates of the view
-FOLLOW_RATE = 45.0  # [Hz] with --follow: 30+ new states a second from the 100 Hz live file
+FOLLOW_RATE = 45.0  # [Hz] with --follow: ~40 new states a second from the 100 Hz live file
 
 
 def poses_of(given: list[list[float]] | None, model: Any) -> list[Any]:

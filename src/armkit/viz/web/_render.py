@@ -7,13 +7,13 @@ sends the new pose and colour, which keeps a 30 Hz view cheap.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 import viser
-import viser.transforms as vtf
 from numpy.typing import NDArray
 
 from ..._primitives import (
@@ -37,6 +37,7 @@ class _Node:
     handle: Any
     shape: tuple[Any, ...]
     color: tuple[int, int, int] | None
+    T: F64 | None = None  # the pose last sent (a frame sends only the poses that changed)
 
 
 class Renderer:
@@ -75,9 +76,29 @@ class Renderer:
             node.color = _colour(prim)
         if isinstance(prim, Polyline | Label):
             _update_content(node.handle, prim)
-        if T is not None:
+        if T is not None and (node.T is None or not np.array_equal(node.T, T)):
             node.handle.position = T[:3, 3]
-            node.handle.wxyz = vtf.SO3.from_matrix(T[:3, :3]).wxyz
+            node.handle.wxyz = quaternion_wxyz(T)
+            node.T = T
+
+
+def quaternion_wxyz(T: F64) -> tuple[float, float, float, float]:
+    """The unit quaternion (w, x, y, z) of the rotation in ``T`` (4, 4) or (3, 3), as
+    ``viser.transforms.SO3.from_matrix(R).wxyz`` up to sign, in floats: a view frame
+    turns a few nodes, and numpy's per-call cost was most of it (Shepperd's method)."""
+    (a, b, c), (d, e, f), (g, h, i) = T[0, :3].tolist(), T[1, :3].tolist(), T[2, :3].tolist()
+    trace = a + e + i
+    if trace > 0.0:
+        s = 2.0 * math.sqrt(trace + 1.0)
+        return (0.25 * s, (h - f) / s, (c - g) / s, (d - b) / s)
+    if a > e and a > i:
+        s = 2.0 * math.sqrt(1.0 + a - e - i)
+        return ((h - f) / s, 0.25 * s, (b + d) / s, (c + g) / s)
+    if e > i:
+        s = 2.0 * math.sqrt(1.0 + e - a - i)
+        return ((c - g) / s, (b + d) / s, 0.25 * s, (f + h) / s)
+    s = 2.0 * math.sqrt(1.0 + i - a - e)
+    return ((d - b) / s, (c + g) / s, (f + h) / s, 0.25 * s)
 
 
 def _colour(prim: Primitive) -> tuple[int, int, int] | None:

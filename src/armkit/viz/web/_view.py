@@ -24,10 +24,11 @@ import viser
 from numpy.typing import ArrayLike, NDArray
 
 from ..._errors import ArmkitError, InputError
-from ..._primitives import Label, Polyline, Primitive, Sphere
+from ..._primitives import Label, Primitive, Sphere
 from ...scene import Scene, cube_primitive
 from .._address import serve_address
 from .._arm_shapes import TRAIL_COLOUR, arm_primitives, reach_of, table_primitive
+from .._chunked import CHUNK, ChunkedLine
 from .._ink import Ink
 from .._scene_shapes import scene_primitives
 from .._state import ObjectPose, Snapshot, StateSource
@@ -91,7 +92,7 @@ class View:
         quiet_unreadable()  # a client's garbage is one line, not a traceback
         self.host = host
         self.renderer = Renderer(self.server.scene)
-        self._trail: list[F64] = []
+        self._trail = ChunkedLine("/trail", TRAIL_COLOUR, 2.0, max(trail, CHUNK + 1))
         self._trail_max = trail
         self._last_q: F64 | None = None
         self._state: Snapshot | None = None
@@ -200,8 +201,8 @@ class View:
     def clear_trail(self) -> None:
         """Forget the tool's trail."""
         with self._lock:
-            self._trail.clear()
-            self.renderer.remove("/trail")
+            for name in self._trail.clear():
+                self.renderer.remove(name)
 
     def close(self) -> None:
         """Stop following and stop serving the page."""
@@ -233,14 +234,14 @@ class View:
         stroke = self.ink.add(tip)
         if stroke is not None:
             self.renderer.draw_one(stroke)
-        if self._trail_max <= 0:
+        trail = self._trail.points
+        if self._trail_max <= 0 or (trail and np.linalg.norm(tip - trail[-1]) < TRAIL_STEP):
             return
-        if self._trail and np.linalg.norm(tip - self._trail[-1]) < TRAIL_STEP:
-            return
-        self._trail.append(tip)
-        del self._trail[: -self._trail_max]
-        if len(self._trail) >= 2:
-            self.renderer.draw_one(Polyline("/trail", np.array(self._trail), TRAIL_COLOUR, 2.0))
+        newest, removed = self._trail.add(tip)
+        for name in removed:
+            self.renderer.remove(name)
+        if newest is not None:
+            self.renderer.draw_one(newest)
 
     def _setup_page(self, extra: Sequence[Primitive]) -> None:
         s = self.server
