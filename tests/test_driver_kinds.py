@@ -120,20 +120,30 @@ def _calibrate_clone(model: Any, driver: Any, ask: Any, say: Any) -> Path:
     return Path("clone.toml")
 
 
+SIMULATED: list[str] = []  # the models the clone's simulated device was built for
+
+
 @pytest.fixture
 def clone() -> Iterator[DriverKind]:
     ssc32 = driver_kind("ssc32")
+
+    def simulate_clone(model: Any, world: Any, keep: Any, opened: Any) -> Any:
+        SIMULATED.append(model.name)
+        return ssc32.simulate(model, world, keep, opened)
+
     added = dataclasses.replace(
         ssc32,
         name="clone32",
         device="an SSC-32 clone",
         title="SSC-32 clone",
+        simulate=simulate_clone,
         calibrate=CalibrationRoutine(_calibrate_clone),
     )
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(registry, "KINDS", (*registry.KINDS, added))
         yield added
     CALIBRATED.clear()
+    SIMULATED.clear()
 
 
 def test_a_kind_added_by_one_entry_is_in_the_help_and_the_driver_choices(
@@ -181,3 +191,15 @@ def test_a_kind_added_by_one_entry_is_a_driver_of_the_script_language(clone: Dri
 
     assert errors("driver clone32\nhome\n") == []
     assert "did you mean 'clone32'" in errors("driver clone23\nhome\n")[0]
+
+
+def test_a_script_naming_a_kind_added_by_one_entry_runs_on_it(
+    clone: DriverKind, tmp_path: Path
+) -> None:
+    script = tmp_path / "job.arm"
+    script.write_text("arm lynx6\ndriver clone32 port emu\nhome\nmove xyz 200 0 100\n")
+    code, text = _armkit("run", str(script))
+    assert code == 0 and f"done: {script} in" in text, text
+    assert SIMULATED == ["lynx6"]  # the clone's own part opened the arm the script ran on
+    code, text = _armkit("check", str(script))
+    assert code == 0 and "ok for lynx6" in text, text

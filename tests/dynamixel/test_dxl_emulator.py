@@ -10,7 +10,7 @@ import pytest
 
 from armkit.devices import _dxl_packet as pkt
 from armkit.sim.emulators import DynamixelEmulator
-from armkit.sim.xm430 import Profile, Servo, velocity_profile_times
+from armkit.sim.xm430 import XM430, Profile, velocity_profile_times
 
 sdk = pytest.importorskip("dynamixel_sdk")
 
@@ -87,7 +87,7 @@ def test_emulator_ignores_frames_with_a_bad_crc(emu: DynamixelEmulator, sdk_port
 
 def test_time_based_profile_shape() -> None:
     now = [0.0]
-    servo = Servo(11, lambda: now[0])
+    servo = XM430(11, lambda: now[0])
     servo.set("Drive Mode", 4)
     servo.set("Profile Velocity", 1000)  # 1 s
     servo.set("Profile Acceleration", 250)  # 0.25 s ramps
@@ -111,7 +111,7 @@ def test_velocity_profile_is_triangular_when_short() -> None:
 
 def test_moving_backwards_reads_negative_velocity_and_current() -> None:
     now = [0.0]
-    servo = Servo(11, lambda: now[0])
+    servo = XM430(11, lambda: now[0])
     servo.write(64, b"\x01")
     servo.write(116, (1048).to_bytes(4, "little"))
     now[0] = 0.1

@@ -16,7 +16,7 @@ from collections.abc import Callable
 
 from ..devices import dxl_packet as pkt
 from ..devices import xm430 as xm
-from .xm430 import Servo
+from .xm430 import XM430
 
 
 def u16(params: bytes, offset: int) -> int:
@@ -24,7 +24,7 @@ def u16(params: bytes, offset: int) -> int:
     return int.from_bytes(params[offset : offset + 2], "little")
 
 
-def answers_reads(servo: Servo) -> bool:
+def answers_reads(servo: XM430) -> bool:
     """True unless the servo's Status Return Level (68) is 0 (PING only)."""
     return servo.value("Status Return Level") >= xm.STATUS_LEVEL_READ
 
@@ -43,11 +43,11 @@ class GroupInstructions:
             pkt.Inst.FAST_BULK_READ: self._fast_bulk_read,
         }
 
-    def by_id(self, servo_id: int) -> Servo | None:
+    def by_id(self, servo_id: int) -> XM430 | None:
         """The present servo whose ID register is ``servo_id`` (the bus defines it)."""
         raise NotImplementedError
 
-    def reply(self, servo: Servo, error: int = 0, data: bytes = b"") -> None:
+    def reply(self, servo: XM430, error: int = 0, data: bytes = b"") -> None:
         """Send ``servo``'s status packet (the bus defines it)."""
         raise NotImplementedError
 

@@ -35,7 +35,7 @@ from ._xm430_profile import (
 
 
 class Servo(Protocol):
-    """What the motor needs of its servo (``sim.xm430.Servo``): the control table by
+    """What the motor needs of its servo (``sim.xm430.XM430``): the control table by
     name, the raw memory, the device clock [s] and the arm's feedback, if on an arm."""
 
     memory: bytearray

@@ -35,14 +35,14 @@ from ..devices import xm430_notes as notes
 from ._dxl_groups import GroupInstructions, u16
 from ._outbox import Outbox, log
 from ._xm430_drive import Drives
-from .xm430 import Servo
+from .xm430 import XM430
 
 FAULTS = ("drop", "corrupt", "late", "vanish", "overload")
 _ID = xm.register("ID").address  # one-byte registers read on every packet, by address
 _PROTOCOL_TYPE = xm.register("Protocol Type").address
 OPENMANIPULATOR_X_IDS = (11, 12, 13, 14, 15)
 Reply = tuple[int, bytes, Callable[[], None] | None]  # error, data, what to do after replying
-Handler = Callable[[Servo, pkt.Packet, bool], Reply]  # (servo, packet, by its secondary ID)
+Handler = Callable[[XM430, pkt.Packet, bool], Reply]  # (servo, packet, by its secondary ID)
 _READS = (pkt.Inst.PING, pkt.Inst.READ)
 _FROM_FIRMWARE: dict[int, str] = {  # instruction -> the feature (``notes.FROM_FIRMWARE``) it needs
     pkt.Inst.CLEAR: "Clear",
@@ -56,7 +56,7 @@ class SimDynamixelBus(GroupInstructions):
     """XM430 servos on one bus (``ids``), on ``clock`` [s], listening at ``baudrate`` [bit/s].
 
     Attributes:
-        servos: first ID -> ``Servo``.  received: bytes read from the bus (count).  frames:
+        servos: first ID -> ``XM430``.  received: bytes read from the bus (count).  frames:
             the last frames read (bounded).  outbox: the servos' status packets.
     """
 
@@ -73,7 +73,7 @@ class SimDynamixelBus(GroupInstructions):
     ) -> None:
         self._clock = clock
         self.lock = threading.RLock()  # held while the host's bytes are handled
-        self.servos = {sid: Servo(sid, clock, baudrate=baudrate) for sid in ids}
+        self.servos = {sid: XM430(sid, clock, baudrate=baudrate) for sid in ids}
         self.late_s = late_s
         self.outbox = Outbox()
         self.received = 0  # bytes read from the bus
@@ -186,7 +186,7 @@ class SimDynamixelBus(GroupInstructions):
             if after is not None:
                 after()
 
-    def _addressed(self, target: int) -> list[tuple[Servo, bool]]:
+    def _addressed(self, target: int) -> list[tuple[XM430, bool]]:
         """(servo, by its primary ID) for every present servo a packet to ``target`` reaches
         (e-Manual XM430-W350, "Secondary(Shadow) ID (12)": its ID first; 253 ~ 255 off)."""
         found = []
@@ -197,13 +197,13 @@ class SimDynamixelBus(GroupInstructions):
                 found.append((servo, False))
         return found
 
-    def present(self) -> list[Servo]:
+    def present(self) -> list[XM430]:
         """The servos that hear the host now (not vanished, at the host's baud rate, speaking
         Protocol 2.0: Protocol Type (13) 1 is not emulated), by ID."""
         servos = [s for sid, s in self.servos.items() if self._hears(sid, s)]
         return sorted(servos, key=lambda s: s.value("ID"))
 
-    def _hears(self, sid: int, servo: Servo) -> bool:
+    def _hears(self, sid: int, servo: XM430) -> bool:
         """Whether the servo kept under ``sid`` is present (see ``present``)."""
         return (
             sid not in self._vanished
@@ -211,7 +211,7 @@ class SimDynamixelBus(GroupInstructions):
             and (self._rate is None or servo.baudrate == self._rate)
         )
 
-    def by_id(self, servo_id: int) -> Servo | None:
+    def by_id(self, servo_id: int) -> XM430 | None:
         """The present servo whose ID register is ``servo_id`` (the first of ``present``'s
         order: of several with that ID, the first kept; found without sorting them all,
         as a sync instruction asks for each of its IDs)."""
@@ -225,13 +225,13 @@ class SimDynamixelBus(GroupInstructions):
         )
 
     @staticmethod
-    def _answers(servo: Servo, instruction: int) -> bool:
+    def _answers(servo: XM430, instruction: int) -> bool:
         level = servo.value("Status Return Level")
         if instruction == pkt.Inst.PING or level >= xm.STATUS_LEVEL_ALL:
             return True
         return level == xm.STATUS_LEVEL_READ and instruction in _READS
 
-    def reply(self, servo: Servo, error: int = 0, data: bytes = b"") -> None:
+    def reply(self, servo: XM430, error: int = 0, data: bytes = b"") -> None:
         """Send ``servo``'s status packet (through its injected faults)."""
         sid = servo.value("ID")
         self.send(sid, pkt.status(sid, error | servo.error_bits, data))
@@ -247,21 +247,21 @@ class SimDynamixelBus(GroupInstructions):
 
     # -- per-servo instructions (e-Manual "DYNAMIXEL Protocol 2.0", Instruction Details) --
     @staticmethod
-    def _read(servo: Servo, packet: pkt.Packet, secondary: bool) -> Reply:
+    def _read(servo: XM430, packet: pkt.Packet, secondary: bool) -> Reply:
         address, size = u16(packet.params, 0), u16(packet.params, 2)
         if address + size > xm.CONTROL_TABLE_SIZE:
             return pkt.ACCESS_ERROR, b"", None
         return 0, servo.read(address, size), None
 
     @staticmethod
-    def _reg_write(servo: Servo, packet: pkt.Packet, secondary: bool) -> Reply:
+    def _reg_write(servo: XM430, packet: pkt.Packet, secondary: bool) -> Reply:
         """Reg Write: kept until ACTION; Registered Instruction (69) reads 1."""
         servo.registered = (u16(packet.params, 0), packet.params[2:])
         servo.set("Registered Instruction", 1)
         return 0, b"", None
 
     @staticmethod
-    def _action(servo: Servo, packet: pkt.Packet, secondary: bool) -> Reply:
+    def _action(servo: XM430, packet: pkt.Packet, secondary: bool) -> Reply:
         """Action: the registered write; Instruction Error without a Reg Write ("Status
         Packet", Error 0x02: Action has been used without Reg Write)."""
         if servo.registered is None:
@@ -271,7 +271,7 @@ class SimDynamixelBus(GroupInstructions):
         return servo.write(address, data, secondary=secondary), b"", None
 
     @staticmethod
-    def _factory_reset(servo: Servo, packet: pkt.Packet, secondary: bool) -> Reply:
+    def _factory_reset(servo: XM430, packet: pkt.Packet, secondary: bool) -> Reply:
         """Factory Reset: 0xFF all, 0x01 all but the ID, 0x02 all but ID and Baud Rate;
         from firmware 42 a broadcast 0xFF is not executed; another option: Data Range
         Error. Done after the status packet is sent."""
@@ -284,7 +284,7 @@ class SimDynamixelBus(GroupInstructions):
         return 0, b"", lambda: servo.factory_reset(option)
 
     @staticmethod
-    def _clear(servo: Servo, packet: pkt.Packet, secondary: bool) -> Reply:
+    def _clear(servo: XM430, packet: pkt.Packet, secondary: bool) -> Reply:
         """Clear: option 1 with its fixed bytes folds the multi-turn count; else Data Range
         Error."""
         option, key = packet.params[:1], packet.params[1:5]
@@ -293,7 +293,7 @@ class SimDynamixelBus(GroupInstructions):
         return servo.clear_multi_turn(), b"", None
 
     @staticmethod
-    def _backup(servo: Servo, packet: pkt.Packet, secondary: bool) -> Reply:
+    def _backup(servo: XM430, packet: pkt.Packet, secondary: bool) -> Reply:
         """Control Table Backup: store (1) or restore (2, then the servo reboots)."""
         if packet.params[1:5] != notes.BACKUP_KEY or not packet.params:
             return pkt.DATA_RANGE_ERROR, b"", None

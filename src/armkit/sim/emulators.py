@@ -27,7 +27,7 @@ from .dynamixel import OPENMANIPULATOR_X_IDS, SimDynamixelBus
 from .maestro import PROTOCOL_ERROR as PROTOCOL_ERROR
 from .maestro import SimMaestro
 from .ssc32 import SimSSC32
-from .xm430 import Servo
+from .xm430 import XM430
 
 
 class Emulator:
@@ -156,7 +156,7 @@ class DynamixelEmulator(Emulator):
         self.port = self.server.port
 
     @property
-    def servos(self) -> dict[int, Servo]:
+    def servos(self) -> dict[int, XM430]:
         """ID -> servo."""
         return self.device.servos
 

@@ -26,7 +26,7 @@ from collections.abc import Callable, Iterable
 from ..devices import scs_packet as scs
 from ..devices import sts3215 as sts
 from ._outbox import Outbox, log
-from .sts3215 import Servo
+from .sts3215 import STS3215
 
 FAULTS = ("drop", "corrupt", "late", "vanish", "overload")
 SO101_IDS = (1, 2, 3, 4, 5, 6)
@@ -38,7 +38,7 @@ class SimFeetechBus:
     """STS3215 servos on one bus (``ids``), on ``clock`` [s], at ``baudrate`` [bit/s].
 
     Attributes:
-        servos: first ID -> ``Servo``.  frames: the last frames read.  outbox: replies.
+        servos: first ID -> ``STS3215``.  frames: the last frames read.  outbox: replies.
     """
 
     name = "feetech"
@@ -54,7 +54,7 @@ class SimFeetechBus:
     ) -> None:
         self._clock = clock
         self.lock = threading.RLock()
-        self.servos = {sid: Servo(sid, clock, baudrate=baudrate) for sid in ids}
+        self.servos = {sid: STS3215(sid, clock, baudrate=baudrate) for sid in ids}
         self.late_s = late_s
         self.outbox = Outbox()
         self.received = 0
@@ -63,7 +63,7 @@ class SimFeetechBus:
         self._pending: dict[int, list[str]] = {}
         self._vanished: set[int] = set()
         self._rate: int | None = None
-        self.handlers: dict[int, Callable[[Servo, scs.Packet], tuple[bytes, bool]]] = {
+        self.handlers: dict[int, Callable[[STS3215, scs.Packet], tuple[bytes, bool]]] = {
             scs.Inst.PING: lambda s, p: (b"", True),
             scs.Inst.READ: self._read,
             scs.Inst.WRITE: self._write,
@@ -128,14 +128,14 @@ class SimFeetechBus:
             self.outbox.drop_due(now)
             self.handle(packet)
 
-    def present(self) -> list[Servo]:
+    def present(self) -> list[STS3215]:
         """The servos that hear the host now, by ID."""
         servos = [s for sid, s in self.servos.items() if sid not in self._vanished]
         if self._rate is not None:
             servos = [s for s in servos if s.baudrate == self._rate]
         return sorted(servos, key=lambda s: s.value("ID"))
 
-    def by_id(self, servo_id: int) -> Servo | None:
+    def by_id(self, servo_id: int) -> STS3215 | None:
         """The present servo whose ID register is ``servo_id``."""
         return next((s for s in self.present() if s.value("ID") == servo_id), None)
 
@@ -160,10 +160,10 @@ class SimFeetechBus:
                 servo.reset()
 
     @staticmethod
-    def _answers(servo: Servo, instruction: int) -> bool:
+    def _answers(servo: STS3215, instruction: int) -> bool:
         return bool(servo.value("Response Status Level")) or instruction in _READS
 
-    def reply(self, servo: Servo, data: bytes = b"", after_s: float = 0.0) -> None:
+    def reply(self, servo: STS3215, data: bytes = b"", after_s: float = 0.0) -> None:
         """``servo``'s status packet, after its Return Delay Time (through its faults)."""
         sid = servo.value("ID")
         fault = self._pending[sid].pop(0) if self._pending.get(sid) else ""
@@ -177,7 +177,7 @@ class SimFeetechBus:
 
     # -- instructions --------------------------------------------------------------
     @staticmethod
-    def _read(servo: Servo, packet: scs.Packet) -> tuple[bytes, bool]:
+    def _read(servo: STS3215, packet: scs.Packet) -> tuple[bytes, bool]:
         if len(packet.params) != 2:
             return b"", False
         address, size = packet.params
@@ -186,25 +186,25 @@ class SimFeetechBus:
         return servo.read(address, size), True
 
     @staticmethod
-    def _write(servo: Servo, packet: scs.Packet) -> tuple[bytes, bool]:
+    def _write(servo: STS3215, packet: scs.Packet) -> tuple[bytes, bool]:
         if packet.params:
             servo.write(packet.params[0], packet.params[1:])
         return b"", bool(packet.params)
 
     @staticmethod
-    def _reg_write(servo: Servo, packet: scs.Packet) -> tuple[bytes, bool]:
+    def _reg_write(servo: STS3215, packet: scs.Packet) -> tuple[bytes, bool]:
         servo.registered = (packet.params[0], packet.params[1:])
         return b"", True
 
     @staticmethod
-    def _action(servo: Servo, packet: scs.Packet) -> tuple[bytes, bool]:
+    def _action(servo: STS3215, packet: scs.Packet) -> tuple[bytes, bool]:
         if servo.registered is not None:
             (address, data), servo.registered = servo.registered, None
             servo.write(address, data)
         return b"", True
 
     @staticmethod
-    def _reset(servo: Servo, packet: scs.Packet) -> tuple[bytes, bool]:
+    def _reset(servo: STS3215, packet: scs.Packet) -> tuple[bytes, bool]:
         return b"", True  # the reset itself follows the reply (``handle``)
 
     def _sync_write(self, packet: scs.Packet) -> None:

@@ -34,7 +34,7 @@ for _reg in sts.STS3215.values():
     _DEFAULTS[_reg.address : _reg.address + _reg.size] = _reg.encode(_reg.default)
 
 
-class Servo:
+class STS3215:
     """An STS3215 with ID ``servo_id`` on ``clock`` [s], its Baud Rate set to ``baudrate``."""
 
     def __init__(

@@ -29,7 +29,7 @@ from ._xm430_memory import read_through, runs
 from ._xm430_motor import Motor
 from ._xm430_profile import Motion, Profile, velocity_profile_times
 
-__all__ = ["Profile", "Servo", "velocity_profile_times"]
+__all__ = ["XM430", "Profile", "velocity_profile_times"]
 
 _TORQUE_ENABLE = xm.register("Torque Enable").address
 # name -> (first byte, past the last, signed): the table looked up once, not per access
@@ -43,7 +43,7 @@ _KEPT_BY_BACKUP = [
 ]
 
 
-class Servo:
+class XM430:
     """One simulated XM430-W350 (see module doc).
 
     Args:
