@@ -126,10 +126,26 @@ def joints(value: ArrayLike, dof: int, name: str = "q", batch: bool = True) -> F
 def rotation(value: ArrayLike, name: str, n: int | None = None) -> F64:
     """Rotation matrices, shape (3, 3) or (n, 3, 3), orthonormal with determinant +1."""
     R = array(value, name, ((3, 3),) if n is None else ((n, 3, 3),), "rotation matrix")
-    RRt = np.einsum("...ij,...kj->...ik", R, R)
-    if not np.allclose(RRt, np.eye(3), atol=1e-6) or np.any(np.linalg.det(R) < 0):
+    if R.ndim == 2:
+        ok = _is_rotation(R.ravel().tolist())
+    else:
+        RRt = np.einsum("...ij,...kj->...ik", R, R)
+        ok = np.allclose(RRt, np.eye(3), atol=1e-6) and not np.any(np.linalg.det(R) < 0)
+    if not ok:
         raise InputError(f"{name} must be a rotation matrix (orthonormal, determinant +1)")
     return R
+
+
+def _is_rotation(r: list[float]) -> bool:
+    """One finite 3x3 matrix (row-major) as ``rotation`` checks N at once, in floats:
+    R R^T within ``np.allclose``'s default of the identity (atol 1e-6, rtol 1e-5) and
+    determinant >= 0."""
+    a, b, c, d, e, f, g, h, i = r
+    for k, (x, y, z) in enumerate(((a, b, c), (d, e, f), (g, h, i))):
+        for m, (u, v, w) in enumerate(((a, b, c), (d, e, f), (g, h, i))):
+            if not abs(x * u + y * v + z * w - (k == m)) <= 1e-6 + 1e-5 * (k == m):
+                return False
+    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g) >= 0.0
 
 
 def tolerance(value: Any, name: str) -> float:
