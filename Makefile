@@ -12,7 +12,7 @@ $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
-KERNEL := setup.py src/armkit/kinematics/_numeric/_lmc.c  # compiled by pip install -e
+KERNEL := setup.py src/armkit/kinematics/_numeric/_lmc.c src/armkit/kinematics/_boundaryc.c  # compiled by pip install -e
 
 $(STAMP): $(BIN)/python pyproject.toml $(KERNEL)  # the demo's own environment: its hints need plot and web
 	$(BIN)/python -m pip install --quiet -e ".[plot,web]"
@@ -58,4 +58,4 @@ bench: $(DEVSTAMP)
 
 clean:
 	rm -rf $(VENV) site build *.egg-info src/*.egg-info .pytest_cache .mypy_cache .ruff_cache
-	rm -f src/armkit/kinematics/_numeric/*.so
+	rm -f src/armkit/kinematics/_numeric/*.so src/armkit/kinematics/*.so

@@ -88,26 +88,48 @@ def test_same_answers_as_the_search(name: str, n: int) -> None:
     assert differ <= n // 200 and branch <= n // 500, (differ, branch)
 
 
-@pytest.mark.parametrize("name", ["openmanipulator_x", "lynx6"])
-def test_the_float_boundary_search_is_the_lanes_one(name: str) -> None:
-    """``_boundary_fast`` (one branch in floats) against ``boundary_pitch`` on lanes, at
-    random plane points, both signs of r, and random wanted pitches (issue 29.3)."""
+@pytest.mark.parametrize("name", ["openmanipulator_x", "lynx6", "so101"])
+def test_the_compiled_boundary_search_is_the_lanes_one(name: str) -> None:
+    """The compiled search (``_boundaryc.c``, one branch) against ``boundary_pitch`` on
+    lanes, and the lanes in floats (the search where the extension is not built), at
+    random plane points, both signs of r, and random wanted pitches (issue 29.3); the
+    SO-101's chain at its home roll has a tool point beside the plane (lateral)."""
+    from armkit.kinematics._boundary_fast import COMPILED
+    from armkit.kinematics._closed_scalar import boundary_search
+    from armkit.kinematics._lanes import FLOATS
+    from armkit.kinematics._near_ik import chain_at
     from armkit.kinematics._pitch_range import boundary_pitch
 
     m = load_model(name)
     chain = chain_of(m)
-    assert chain.family is not None and chain.boundary is not None
+    if chain.near is not None:
+        chain = chain_at(chain.near, float(m.home[-1]))
+    fam = chain.family
+    assert COMPILED is not None, "the extension is built by make lint / pip install -e ."
+    assert fam is not None and chain.boundary is not None
     rng = np.random.default_rng(29)
     r = rng.uniform(-0.5, 0.5, 3000)
     z = rng.uniform(-0.3, 0.5, 3000)
     want = rng.uniform(-math.pi, math.pi, 3000)
     with np.errstate(invalid="ignore", divide="ignore"):
-        gap, pitch = boundary_pitch(chain, chain.family, r, z, np.abs(r), want)
+        gap, pitch = boundary_pitch(chain, fam, r, z, np.abs(r), want)
+    found = 0
     for i in range(3000):
-        g, p = chain.boundary(float(r[i]), float(z[i]), abs(float(r[i])), float(want[i]))
-        assert (g == gap[i]) or abs(g - gap[i]) < 1e-12
+        args = (float(r[i]), float(z[i]), abs(float(r[i])), float(want[i]))
+        g, p = boundary_search(chain, *args)
+        gf, pf = boundary_pitch(chain, fam, *args, FLOATS)
+        for g2, p2 in ((g, p), (gf, pf)):
+            assert (g2 == gap[i]) or abs(g2 - gap[i]) < 1e-12
+            if math.isfinite(g2):
+                assert abs(math.remainder(p2 - pitch[i], 2 * math.pi)) < 1e-9
+        found += math.isfinite(g)
+    assert 300 < found < 2700, found  # both outcomes are exercised
+    for i in range(200):  # on the base axis: the gap is the pitch's own distance from want
+        args = (0.0, float(z[i]), 0.0, float(want[i]))
+        (g, p), (gf, pf) = boundary_search(chain, *args), boundary_pitch(chain, fam, *args, FLOATS)
+        assert g == gf or abs(g - gf) < 1e-12
         if math.isfinite(g):
-            assert abs(math.remainder(p - pitch[i], 2 * math.pi)) < 1e-9
+            assert abs(math.remainder(p - pf, 2 * math.pi)) < 1e-9
 
 
 def test_an_arm_whose_last_link_has_no_length(tmp_path: Path) -> None:

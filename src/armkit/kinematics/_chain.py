@@ -22,7 +22,7 @@ from numpy.typing import NDArray
 from .._errors import InputError, ModelError
 from .._inputs import shown
 from ..model import ArmModel, JointFrame
-from ._boundary_fast import Boundary, boundary_solver
+from ._boundary_fast import pack_boundary
 from ._closed_fast import FixedSolver, Q, fixed_solver
 from ._closed_free import FreeSolver, free_solver
 from ._family import (
@@ -73,8 +73,8 @@ class Chain:
             (``_closed_fast``); None off the family.
         free: on a family arm with 3 planar joints, the closed form without a pitch (it
             chooses one; with 2 the pitch follows from the position), else None.
-        boundary: with ``free``, its fallback's boundary search in floats (``_boundary_fast``;
-            None where the last link has no length).
+        boundary: with ``free``, its fallback's boundary circles packed for the compiled
+            search (``_boundary_fast``; None where the last link has no length).
         shift: on a family arm whose base axis is off the world origin (a URDF's root a
             little beside it), that axis's (x, y) [m]: the family, ``home_pitch`` and the
             closed-form solvers work in the frame moved there (``based``), else None.
@@ -111,7 +111,7 @@ class Chain:
     on_axis: int
     fixed: FixedSolver | None
     free: FreeSolver | None
-    boundary: Boundary | None
+    boundary: bytes | None
     shift: tuple[float, float] | None
     wrist: WristFamily | None
     wrist_solve: WristSolver | None
@@ -218,7 +218,7 @@ def compile_chain(model: ArmModel) -> Chain:
         home_pitch=home_pitch,
         wrist_reach=wrist,
         ranges=ranges,
-        boundary=boundary_solver(fam, lower, upper, ranges) if fam and free else None,
+        boundary=pack_boundary(fam, lower, upper, ranges) if fam and free else None,
         on_axis=_on_axis(steps, tool, np.array(lower), np.array(upper), np.array(home)),
         fixed=fixed,
         free=free,

@@ -3,7 +3,8 @@
 Without a pitch (3 planar joints) the pitch is the one nearest the seed's at
 which the arm fits (see ``_pitch_range``): first the nearest at which the wrist
 point is within the links' reach, by the chain's ``free``; where a joint limit
-refuses that one, ``_pitch_range.boundary_pitch`` in floats (``limited``).
+refuses that one, the boundary search (``limited``): compiled (``_boundary_fast``), or
+``_pitch_range.boundary_pitch`` in floats where the extension was not built.
 """
 
 from __future__ import annotations
@@ -12,19 +13,20 @@ import math
 
 from .._errors import Reason, UnreachableError
 from .._inputs import brief, mm
+from ._boundary_fast import COMPILED
 from ._chain import Chain
 from ._closed_fast import Found, Misses, Q, _ways
 from ._closed_free import seed_pitch
 from ._family import PlanarFamily
 from ._lanes import FLOATS
-from ._pitch_range import base_fits
+from ._pitch_range import base_fits, boundary_pitch
 from ._result import IKResult
 
 
 def limited(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
     """Position only, where a joint limit refuses ``chain.free``'s pitch: every solution at
     the boundary pitch nearest the seed's at which the arm fits, unsorted; [] if none.
-    The boundary search of ``_pitch_range`` in floats, one base branch at a time."""
+    The boundary search one base branch at a time (``boundary_search``)."""
     fam, solve = chain.family, chain.fixed
     assert fam is not None and solve is not None
     ways = _ways(fam, x, y, z, seed)
@@ -35,7 +37,7 @@ def limited(chain: Chain, x: float, y: float, z: float, seed: Q) -> Found:
         return []
     for r, q0 in ways:
         if base_fits(chain, fam, q0, FLOATS):
-            g, at = chain.boundary(r, z, rho, want)
+            g, at = boundary_search(chain, r, z, rho, want)
             gap, pitch = (g, at) if g < gap else (gap, pitch)
     return solve(x, y, z, pitch, seed, None) if gap < math.inf else []
 
@@ -63,6 +65,20 @@ def family_ik(
         assert chain.family is not None
         raise refusal(chain, chain.family, p, pitch, seed)
     return IKResult.of(found, (p, pitch, None), chain)
+
+
+def boundary_search(
+    chain: Chain, r: float, z: float, rho: float, want: float
+) -> tuple[float, float]:
+    """On one base branch (plane radius r (signed), height z, horizontal distance rho [m])
+    the boundary point nearest the pitch ``want`` [rad] at which the arm fits: (gap, its
+    pitch [rad]), gap inf where none. Compiled where built, else the lanes in floats."""
+    fam = chain.family
+    assert fam is not None and chain.boundary is not None
+    if COMPILED is not None:
+        return COMPILED(chain.boundary, r, z, rho, want)
+    g, at = boundary_pitch(chain, fam, r, z, rho, want, FLOATS)
+    return float(g), float(at)
 
 
 def preferred(chain: Chain, seed: Q) -> float:

@@ -28,7 +28,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import UnreachableError
-from ._boundary_fast import boundary_solver
+from ._boundary_fast import pack_boundary
 from ._chain import Chain, _solvers, chain_of
 from ._closed_scalar import family_ik
 from ._family import joint_ranges
@@ -73,7 +73,7 @@ def chain_at(near: Near, roll: float) -> Chain:
     ranges = joint_ranges(fam, lower, upper)
     got = dataclasses.replace(
         base, family=fam, fixed=fixed, free=free, ranges=ranges,
-        boundary=boundary_solver(fam, lower, upper, ranges) if free else None,
+        boundary=pack_boundary(fam, lower, upper, ranges) if free else None,
     )  # fmt: skip
     if len(near.chains) > KEEP:
         near.chains.pop(next(k for k in near.chains if k is not None))
