@@ -173,6 +173,16 @@ def mm(p: Any) -> str:
     return "(" + ", ".join(f"{float(v):.3g}" for v in p) + ") m"
 
 
+def deg_text(angle: float) -> str:
+    """An angle [rad] for a message: ``12.5 deg`` to 0.1 deg (never -0.0)."""
+    return f"{round(math.degrees(angle), 1) + 0.0:.1f} deg"
+
+
+def size_text(size: Any) -> str:
+    """Sizes [m] for a message: ``40.0 x 30.0 x 20.0 mm``."""
+    return " x ".join(f"{float(v) * 1000:.1f}" for v in size) + " mm"
+
+
 def brief(v: float) -> str:
     """A number for a message: one decimal (``fixed``: no -0.0), or 3 significant digits
     when huge."""

@@ -10,6 +10,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
+from .._inputs import deg_text, mm, size_text
 from .._primitives import RGB, Box, Primitive
 from .._primitives import pose as placed
 from ._fields import Entry, entries
@@ -135,6 +136,15 @@ class Board:
                 on = f"{self.name}[{where[0]}, {where[1]}]"
                 return (Support(self.socket(*where)[2], on, True),)
         return (Support(self.top_z, self.name, plate.contains_points(foot.center[None, :])),)
+
+    def listed(self, scene: Placed) -> tuple[str, str]:
+        """Its sockets, top centre, yaw and size."""
+        return "boards", (
+            f"{self.name}: {self.rows} x {self.cols} sockets {self.socket_size * 1000:.1f} mm "
+            f"wide, {self.socket_depth * 1000:.1f} mm deep, {self.pitch * 1000:.1f} mm apart; "
+            f"top centre {mm(self.origin)}, yaw {deg_text(self.yaw)}, "
+            f"{size_text((*self.size, self.thickness))}"
+        )
 
     def primitives(self, scene: Placed) -> list[Primitive]:
         """The plate (its top at ``top_z``) and a dark square in every socket."""

@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from .._inputs import mm, size_text
 from .._primitives import RGB, Box, Primitive
 from .._primitives import pose as placed
 from ._fields import Entry, entries
@@ -70,6 +71,13 @@ class Container:
         if outer.overlaps(foot):
             return (Support(self.rim_z, f"{self.name} rim", False),)
         return ()
+
+    def listed(self, scene: Placed) -> tuple[str, str]:
+        """Its outside size, wall and floor centre."""
+        return "containers", (
+            f"{self.name}: {size_text(self.size)} outside, wall {self.wall * 1000:.1f} mm, "
+            f"floor centre {mm(self.position)}"
+        )
 
     def primitives(self, scene: Placed) -> list[Primitive]:
         """The floor and the four walls."""

@@ -10,6 +10,7 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import NDArray
 
+from .._inputs import deg_text, mm
 from .._primitives import RGB, Box, Primitive
 from ._board import Board
 from ._fields import Entry, entries
@@ -92,6 +93,18 @@ class Cube:
         if not top.overlaps(foot):
             return ()
         return (Support(self.top_z, self.name, top.contains_points(foot.center[None, :])),)
+
+    def listed(self, scene: Placed) -> tuple[str, str]:
+        """Its size, position, yaw, face up and the board socket it stands in."""
+        where = ""
+        for b in (obj for obj in scene.objects() if isinstance(obj, Board)):
+            found = b.socket_at(self.position)
+            if found is not None and abs(b.socket(*found)[2] - self.position[2]) < 1e-4:
+                where = f", in {b.name}[{found[0]}, {found[1]}]"
+        return "cubes", (
+            f"{self.name}: {self.size * 1000:.1f} mm at {mm(self.position)}, "
+            f"yaw {deg_text(self.yaw)}, {self.up_face} up{where}"
+        )
 
     def primitives(self, scene: Placed) -> list[Primitive]:
         """The cube as a box in its colour (``cube_colour``)."""

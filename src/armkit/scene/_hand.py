@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from .._inputs import mm, size_text
 from .._primitives import RGB, Box, Primitive
 from .._primitives import pose as placed
 from ._fields import Entry, entries
@@ -40,6 +41,10 @@ class Hand:
     def supports(self, foot: Rect) -> tuple[Support, ...]:
         """None: a hand is held out to shake."""
         return ()
+
+    def listed(self, scene: Placed) -> tuple[str, str]:
+        """Its size and centre."""
+        return "hands", f"{self.name}: {size_text(self.size)}, centre {mm(self.position)}"
 
     def primitives(self, scene: Placed) -> list[Primitive]:
         """The hand's box, skin coloured."""

@@ -10,9 +10,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import InputError
-from .._inputs import array, brief, is_number, shown
+from .._inputs import array, brief, is_number, mm, shown
 from .._primitives import RGB, Box, Cylinder, Primitive
 from .._primitives import pose as placed
+from .._terminal import count
 from ._fields import MAX_MM
 from ._object import Placed, Solid, Support
 from ._rect import Rect
@@ -208,6 +209,13 @@ class Xylophone:
         """None: nothing is put down on a xylophone."""
         return ()
 
+    def listed(self, scene: Placed) -> tuple[str, str]:
+        """Its bars: each note and its top centre."""
+        bars = ", ".join(f"{note_name(n)} {mm(self.bar_top(n))}" for n in self.notes)
+        return "instruments", (
+            f"{self.name}: xylophone, {count(len(self.notes), 'bar')} (note, top centre): {bars}"
+        )
+
     def primitives(self, scene: Placed) -> list[Primitive]:
         """Its bars (naturals light, sharps dark), each at its place."""
         shapes: list[Primitive] = []
@@ -262,6 +270,13 @@ class Drum:
     def supports(self, foot: Rect) -> tuple[Support, ...]:
         """None: nothing is put down on a drum."""
         return ()
+
+    def listed(self, scene: Placed) -> tuple[str, str]:
+        """Its note and head."""
+        return "instruments", (
+            f"{self.name}: drum (note {self.note}), head r {self.radius * 1000:.1f} mm at "
+            f"{mm(self.head)}"
+        )
 
     def primitives(self, scene: Placed) -> list[Primitive]:
         """Its body, up to the head."""

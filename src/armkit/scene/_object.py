@@ -77,6 +77,11 @@ class SceneObject(Protocol):
         """How a view draws it (``scene``: where it stands, for what it depends on)."""
         ...
 
+    def listed(self, scene: Placed) -> tuple[str, str]:
+        """The heading ``armkit scene show`` lists it under (``"cubes"``) and its line
+        there, in millimetres and degrees (``scene``: where it stands)."""
+        ...
+
 
 class Placed(Protocol):
     """The scene as a kind's code reads it: the table and the objects on it."""

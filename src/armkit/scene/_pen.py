@@ -10,6 +10,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from .._inputs import mm
 from .._primitives import RGB, Cylinder, Primitive
 from .._primitives import pose as placed
 from ._fields import Entry, entries
@@ -65,6 +66,13 @@ class Pen:
         """None: nothing rests on a pen."""
         return ()
 
+    def listed(self, scene: Placed) -> tuple[str, str]:
+        """Its length, how much of it its stand holds, where its tip is."""
+        return "pens", (
+            f"{self.name}: {self.length * 1000:.1f} mm long, {self.holder_length * 1000:.1f} mm "
+            f"in its stand, tip {self.tip_offset * 1000:.1f} mm beyond the tool point"
+        )
+
     def primitives(self, scene: Placed) -> list[Primitive]:
         """None of its own: its stand draws it standing in it."""
         return []
@@ -116,6 +124,10 @@ class PenStand:
     def supports(self, foot: Rect) -> tuple[Support, ...]:
         """None: nothing rests on a pen stand."""
         return ()
+
+    def listed(self, scene: Placed) -> tuple[str, str]:
+        """Where it stands and the pen it holds."""
+        return "pen stands", f"{self.name}: {mm(self.position)}, holds {self.pen}"
 
     def primitives(self, scene: Placed) -> list[Primitive]:
         """The stand and the pen standing in it."""

@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from .._inputs import deg_text, mm
 from .._primitives import RGB, Label, Primitive
 from ._fields import Entry, entries
 from ._object import Placed, Solid, Support
@@ -39,6 +40,11 @@ class Place:
     def supports(self, foot: Rect) -> tuple[Support, ...]:
         """None: a place is a point."""
         return ()
+
+    def listed(self, scene: Placed) -> tuple[str, str]:
+        """The point and the pitch to use there, if given."""
+        pitch = "" if self.pitch is None else f", pitch {deg_text(self.pitch)}"
+        return "places", f"{self.name}: {mm(self.position)}{pitch}"
 
     def primitives(self, scene: Placed) -> list[Primitive]:
         """Its name, at the point."""

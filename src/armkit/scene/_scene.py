@@ -67,11 +67,11 @@ class Scene:
             self.boards,
             self.cubes,
             self.containers,
+            self.places,
             self.pens,
             self.pen_stands,
             self.sheets,
             self.instruments,
-            self.places,
             self.hands,
             self.others,
         )

@@ -10,6 +10,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._errors import InputError
+from .._inputs import mm
 from .._primitives import RGB, Box, Primitive
 from ._fields import Entry, entries
 from ._object import Placed, Solid, Support
@@ -90,6 +91,13 @@ class Sheet:
     def supports(self, foot: Rect) -> tuple[Support, ...]:
         """None: a sheet is drawn on."""
         return ()
+
+    def listed(self, scene: Placed) -> tuple[str, str]:
+        """Its size, corner and normal."""
+        return "sheets", (
+            f"{self.name}: {self.width * 1000:.1f} x {self.height * 1000:.1f} mm, corner "
+            f"{mm(self.origin)}, normal {np.round(self.normal, 3).tolist()}"
+        )
 
     def primitives(self, scene: Placed) -> list[Primitive]:
         """A thin white box on its plane."""
