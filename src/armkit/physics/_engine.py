@@ -28,7 +28,7 @@ F64 = NDArray[np.float64]
 STIFFER = 30.0  # the arm's actuators' stiffness over interchange's (its STIFF_AT / this)
 GRIP_KP = 2000.0  # [N/m] the jaws' squeeze per metre of the gripper servo's error
 GRIP_FORCE = 10.0  # [N] the most a jaw pushes (the gripper servo's current limit)
-CONTACT_S = 0.004  # [s] contacts' time constant (MuJoCo's default 0.02 lets light cubes sink)
+CONTACT_S = 0.002  # [s] contacts' time constant, 2 steps (MuJoCo's 0.02: light cubes creep)
 NOSLIP = 4  # MuJoCo's no-slip solver iterations (soft friction lets a held cube creep)
 FRICTION = 1.0  # sliding friction coefficient of the jaws' pads and the cubes
 
