@@ -49,8 +49,7 @@ def test_a_task_runs_on_the_simulated_arm(
     assert main(["--port", str(state), "--scene", "board_001", "pick", "green"]) == 0
     out = capsys.readouterr().out
     assert "9/9  pick green from the top: up 3/3" in out
-    # held 4.5 mm above its centre: the open jaws stay above the holder (tasks top_lift)
-    assert "x 220.0 y 0.0 z 50.0 mm, pitch -90.0 deg" in _where(state, capsys)
+    assert "x 220.0 y 0.0 z 45.5 mm, pitch -90.0 deg" in _where(state, capsys)
 
 
 @pytest.mark.parametrize(

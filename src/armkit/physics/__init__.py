@@ -12,6 +12,7 @@ from ._choose import physics_for as physics_for
 from ._engine import FRICTION as FRICTION
 from ._engine import Engine as Engine
 from ._engine import mujoco_module as mujoco_module
+from ._mujoco import GripSample as GripSample
 from ._mujoco import MujocoPhysics as MujocoPhysics
 
-__all__ = ["FRICTION", "Engine", "MujocoPhysics", "mujoco_module", "physics_for"]
+__all__ = ["FRICTION", "Engine", "GripSample", "MujocoPhysics", "mujoco_module", "physics_for"]

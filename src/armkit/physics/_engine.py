@@ -23,6 +23,7 @@ from numpy.typing import NDArray
 from .._errors import ArmkitError
 from ..model import ArmModel
 from ..scene import Scene
+from ._hand import Scissor, clip_hand
 
 F64 = NDArray[np.float64]
 STIFFER = 30.0  # the arm's actuators' stiffness over interchange's (its STIFF_AT / this)
@@ -30,6 +31,7 @@ GRIP_KP = 2000.0  # [N/m] the jaws' squeeze per metre of the gripper servo's err
 GRIP_FORCE = 10.0  # [N] the most a jaw pushes (the gripper servo's current limit)
 CONTACT_S = 0.002  # [s] contacts' time constant, 2 steps (MuJoCo's 0.02: light cubes creep)
 NOSLIP = 4  # MuJoCo's no-slip solver iterations (soft friction lets a held cube creep)
+PALM = 1.5  # the palm begins this many pad lengths behind the tool point (the fingers' roots)
 FRICTION = 1.0  # sliding friction coefficient of the jaws' pads and the cubes
 
 
@@ -77,8 +79,10 @@ class Engine:
         self.mj.mj_resetDataKeyframe(self.m, self.d, 0)
         self.at = _indices(self.mj, self.m, model, scene)
         self._tune(friction)
+        self.scissor: Scissor | None = None
         if model.gripper.present:
-            _clip_hand(self.mj, self.m, model.gripper.finger_length)
+            clip_hand(self.mj, self.m, PALM * model.gripper.finger_length)
+            self.scissor = Scissor.of(self.mj, self.m, model)
         self._unstick()
         self.travel = (model.gripper.width_max - model.gripper.width_min) / 2.0
 
@@ -150,14 +154,19 @@ class Engine:
         d.ctrl[: self.model.dof] = q
         if jaws is not None and self.at.gripper >= 0:
             d.ctrl[self.at.gripper] = self._jaw(jaws)
+            if self.scissor is not None:
+                self.scissor.follow(self.m, self.opening())
         self.mj.mj_step(self.m, d)
 
     def opening(self) -> float:
         """The jaws' opening in MuJoCo [m]."""
         if self.at.jaw < 0:
             return 0.0
-        jaw = self.at.jaw
-        return self.model.gripper.width_min + float(self.d.qpos[jaw] + self.d.qpos[jaw + 1])
+        jaw, g = self.at.jaw, self.model.gripper
+        return min(
+            max(g.width_min + float(self.d.qpos[jaw] + self.d.qpos[jaw + 1]), g.width_min),
+            g.width_max,
+        )
 
     def cube_pose(self, name: str) -> F64:
         """The cube's centre pose in the scene frame, shape (4, 4) [m]."""
@@ -206,38 +215,6 @@ class Engine:
     def jaw_force(self) -> float:
         """The force the gripper's actuator pushes its jaws with now [N] (0 without one)."""
         return 0.0 if self.at.gripper < 0 else abs(float(self.d.actuator_force[self.at.gripper]))
-
-
-def _clip_hand(mj: Any, m: Any, pads: float) -> None:
-    """The tool's link (the palm) ends behind the jaws: its clearance capsules (which
-    reach the tool point, round a held cube) are cut at ``pads`` [m] (the fingers' roots,
-    a pad's length behind the tool point, where the pads' back edge is half that) plus
-    their radius behind the tool point along the approach, so only the jaws touch what
-    they grasp; a capsule wholly in front of that touches nothing."""
-    site = int(m.site("tool").id)
-    body = int(m.site_bodyid[site])
-    R_tool = np.zeros(9)
-    mj.mju_quat2Mat(R_tool, m.site_quat[site])
-    approach, tool = R_tool.reshape(3, 3)[:, 0], np.array(m.site_pos[site])
-    for g in np.flatnonzero(m.geom_bodyid == body):
-        R = np.zeros(9)
-        mj.mju_quat2Mat(R, m.geom_quat[g])
-        axis, centre = R.reshape(3, 3)[:, 2], np.array(m.geom_pos[g])
-        radius = float(m.geom_size[g, 0])
-        half = float(m.geom_size[g, 1]) if m.geom_type[g] == mj.mjtGeom.mjGEOM_CAPSULE else 0.0
-        ends = [centre - half * axis, centre + half * axis]
-        limit = -pads - radius  # along the approach from the tool point [m]
-        depth = [float((e - tool) @ approach) for e in ends]
-        if min(depth) > limit:  # all of it among the pads
-            m.geom_contype[g] = m.geom_conaffinity[g] = 0
-            continue
-        if max(depth) <= limit or half == 0.0:
-            continue
-        far = int(np.argmax(depth))
-        near = ends[1 - far]
-        cut = near + (ends[far] - near) * (limit - depth[1 - far]) / (depth[far] - depth[1 - far])
-        m.geom_pos[g] = (near + cut) / 2.0
-        m.geom_size[g, 1] = float(np.linalg.norm(cut - near)) / 2.0
 
 
 def _indices(mj: Any, m: Any, model: ArmModel, scene: Scene) -> Indices:

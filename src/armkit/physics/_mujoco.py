@@ -21,7 +21,7 @@ cube stopped them. What happens is told as the rules tell it:
 from __future__ import annotations
 
 import math
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -41,6 +41,7 @@ from ._engine import FRICTION, Engine
 
 F64 = NDArray[np.float64]
 BLOCKED = 0.5e-3  # [m]: MuJoCo's jaws this much wider than the gripper servo = stopped
+PAST = 2e-3  # [m]: jaws this much narrower than a cube have closed past it (not squeezing it)
 SQUEEZE = 2e-3  # [m]: a restored grip's jaws are driven this much inside the cube
 SETTLED = 0.05e-3  # [m]: jaws moving less than this between looks have closed on it
 SLIP = 3e-3  # [m]: a held cube this far from where the jaws took it has slipped
@@ -51,10 +52,27 @@ EVERY = 10  # steps between looks at the cubes (slips, settling)
 NEAR = 0.06  # [m]: a closing this close to a cube that misses it is reported
 
 
+@dataclass(frozen=True)
+class GripSample:
+    """A held cube as the jaws hold it, every ``EVERY`` steps once they have closed on it.
+
+    Attributes:
+        t: simulated time [s].  cube: its name.
+        force: the gripper actuator's force on its jaws [N].
+        slip: how far the cube has moved in the grip since the jaws closed on it [m].
+    """
+
+    t: float
+    cube: str
+    force: float
+    slip: float
+
+
 class MujocoPhysics(ScenePhysics):
     """Attach with ``world.attach(MujocoPhysics(scene))`` (``tasks.attach_scene`` does,
     for a scene whose ``physics`` is ``"mujoco"``). The MuJoCo model is built on the
-    first step, from the arm and the cubes where they are then.
+    first step, from the arm and the cubes where they are then. ``grips`` records the
+    held cubes' grip force and slip (``GripSample``) every 10 steps.
 
     Args:
         scene: the objects at rest.  arm: the arm's name in the World (None: the only one).
@@ -77,6 +95,7 @@ class MujocoPhysics(ScenePhysics):
         self._missed_once = False
         self._last_width: float | None = None  # the gripper servo's goal at the last step [m]
         self._looked_width = -1.0  # the jaws' opening at the last look [m]
+        self.grips: list[GripSample] = []  # the held cubes' grip force and slip, as held
         self._pushed: set[str] = set()  # moving cubes that were standing, not let go
         self._in_hand: F64 | None = None  # the held cube in MuJoCo's tool frame, once squeezed
 
@@ -177,7 +196,7 @@ class MujocoPhysics(ScenePhysics):
         if self._missed_once:
             return
         near = self._nearest(sim, engine)
-        if near is None or width > self._sizes[near].size - BLOCKED:
+        if near is None or width > self._sizes[near].size - PAST:
             return
         left, right = engine.touching()
         if near in left | right:  # pressed into it, not past it
@@ -220,6 +239,7 @@ class MujocoPhysics(ScenePhysics):
                 self._looked_width, self._in_hand = width, in_hand  # still squeezing it
             else:
                 off = float(np.linalg.norm(in_hand[:3, 3] - self._in_hand[:3, 3]))
+                self.grips.append(GripSample(t, name, engine.jaw_force(), off))
                 if off > SLIP:
                     self._slipped(sim, engine, t, f"slipped {off * 1000:.1f} mm in the grip")
         for cube in self.scene.cubes:
@@ -243,7 +263,7 @@ class MujocoPhysics(ScenePhysics):
         cube = self._sizes[name].moved(T)
         others = self.scene.without_cube(name)
         _, _, tilt = yaw_and_face(T[:3, :3])
-        below = support_under(others, cube.footprint(), float(cube.position[2]) + 1e-3)
+        below = support_under(others, cube.footprint(), float(T[2, 3]))  # under its centre
         fall = bottom - float(cube.position[2])
         self.scene = replace(others, cubes=(*others.cubes, cube))
         if pushed and tilt <= FLAT_TILT and fall <= DROP_HEIGHT:

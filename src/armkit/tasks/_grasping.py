@@ -20,7 +20,6 @@ F64 = NDArray[np.float64]
 TOP, SIDE = -math.pi / 2, 0.0
 JAW_ROOM = 0.010  # [m] opened this much wider than the cube on each side
 SIDE_MARGIN = 0.002  # [m] between a level gripper's links and the surface round the cube
-PAD_THICKNESS = 0.006  # [m] a jaw, as the 3D view and the MJCF draw it
 UP = np.array([0.0, 0.0, 1.0])
 OTHER_FACE = "would land on another face"  # the end of a put-down's refusal for it
 
@@ -97,19 +96,6 @@ def side_shift(ctx: Context, st: State, cube: Cube) -> float:
     return shift
 
 
-def top_lift(ctx: Context, st: State, cube: Cube, opening: float) -> float:
-    """How far above its centre [m] a gripper coming from the top must hold ``cube`` so
-    that its open jaws (``opening`` [m] apart, ``PAD_THICKNESS`` thick, the pads
-    reaching half their length below the tool point) stay above the surface round
-    the cube: a board's top round a socket narrower than the open jaws. 0 on the
-    table or on another cube."""
-    half = opening / 2 + PAD_THICKNESS
-    foot = Rect(cube.position[:2].copy(), (half, half), cube.yaw)
-    surface = support_under(st.scene.without_cube(cube.name), foot, float(cube.position[2]) + 1.0)
-    low = surface.z + ctx.model.gripper.finger_length / 2 + SIDE_MARGIN
-    return max(0.0, low - float(cube.center[2]))
-
-
 def grasp_point(st: State, cube: Cube, pitch: float, shift: float) -> F64:
     """The tool point on ``cube``: its centre, moved ``shift`` [m] up for a side
     grasp or out from the base for a top grasp (so that turned onto its side it is
@@ -128,8 +114,6 @@ def pick(ctx: Context, st: State, name: str, pitch: float, shift: float) -> Stat
     if st.opening is None or st.opening < opening - 1e-6:
         st = grip(ctx, st, opening, f"open to {opening * 1000:.0f} mm")
     p = grasp_point(st, cube, pitch, shift)
-    if abs(pitch - TOP) < 1e-9:  # the open jaws stay above a holder's rim
-        p = p + UP * top_lift(ctx, st, cube, opening)
     st = down(ctx, st, p, pitch, label, kin=kin, ignore=frozenset({name}))
     T_tool = st.scene.T_world_base @ fk(kin, st.q)
     found = grasp(ctx.model.gripper, T_tool, opening, cube)

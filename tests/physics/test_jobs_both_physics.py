@@ -1,0 +1,52 @@
+"""Each job on the command line under both physics (issue 32 item 2): the same command,
+the same checks (a task stops on a miss, a slip, a drop or a tip, and each cube must
+end within 1 mm and 1 deg of where the plan puts it). The rules' runs are quick and
+run always; MuJoCo's run under ARMKIT_PROFILE=ci (a few seconds of CPU each).
+
+Where MuJoCo finds what the rules do not (docs/physics.md), the MuJoCo run is a
+strict xfail naming why: when a planner change fixes it, the test says so."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from armkit.cli import main
+from budget import FULL
+
+JOBS = [
+    ("openmanipulator_x", "board_001", "rotate-cube red"),
+    ("openmanipulator_x", "board_001", "stack red green blue"),
+    ("openmanipulator_x", "board_001", "move-item blue board[2,2]"),
+    ("openmanipulator_x", "board_001", "pick green"),
+    ("lynx6", "board_001", "move-item green board[1,1]"),
+    ("lynx6", "search_002", "search"),
+]
+MUJOCO_FINDS = {  # what the physics finds that the rules do not (docs/physics.md)
+    "pick green": "the open jaws land on the board round the holder: held 3.3 mm high",
+    "move-item blue board[2,2]": "blue stands 11.6 deg off the arm's line and is not squared up",
+}
+
+
+def _cases() -> list[object]:
+    out: list[object] = []
+    for arm, scene, job in JOBS:
+        out.append(pytest.param("rules", arm, scene, job, id=f"rules-{arm}-{job}"))
+        marks: list[pytest.MarkDecorator] = [
+            pytest.mark.skipif(not FULL, reason="MuJoCo's runs: ARMKIT_PROFILE=ci")
+        ]
+        if job in MUJOCO_FINDS:
+            marks.append(pytest.mark.xfail(strict=True, reason=MUJOCO_FINDS[job]))
+        out.append(pytest.param("mujoco", arm, scene, job, id=f"mujoco-{arm}-{job}", marks=marks))
+    return out
+
+
+@pytest.mark.parametrize(("physics", "arm", "scene", "job"), _cases())
+def test_the_job_passes_its_checks(
+    physics: str, arm: str, scene: str, job: str, config_dir: Path,
+    capsys: pytest.CaptureFixture[str],
+) -> None:  # fmt: skip
+    code = main(["--arm", arm, "--scene", scene, "--physics", physics, *job.split()])
+    err = capsys.readouterr().err
+    assert code == 0, err
