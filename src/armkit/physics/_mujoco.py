@@ -113,11 +113,22 @@ class MujocoPhysics(ScenePhysics):
     def on_step(self, world: Any, t: float) -> None:
         """One MuJoCo step with the arm where its servos are; then grasp, slip or settle."""
         sim = world.arm(self._arm)
+        self._advance(sim, sim.q(), t, float(getattr(world, "dt", 1e-3)))
+
+    def on_steps(self, world: Any, times: F64) -> None:
+        """A stretch of World steps at ``times`` [s] (the jaws still in it): one MuJoCo
+        step for each, the arm's actuators at the angles each step recorded."""
+        sim = world.arm(self._arm)
+        dt = float(getattr(world, "dt", 1e-3))
+        for q, t in zip(sim.recent(len(times)), times, strict=True):
+            self._advance(sim, q, float(t), dt)
+
+    def _advance(self, sim: Any, q: F64, t: float, dt: float) -> None:
         self._model = sim.model
-        q, width = sim.q(), sim.grip()
+        width = sim.grip()
         engine = self.engine
         if engine is None:
-            engine = self.engine = self._build(sim, q, width, float(getattr(world, "dt", 1e-3)))
+            engine = self.engine = self._build(sim, q, width, dt)
         goal = float(getattr(getattr(sim, "body", None), "grip_goal", width))
         jaws = width if self._stopped is None else min(goal, self._stopped - SQUEEZE)
         engine.step(q, jaws if sim.model.gripper.present else None)
