@@ -61,6 +61,8 @@ def test_every_kind_has_every_part(kind: DriverKind) -> None:
     # a kind whose unit cannot report its position is calibrated by a person
     if kind.traits & {"timed", "hobby"}:
         assert isinstance(kind.calibrate, CalibrationRoutine) and callable(kind.calibrate.run)
+    # a hobby-servo controller takes one raw pulse (armkit servo)
+    assert (kind.pulses is not None) == ("hobby" in kind.traits)
 
 
 @pytest.mark.parametrize("kind", driver_kinds(), ids=lambda kind: kind.name)
@@ -174,6 +176,14 @@ def test_a_kind_added_by_one_entry_is_emulated(clone: DriverKind) -> None:
         assert Path(emulator.port).exists()
     finally:
         emulator.close()
+
+
+def test_a_kind_added_by_one_entry_takes_a_raw_pulse_on_its_own_controller(
+    clone: DriverKind,
+) -> None:
+    # the clone is an SSC-32: channel 30 (a Maestro has 0..23) and its QP read-back
+    code, text = _armkit("--driver", "clone32", "--port", "emu", "servo", "30", "1200")
+    assert code == 0 and "channel 30: sent 1200 µs, controller reports 1200 µs" in text, text
 
 
 def test_a_kind_added_by_one_entry_is_calibrated_by_its_own_routine(clone: DriverKind) -> None:

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-from contextlib import ExitStack
 from typing import Any
 
 from .._errors import DeviceError, InputError
@@ -67,44 +66,31 @@ def _servo_driver(args: argparse.Namespace) -> str:
 
 
 def run_servo(args: argparse.Namespace) -> int:
-    """Check the pulse, send it, wait, print what the controller reports back."""
-    driver = _servo_driver(args)
+    """Check the pulse, send it, wait, print what the controller reports back (the kind's
+    own controller: its ``pulses`` part in the registry of driver kinds)."""
+    from ..connect import driver_kind, simulated_line
+
+    name = _servo_driver(args)
+    pulses = driver_kind(name).pulses
+    if pulses is None:
+        raise InputError(f"--driver {name} takes no raw pulses")
     if not args.port:
         raise DeviceError("servo needs --port (your controller's serial device, or emu)")
-    with ExitStack() as stack:
-        device = stack.enter_context(_open_device(driver, args, stack))
-        if driver == "ssc32":
-            device.move(args.channel, round(args.pulse), time_ms=args.time_ms)
-            device.wait(_wait_s(args.time_ms))
-            back = float(device.query_pulses([args.channel])[args.channel])
-        else:
-            device.group_move({args.channel: args.pulse}, args.time_ms)
-            device.wait(_wait_s(args.time_ms))
-            back = device.get_position(args.channel)
+    line, clock = simulated_line(name) if args.port == "emu" else (args.port, None)
+    try:
+        bus = pulses(line, clock, args.channel, args.pulse)
+    except BaseException:
+        if args.port == "emu":
+            line.close()
+        raise
+    try:
+        bus.move({args.channel: args.pulse}, args.time_ms)
+        bus.wait((args.time_ms or 0) / 1000.0 + 2.0)
+        back = bus.read([args.channel])[args.channel]
+    finally:
+        bus.close()
     print(f"channel {args.channel}: sent {args.pulse:g} µs, controller reports {back:g} µs")
     return 0
-
-
-def _wait_s(time_ms: int | None) -> float:
-    return (time_ms or 0) / 1000.0 + 2.0
-
-
-def _open_device(driver: str, args: argparse.Namespace, stack: ExitStack) -> Any:
-    """The device at ``args.port`` (a simulated controller for ``emu``).
-    Channel and pulse are checked here, before the port is opened."""
-    from ..connect import simulated_line
-    from ..devices import maestro, ssc32
-
-    if driver == "ssc32":
-        ssc32.check_channel(args.channel)
-        ssc32.check_pulse(args.channel, round(args.pulse))
-    else:
-        ssc32.check_channel(args.channel, maestro.CHANNELS)
-        maestro.target_bytes(args.channel, args.pulse)
-    port, clock = simulated_line(driver) if args.port == "emu" else (args.port, None)
-    if driver == "ssc32":
-        return ssc32.SSC32(port, clock=clock)
-    return maestro.Maestro(port, clock=clock)
 
 
 def run_table(args: argparse.Namespace) -> int:

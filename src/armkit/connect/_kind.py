@@ -16,7 +16,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal, Protocol
 
 if TYPE_CHECKING:
+    from .._clock import Clock
     from ..drivers import Driver, Forecaster
+    from ..drivers.servo import ServoBus
     from ..model import ArmModel, Section
     from ..sim import SimArm, World
     from ..sim.assembly import Persistence
@@ -66,6 +68,15 @@ class Emulated(Protocol):
     def __call__(self, model: ArmModel | None, world: World) -> Rig: ...
 
 
+class Pulses(Protocol):
+    """The kind's hobby-servo controller on ``line`` (a serial device path, or a simulated
+    line with its ``clock``) as the servo driver's ``ServoBus``, for one raw pulse
+    (``armkit servo``): ``channel`` and ``pulse`` [µs] are checked first (InputError
+    naming the controller's range), before the port is opened."""
+
+    def __call__(self, line: Any, clock: Clock | None, channel: int, pulse: float) -> ServoBus: ...
+
+
 class Calibrator(Protocol):
     """Measures the unit behind ``driver`` with a person (``ask``, ``say``) and saves it;
     returns the file written."""
@@ -106,6 +117,8 @@ class DriverKind:
             device that is not a serial one (the OWI-535's USB board).
         calibrate: how a unit is measured, or None where the model file's numbers are
             the unit's (a Dynamixel servo knows its own position).
+        pulses: its controller taking one raw pulse (``armkit servo``), for a kind of
+            hobby servos; None for the others.
     """
 
     name: str
@@ -119,3 +132,4 @@ class DriverKind:
     simulate: Simulator
     emulate: Emulated | None
     calibrate: CalibrationRoutine | None
+    pulses: Pulses | None = None

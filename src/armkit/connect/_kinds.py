@@ -24,7 +24,9 @@ from ..model import (
 from ._kind import Ask, CalibrationRoutine, DriverKind, Say, Trait
 
 if TYPE_CHECKING:
+    from .._clock import Clock
     from ..drivers import Driver, Forecaster
+    from ..drivers.servo import ServoBus
     from ..model import ArmModel
     from ..sim import SimArm, World
     from ..sim.assembly import Persistence
@@ -123,6 +125,18 @@ def _emulate_maestro(model: ArmModel | None, world: World) -> Rig:
     return maestro_rig(model, world)
 
 
+def _pulses_ssc32(line: Any, clock: Clock | None, channel: int, pulse: float) -> ServoBus:
+    from ..drivers.servo import ssc32_pulses
+
+    return ssc32_pulses(line, clock, channel, pulse)
+
+
+def _pulses_maestro(line: Any, clock: Clock | None, channel: int, pulse: float) -> ServoBus:
+    from ..drivers.servo import maestro_pulses
+
+    return maestro_pulses(line, clock, channel, pulse)
+
+
 def _calibrate_servos(model: ArmModel, driver: Any, ask: Ask, say: Say) -> Path:
     from ..drivers.servo import calibrate_servos
 
@@ -214,6 +228,7 @@ KINDS: tuple[DriverKind, ...] = (
         simulate=_simulate_ssc32,
         emulate=_emulate_ssc32,
         calibrate=CalibrationRoutine(_calibrate_servos),
+        pulses=_pulses_ssc32,
     ),
     DriverKind(
         name="maestro",
@@ -227,6 +242,7 @@ KINDS: tuple[DriverKind, ...] = (
         simulate=_simulate_maestro,
         emulate=_emulate_maestro,
         calibrate=CalibrationRoutine(_calibrate_servos),
+        pulses=_pulses_maestro,
     ),
     DriverKind(
         name="dynamixel",

@@ -55,6 +55,30 @@ def open_maestro(
     return _open(model, port, setup, make_bus, clock, on_close)
 
 
+def ssc32_pulses(
+    line: str | SerialPort, clock: Clock | None, channel: int, pulse: float
+) -> ServoBus:
+    """An SSC-32 on ``line`` at its factory 9600 baud for one raw ``pulse`` [µs] on
+    ``channel`` (both checked before the port opens: channels 0..31, 500..2500 µs)."""
+    from ...devices import ssc32
+
+    ssc32.check_channel(channel)
+    ssc32.check_pulse(channel, round(pulse))
+    return SSC32Bus(ssc32.SSC32(line, clock=clock))
+
+
+def maestro_pulses(
+    line: str | SerialPort, clock: Clock | None, channel: int, pulse: float
+) -> ServoBus:
+    """A Maestro on ``line`` for one raw ``pulse`` [µs] on ``channel`` (both checked
+    before the port opens: channels 0..23, a target it takes)."""
+    from ...devices import maestro, ssc32
+
+    ssc32.check_channel(channel, maestro.CHANNELS)
+    maestro.target_bytes(channel, pulse)
+    return MaestroBus(maestro.Maestro(line, clock=clock))
+
+
 def _open(
     model: ArmModel,
     port: str | SerialPort | None,
