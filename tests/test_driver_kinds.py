@@ -191,7 +191,11 @@ def test_a_kind_added_by_one_entry_is_calibrated_by_its_own_routine(clone: Drive
     assert code == 0, text
     assert CALIBRATED == [("lynx6", "ServoArmDriver")] and "wrote clone.toml" in text
     code, text = _armkit("--arm", "openmanipulator_x", "--driver", "dynamixel", "calibrate")
-    assert code == 2 and "--driver owi535, ssc32, maestro, clone32 (or sim on the owi535)" in text
+    assert (
+        code == 2
+        and "--driver owi535, ssc32, maestro, feetech, clone32 (or sim on the owi535 or feetech)"
+        in text
+    )
 
 
 def test_a_kind_added_by_one_entry_is_a_driver_of_the_script_language(clone: DriverKind) -> None:

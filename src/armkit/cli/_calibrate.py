@@ -1,4 +1,5 @@
-"""``armkit calibrate``: measure this unit and save it (OWI timings, Lynx6 pulse tables)."""
+"""``armkit calibrate``: measure this unit and save it (OWI timings, Lynx6 pulse tables,
+an SO-101's LeRobot calibration file)."""
 
 from __future__ import annotations
 
@@ -20,12 +21,15 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
     """Add ``calibrate``."""
     p = sub.add_parser(
         "calibrate",
-        help="measure this unit and save it (OWI: joint timings; Lynx6: servo pulse tables)",
+        help="measure this unit and save it (OWI: joint timings; Lynx6: servo pulse tables; "
+        "SO-101: LeRobot's calibration file)",
         description="Guide a person through measuring this arm unit, then write its calibration "
         "file (atomically) to the config directory ($ARMKIT_CONFIG_DIR, else ~/.config/armkit). "
         "OWI-535 (--driver owi535, or sim): each joint is timed limit to limit, up and down. "
         "Lynx6 (--driver ssc32 or maestro): each servo visits its table points (ends and every "
-        "30 deg) and you type the angle you measure.",
+        "30 deg) and you type the angle you measure. SO-101/SO-100 (--driver feetech, or sim): "
+        "LeRobot's procedure (the middle of the range is the half turn, each joint to both "
+        "ends) written to the servos and to <arm>_feetech.json in LeRobot's format.",
     )
     p.set_defaults(func=run_calibrate)
 

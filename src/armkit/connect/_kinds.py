@@ -183,9 +183,25 @@ def _open_feetech(model: ArmModel, port: str | None) -> Driver:
 
 
 def _forecast_feetech(model: ArmModel, unit: str | None) -> Forecaster:
-    from ..drivers.feetech import FeetechForecaster
+    from ..drivers.feetech import FeetechForecaster, unit_config
 
-    return FeetechForecaster(model, FEETECH_SECTION.of(model))
+    cfg = FEETECH_SECTION.of(model)
+    real = unit is not None and unit != "sim"  # a unit's file calibrates its real port
+    return FeetechForecaster(model, unit_config(model, cfg) if real else cfg)
+
+
+def _calibrate_feetech(model: ArmModel, driver: Any, ask: Ask, say: Say) -> Path:
+    from ..drivers.feetech import calibrate_feetech
+
+    return calibrate_feetech(model, driver, ask, say)
+
+
+def _feetech_operator(driver: Driver) -> Ask | None:
+    from ..sim.feetech_operator import FeetechOperator
+
+    world = getattr(getattr(driver, "clock", None), "world", None)
+    arm = world.arm() if world is not None else None
+    return FeetechOperator(arm).ask if arm is not None else None
 
 
 def _simulate_feetech(
@@ -268,7 +284,7 @@ KINDS: tuple[DriverKind, ...] = (
         forecast=_forecast_feetech,
         simulate=_simulate_feetech,
         emulate=_emulate_feetech,
-        calibrate=None,
+        calibrate=CalibrationRoutine(_calibrate_feetech, operator=_feetech_operator),
     ),
 )
 

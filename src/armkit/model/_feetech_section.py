@@ -39,6 +39,9 @@ class FeetechSection:
         gripper_zero_tick: the gripper servo's step with the jaws shut.
         gripper_direction: +1 or -1 (the step's sense as the jaws open).
         position_tolerance_ticks: how close a servo must come to count as arrived.
+        center_ticks: per joint, the step at angle 0 where a unit's calibration gives
+            each its own (a LeRobot calibration file: the middle of its range); empty:
+            ``center_tick`` for every joint.
     """
 
     ids: tuple[int, ...]
@@ -51,6 +54,12 @@ class FeetechSection:
     gripper_zero_tick: int = 2048
     gripper_direction: int = 1
     position_tolerance_ticks: int = 20
+    center_ticks: tuple[float, ...] = ()
+
+    @property
+    def centers(self) -> tuple[float, ...]:
+        """The step at angle 0 of each joint."""
+        return self.center_ticks or (self.center_tick,) * len(self.ids)
 
     def jaw_angle(self, width: float) -> float:
         """The jaw's angle [rad] for an opening ``width`` [m] (chord law)."""

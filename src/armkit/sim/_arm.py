@@ -169,6 +169,15 @@ class SimArm:
         with self._lock:
             push(np.asarray(q, dtype=np.float64))
 
+    def push_grip(self, width: float) -> None:
+        """Open or close the jaws by hand to ``width`` [m], as ``push`` moves the joints:
+        ValueError, nothing moved, if the gripper's servo holds them (torque on)."""
+        push_grip = getattr(self.body, "push_grip", None)
+        if not callable(push_grip):
+            raise ValueError(f"{self.name}: its jaws cannot be moved by hand")
+        with self._lock:
+            push_grip(float(width))
+
     def at_rest(self) -> bool:
         """True when every joint and the gripper have settled."""
         with self._lock:

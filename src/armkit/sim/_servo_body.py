@@ -294,6 +294,17 @@ class ServoBody:
             self.place(j, float(q[j]))
             self.velocity[j] = 0.0
 
+    def push_grip(self, width: float) -> None:
+        """A hand opens or closes the jaws to ``width`` [m] (within the gripper's range).
+        ValueError (nothing moved) if the gripper's servo holds them."""
+        g, mount, outputs = self.model.gripper, self.grip_mount, self.outputs
+        if mount is None or (
+            outputs is not None and outputs.setpoint(mount.channel, self._t) is not None
+        ):
+            raise ValueError("gripper: the servo holds it (torque on); turn the torque off first")
+        self.place(GRIPPER, min(max(width, g.width_min), g.width_max))
+        self.grip_velocity = 0.0
+
     def speed(self, joint: int) -> float:
         """How fast ``joint``'s motor turns [rad/s] (GRIPPER: the opening changes [m/s])."""
         return self.grip_velocity if joint == GRIPPER else float(self.velocity[joint])

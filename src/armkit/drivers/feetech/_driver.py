@@ -32,6 +32,7 @@ from ...model import FEETECH_SECTION, ArmModel, FeetechSection
 from .._driver import Forecast
 from .._sent import SentProfile
 from ._forecast import POLL_S, FeetechForecaster, Goals
+from ._lerobot import unit_config
 
 F64 = NDArray[np.float64]
 SETTLE_S = 0.3  # longest wait for a stopped servo's encoder to reach its goal step [s]
@@ -39,16 +40,17 @@ _GOAL_BLOCK = (41, 7)  # Acceleration .. Goal Velocity: (address, bytes)
 
 
 def open_feetech(model: ArmModel, port: str | None) -> FeetechDriver:
-    """Open the arm's servos on ``port`` (a device path).
+    """Open the arm's servos on ``port`` (a device path), with the unit's calibration
+    (``<config>/<arm>_feetech.json``, LeRobot's format) where there is one.
 
     Raises:
         ModelError: no or a wrong ``[drivers.feetech]`` table.
         DeviceError: no port, the port taken or missing, or the servos do not answer.
     """
-    cfg = FEETECH_SECTION.of(model)
+    cfg = unit_config(model, FEETECH_SECTION.of(model))
     if not port:
         raise DeviceError("the feetech driver needs a port: /dev/ttyACM0 (say) or 'emu'")
-    return FeetechDriver(model, FeetechBus(port, cfg.baudrate))
+    return FeetechDriver(model, FeetechBus(port, cfg.baudrate), config=cfg)
 
 
 class FeetechDriver:

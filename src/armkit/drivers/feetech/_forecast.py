@@ -73,14 +73,15 @@ class FeetechForecaster:
         """Joint angles [rad], shape (dof,) -> goal steps, clipped to 0..4095."""
         per_rad = self.config.ticks_per_turn / (2.0 * math.pi)
         sign = np.asarray(self.config.direction, dtype=np.float64)
-        steps = np.rint(self.config.center_tick + sign * np.asarray(q) * per_rad)
+        steps = np.rint(np.asarray(self.config.centers) + sign * np.asarray(q) * per_rad)
         return np.clip(steps, 0, sts.STEPS_PER_TURN - 1).astype(np.int64)
 
     def angles(self, ticks: I64) -> F64:
         """Steps, shape (dof,) -> joint angles [rad]."""
         per_rad = self.config.ticks_per_turn / (2.0 * math.pi)
         sign = np.asarray(self.config.direction, dtype=np.float64)
-        return (np.asarray(ticks, dtype=np.float64) - self.config.center_tick) * sign / per_rad
+        centers = np.asarray(self.config.centers, dtype=np.float64)
+        return (np.asarray(ticks, dtype=np.float64) - centers) * sign / per_rad
 
     def goals(self, start: F64, goal: F64, seconds: float, peak: bool) -> Goals:
         """The servos' goals for a move from ``start`` to ``goal`` [rad] in ``seconds``."""

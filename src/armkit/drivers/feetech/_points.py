@@ -19,8 +19,8 @@ def feetech_points(
     cfg = FEETECH_SECTION.of(model) if config is None else config
     per_rad = cfg.ticks_per_turn / (2.0 * math.pi)
     points: list[tuple[int, int, tuple[float, ...], tuple[float, ...]]] = [
-        (sid, j, (cfg.center_tick, cfg.center_tick + d * per_rad), (0.0, 1.0))
-        for j, (sid, d) in enumerate(zip(cfg.ids, cfg.direction, strict=True))
+        (sid, j, (c, c + d * per_rad), (0.0, 1.0))
+        for j, (sid, d, c) in enumerate(zip(cfg.ids, cfg.direction, cfg.centers, strict=True))
     ]
     g = model.gripper
     if cfg.gripper_id is not None and g.width_max > g.width_min:
