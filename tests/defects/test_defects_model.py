@@ -116,6 +116,23 @@ def test_typed_driver_sections() -> None:
         owi_section(load_model("lynx6"))
 
 
+def test_a_hobby_servo_section_is_typed_and_its_settle_time_is_read(tmp_path: Path) -> None:
+    # the servo driver builds its tables from the section the model checked at load
+    # (it once re-read the raw table, and settle_ms, which it read, the model refused)
+    from armkit.drivers.servo import load_setup
+    from armkit.model import ServoSection, servo_section
+
+    servos = servo_section(load_model("lynx6"), "ssc32")
+    assert isinstance(servos, ServoSection) and servos.channels == (0, 1, 2, 3, 4, 5)
+    assert servos.settle_ms == 100.0 and servos.center_deg == (90.0,) * 5
+    old = "channels = [0, 1, 2, 3, 4, 5]"
+    path = variant(tmp_path, "lynx6", old, f"settle_ms = 40\n{old}")
+    assert load_setup(load_model(path), "ssc32").settle_s == pytest.approx(0.040)
+    path = variant(tmp_path, "lynx6", old, f"settle_ms = 4000\n{old}")
+    with pytest.raises(ModelError, match=r"settle_ms': must be 0\.\.2000 ms, got 4000"):
+        load_model(path)
+
+
 def test_every_shipped_model_still_loads() -> None:
     from armkit.model import shipped_models
 

@@ -33,7 +33,9 @@ if TYPE_CHECKING:  # what the names below are, for type checkers (loaded on firs
     from ._sections import SSC32_SECTION as SSC32_SECTION
     from ._sections import DynamixelSection as DynamixelSection
     from ._sections import Section as Section
+    from ._sections import ServoSection as ServoSection
     from ._sections import dynamixel_section as dynamixel_section
+    from ._sections import servo_section as servo_section
     from ._types import ArmModel as ArmModel
     from ._types import DHRow as DHRow
     from ._types import Gripper as Gripper
@@ -109,6 +111,8 @@ _LAZY = {
     "DynamixelSection": _sections_module,
     "Section": _sections_module,
     "dynamixel_section": _sections_module,
+    "ServoSection": _sections_module,
+    "servo_section": _sections_module,
     "ArmModel": _types_module,
     "DHRow": _types_module,
     "Gripper": _types_module,

@@ -36,7 +36,7 @@ _DXL = {
 DXL_MODES = ("position", "extended")
 _SERVO = {
     "channels": list, "baudrate": int, "center_deg": list, "direction": list,
-    "grip_pulse_us": list,
+    "grip_pulse_us": list, "settle_ms": NUM,
 }  # fmt: skip
 
 
@@ -87,6 +87,38 @@ class DynamixelSection:
     gripper_current: int = 300
     position_tolerance_ticks: int = 30
     operating_mode: str = "position"
+
+
+@dataclass(frozen=True)
+class ServoSection:
+    """``[drivers.ssc32]`` / ``[drivers.maestro]``: a hobby-servo arm's channels and the
+    ideal pulse tables (002's) the servo driver starts from.
+
+    Attributes:
+        channels: one per joint, model order, then the gripper's if it has one (0..31,
+            all different).
+        baudrate: serial speed [bit/s] (default 9600).
+        center_deg: per joint, the joint angle [deg] at 1500 µs (default 90, as 002).
+        direction: per joint, +1, or -1 for a servo mounted the other way round.
+        grip_pulse_us: (closed, open) gripper pulses [µs] (default (500, 2500)).
+        settle_ms: how long the servos take to catch up with their pulses after a move
+            [ms], 0..2000 (default 100): the controller cannot tell, so a waiting move waits.
+    """
+
+    channels: tuple[int, ...]
+    baudrate: int = 9600
+    center_deg: tuple[float, ...] = ()
+    direction: tuple[int, ...] = ()
+    grip_pulse_us: tuple[float, float] = (500.0, 2500.0)
+    settle_ms: float = 100.0
+
+
+def servo_section(model: ArmModel, name: str) -> ServoSection:
+    """The model's ``[drivers.NAME]`` table of a hobby-servo controller, typed (ModelError
+    if it has none or it is wrong)."""
+    if not isinstance(model.drivers.get(name), dict):
+        raise ModelError(f"{model.name} has no [drivers.{name}] table")
+    return _servo(Checker(model.source), model.drivers[name], model, f"drivers.{name}")
 
 
 def check_driver_sections(check: Checker, data: Any, model: ArmModel) -> None:
@@ -146,9 +178,9 @@ def _gripper_ticks(check: Checker, data: Any, w: str) -> tuple[int, int]:
     return (closed, opened)
 
 
-def _servo(check: Checker, data: Any, model: ArmModel, w: str) -> None:
-    """``[drivers.ssc32]``/``[drivers.maestro]`` (the servo driver reads them as tables,
-    ``armkit.drivers.servo.load_setup``)."""
+def _servo(check: Checker, data: Any, model: ArmModel, w: str) -> ServoSection:
+    """``[drivers.ssc32]``/``[drivers.maestro]`` (the servo driver builds its tables from
+    them, ``armkit.drivers.servo.load_setup``)."""
     check.table(data, w, _SERVO, ("channels",))
     dof, channels = model.dof, data["channels"]
     if len(channels) not in (dof, dof + 1):
@@ -158,7 +190,7 @@ def _servo(check: Checker, data: Any, model: ArmModel, w: str) -> None:
     numbers = [check.integer(c, f"{w}.channels[{k}]", 0, 31) for k, c in enumerate(channels)]
     if len(set(numbers)) != len(numbers):
         raise check.fail(f"{w}.channels", f"channels must all differ, got {numbers}")
-    check.choice_int(data.get("baudrate", 9600), f"{w}.baudrate", BAUDRATES)
+    baudrate = check.choice_int(data.get("baudrate", 9600), f"{w}.baudrate", BAUDRATES)
     centers = check.numbers(data.get("center_deg", [90.0] * dof), f"{w}.center_deg", dof)
     for k, c in enumerate(centers):
         check.angle(c, f"{w}.center_deg[{k}]")
@@ -170,19 +202,24 @@ def _servo(check: Checker, data: Any, model: ArmModel, w: str) -> None:
     pulses = check.numbers(data.get("grip_pulse_us", [500.0, 2500.0]), f"{w}.grip_pulse_us", 2)
     for k, p in enumerate(pulses):
         check.within(p, f"{w}.grip_pulse_us[{k}]", 500.0, 2500.0, "µs")
+    settle = check.within(data.get("settle_ms", 100.0), f"{w}.settle_ms", 0.0, 2000.0, "ms")
+    return ServoSection(
+        tuple(numbers), baudrate, tuple(float(c) for c in centers), tuple(directions),
+        (float(pulses[0]), float(pulses[1])), float(settle),
+    )  # fmt: skip
 
 
-def _ssc32(check: Checker, data: Any, model: ArmModel) -> None:
-    _servo(check, data, model, "drivers.ssc32")
+def _ssc32(check: Checker, data: Any, model: ArmModel) -> ServoSection:
+    return _servo(check, data, model, "drivers.ssc32")
 
 
-def _maestro(check: Checker, data: Any, model: ArmModel) -> None:
-    _servo(check, data, model, "drivers.maestro")
+def _maestro(check: Checker, data: Any, model: ArmModel) -> ServoSection:
+    return _servo(check, data, model, "drivers.maestro")
 
 
 OWI535_SECTION: Section[OwiSection] = Section("owi535", check_owi)
-SSC32_SECTION: Section[None] = Section("ssc32", _ssc32)
-MAESTRO_SECTION: Section[None] = Section("maestro", _maestro)
+SSC32_SECTION: Section[ServoSection] = Section("ssc32", _ssc32)
+MAESTRO_SECTION: Section[ServoSection] = Section("maestro", _maestro)
 DYNAMIXEL_SECTION: Section[DynamixelSection] = Section("dynamixel", _dynamixel)
 FEETECH_SECTION: Section[FeetechSection] = Section("feetech", read_feetech)
 SECTIONS: tuple[Section[Any], ...] = (

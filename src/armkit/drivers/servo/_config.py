@@ -26,7 +26,7 @@ from typing import Any
 from ..._errors import ModelError
 from ..._files import config_dir
 from ..._toml_files import read_toml
-from ...model import ArmModel
+from ...model import ArmModel, ServoSection, servo_section
 from ._table import ServoCalibration, ideal_grip, ideal_joint
 
 _SCALE = {"deg": math.radians(1.0), "mm": 0.001}  # shown value -> SI
@@ -50,11 +50,11 @@ class ServoSetup:
     settle_s: float = 0.1
 
 
-def driver_section(model: ArmModel, driver: str) -> dict[str, Any]:
-    """The model's ``[drivers.<driver>]`` table (the Maestro may use the SSC-32's)."""
+def driver_section(model: ArmModel, driver: str) -> ServoSection:
+    """The model's ``[drivers.<driver>]`` table, typed (the Maestro may use the SSC-32's)."""
     for name in (driver, "ssc32"):
         if isinstance(model.drivers.get(name), dict):
-            return dict(model.drivers[name])
+            return servo_section(model, name)
     raise ModelError(
         f"{model.name} has no [drivers.{driver}] section; add one with channels = [...] "
         "(one channel per joint, then the gripper's)"
@@ -72,58 +72,30 @@ def load_setup(model: ArmModel, driver: str) -> ServoSetup:
     unit_file = config_dir() / f"{model.name}-{driver}.toml"
     if unit_file.is_file():
         joints, grip = _apply_unit_file(unit_file, joints, grip)
-    settle = section.get("settle_ms", 100)
-    if not isinstance(settle, int | float) or not 0 <= settle <= 2000:
-        raise ModelError(
-            f"{model.name} [drivers.{driver}]: settle_ms must be 0..2000 ms, got {settle!r}"
-        )
-    baudrate = int(section.get("baudrate", 9600))
-    return ServoSetup(joints, grip, baudrate, unit_file, float(settle) / 1000.0)
-
-
-def _per_joint(
-    section: dict[str, Any], key: str, default: float, dof: int, where: str
-) -> list[Any]:
-    value = section.get(key, [default] * dof)
-    if not isinstance(value, list) or len(value) != dof:
-        raise ModelError(f"{where}: {key} must be a list of {dof} numbers, one per joint")
-    return value
+    return ServoSetup(joints, grip, section.baudrate, unit_file, section.settle_ms / 1000.0)
 
 
 def _defaults(
-    model: ArmModel, section: dict[str, Any], where: str
+    model: ArmModel, section: ServoSection, where: str
 ) -> tuple[tuple[ServoCalibration, ...], ServoCalibration | None]:
-    dof = model.dof
-    channels = section.get("channels")
-    if (
-        not isinstance(channels, list)
-        or len(channels) not in (dof, dof + 1)
-        or len(set(channels)) != len(channels)
-        or not all(isinstance(ch, int) and 0 <= ch <= 31 for ch in channels)
-    ):
-        raise ModelError(
-            f"{where}: channels must list {dof} different joint channels (+ 1 for the "
-            f"gripper), each 0..31; got {channels!r}"
-        )
-    centers = _per_joint(section, "center_deg", 90.0, dof, where)
-    directions = _per_joint(section, "direction", 1, dof, where)
+    """002's ideal tables from the section (checked when the model loaded)."""
+    dof, channels = model.dof, section.channels
     try:
         joints = tuple(
             ideal_joint(j.name, ch, j.lower, j.upper, center, direction)
             for j, ch, center, direction in zip(
-                model.joints, channels, centers, directions, strict=False
+                model.joints, channels, section.center_deg, section.direction, strict=False
             )
         )
-        grip = _default_grip(model, section, channels[dof]) if len(channels) > dof else None
+        g = model.gripper
+        grip = (
+            ideal_grip(channels[dof], g.width_min, g.width_max, section.grip_pulse_us)
+            if len(channels) > dof
+            else None
+        )
     except (ValueError, TypeError) as exc:
         raise ModelError(f"{where}: {exc}") from None
     return joints, grip
-
-
-def _default_grip(model: ArmModel, section: dict[str, Any], channel: int) -> ServoCalibration:
-    pulses = section.get("grip_pulse_us", [500.0, 2500.0])
-    g = model.gripper
-    return ideal_grip(channel, g.width_min, g.width_max, pulses)
 
 
 def _apply_unit_file(
