@@ -55,6 +55,7 @@ bench: $(DEVSTAMP)
 	$(BIN)/python benchmarks/music.py
 	$(BIN)/python benchmarks/drawing.py
 	$(BIN)/python benchmarks/tasks.py
+	$(BIN)/python benchmarks/physics.py
 
 clean:
 	rm -rf $(VENV) site build *.egg-info src/*.egg-info .pytest_cache .mypy_cache .ruff_cache

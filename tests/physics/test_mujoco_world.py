@@ -20,6 +20,7 @@ from armkit import Arm, load_model, tasks
 from armkit.cli import main
 from armkit.physics import MujocoPhysics
 from armkit.scene import SceneError, load_scene
+from armkit.viz import cubes
 from budget import FULL
 
 
@@ -123,3 +124,21 @@ def test_a_cube_6_mm_off_its_socket_is_reported_tipped(
     assert code == 2
     assert len(err) == 1
     assert re.search(r"tipped red on board\[0, 0\]: it rests \d+ deg off upright$", err[0]), err
+
+
+def test_the_view_draws_a_cube_as_mujoco_has_it_tilted(tmp_path: Path, closes: object) -> None:
+    """Item 4: the view's cube poses are MuJoCo's (a cube tipped against the holder's
+    rim is drawn tilted); the tasks' ``cube`` snaps it to the face nearest up."""
+    text = Path(load_scene("board_001").source or "").read_text(encoding="utf-8")
+    path = tmp_path / "off.toml"
+    on_rim = "position_mm = [220.0, 51.0, 8.0]"
+    path.write_text(text.replace('socket = { board = "board", row = 0, col = 0 }', on_rim, 1))
+    scene = replace(load_scene(path), physics="mujoco")
+    arm = closes(Arm(load_model("openmanipulator_x"), driver="sim"))  # type: ignore[operator]
+    physics = tasks.attach_scene(arm, scene)
+    arm.world.advance(1.0)
+    (red,) = [o for o in cubes(physics) if o.name == "red"]
+    tilt = np.degrees(np.arccos(np.clip(red.T[2, 2], -1.0, 1.0)))
+    assert 10.0 < tilt < 20.0
+    assert physics.cube("red").up_face == "+z"  # snapped for the tasks' checks
+    assert [e.kind for e in physics.events] == ["tipped"]

@@ -48,6 +48,7 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
         epilog=EPILOG,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
+    p.add_argument("--contacts", action="store_true", help="with --physics mujoco and --scene, draw where MuJoCo's bodies touch (orange dots)")  # fmt: skip
     p.add_argument(
         "--host", default="127.0.0.1", metavar="ADDRESS",
         help="address to serve on (default 127.0.0.1)",
@@ -148,7 +149,8 @@ def run_view(args: argparse.Namespace) -> int:
         return _gif(args, model, poses, Path(args.gif), scene)
     web = web_module()
     arm = _open_arm(args, model, scene)
-    view = web.View(_source(arm, scene), scene=scene, **_view_options(args))
+    source = _source(arm, scene, bool(getattr(args, "contacts", False)))
+    view = web.View(source, scene=scene, **_view_options(args))
     teach = None
     try:
         teach = web.Teach(view, arm)
@@ -187,7 +189,7 @@ def _view_options(args: argparse.Namespace) -> dict[str, Any]:
     return {"host": args.host, "port": args.http_port, "rate_hz": args.rate, "frames": args.frames}
 
 
-def _source(arm: Any, scene: Any) -> Any:
+def _source(arm: Any, scene: Any, contacts: bool = False) -> Any:
     """What the view shows: the simulated arm's world (its cubes moved by the scene's
     physics), or the real arm's driver."""
     from ..viz import ArmSource, WorldSource
@@ -196,11 +198,11 @@ def _source(arm: Any, scene: Any) -> Any:
         return ArmSource(arm)
     physics = None
     if scene is not None:
-        from ..scene import ScenePhysics
+        from ..physics import physics_for
 
-        physics = ScenePhysics(scene)
+        physics = physics_for(scene)  # the rules', or MuJoCo's (--physics, the scene file)
         arm.world.attach(physics)
-    return WorldSource(arm.world, arm.world.arm().name, physics)
+    return WorldSource(arm.world, arm.world.arm().name, physics, contacts)
 
 
 def _follow(

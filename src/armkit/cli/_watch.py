@@ -46,6 +46,7 @@ def add_watch_options(p: argparse.ArgumentParser) -> None:
     g.add_argument("--view", action="store_true", help="serve the live 3D view while this runs; the simulation runs in real time (web extra)")  # fmt: skip
     g.add_argument("--view-port", type=int, default=8080, metavar="PORT", help="TCP port of the view's page (default 8080; 0 = any free)")  # fmt: skip
     g.add_argument("--view-wait", type=float, default=10.0, metavar="S", help="with --view, wait up to S seconds for a page to open before moving (default 10; 0 = do not wait)")  # fmt: skip
+    g.add_argument("--contacts", action="store_true", help="with --view and --physics mujoco, draw where MuJoCo's bodies touch (orange dots)")  # fmt: skip
     g.add_argument("--gif", metavar="FILE.gif", help="write an animation of the simulated arm doing this (plot extra)")  # fmt: skip
     g.add_argument("--fps", type=float, default=15.0, metavar="HZ", help="animation frames per second of simulated time [1/s] (default 15)")  # fmt: skip
 
@@ -193,7 +194,8 @@ def _served(args: argparse.Namespace, world: Any, physics: Any, scene: Any) -> I
     web = web_module()
     from ..viz import WorldSource
 
-    with web.View(WorldSource(world, physics=physics), scene=scene, port=args.view_port) as view:
+    source = WorldSource(world, physics=physics, contacts=bool(getattr(args, "contacts", False)))
+    with web.View(source, scene=scene, port=args.view_port) as view:
         view.start()
         print(f"armkit: live view at {view.url}", flush=True)
         if args.view_wait > 0 and not _page_opened(view, args.view_wait):

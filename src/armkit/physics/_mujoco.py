@@ -49,6 +49,7 @@ MOVED = 1e-3  # [m]: a cube at rest pushed this far is moving
 REST_SPEED = 2e-3  # [m/s]: a cube slower than this (``Engine.cube_speed``) is still
 REST_CHECKS = 5  # looks in a row at rest = come to rest
 EVERY = 10  # steps between looks at the cubes (slips, settling)
+SHOWN_CONTACTS = 64  # contact points a view is given, at most
 NEAR = 0.06  # [m]: a closing this close to a cube that misses it is reported
 
 
@@ -145,6 +146,23 @@ class MujocoPhysics(ScenePhysics):
         if engine is None or name not in engine.at.cubes:
             return super().cube(name)
         return self._sizes[name].moved(engine.cube_pose(name))
+
+    def pose(self, name: str) -> F64:
+        """The cube ``name``'s centre pose as MuJoCo has it, tilt and all (4, 4) [m]."""
+        engine = self.engine
+        if engine is None or name not in engine.at.cubes:
+            return super().pose(name)
+        return engine.cube_pose(name)
+
+    def contacts(self) -> F64:
+        """Where MuJoCo's bodies touch now (at most ``SHOWN_CONTACTS``), scene frame [m],
+        shape (n, 3): what ``armkit view --contacts`` draws."""
+        engine = self.engine
+        if engine is None:
+            return np.zeros((0, 3))
+        d = engine.d
+        found: F64 = np.array(d.contact.pos[: min(d.ncon, SHOWN_CONTACTS)], dtype=np.float64)
+        return found.reshape(-1, 3)
 
     # -- building -----------------------------------------------------------------
     def _build(self, sim: Any, q: F64, width: float, dt: float) -> Engine:

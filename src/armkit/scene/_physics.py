@@ -120,6 +120,12 @@ class ScenePhysics:
         """The world may skip steps while nothing moves (a still gripper grasps nothing)."""
         return not self._stop_pending
 
+    def pose(self, name: str) -> F64:
+        """The cube ``name``'s centre pose now, shape (4, 4) [m] in the scene frame (what
+        a view draws): here ``cube(name).T``; a physics engine's own pose, tilt and all."""
+        T: F64 = self.cube(name).T
+        return T
+
     def cube(self, name: str) -> Cube:
         """The cube ``name`` as last seen (centre of its lowest face, yaw, face up); a
         held one where the gripper carries it."""

@@ -43,12 +43,15 @@ class Snapshot:
         q: joint angles [rad], shape (dof,).
         grip: gripper opening [m].
         objects: poses of the objects that moved (grasped ones), empty if none.
+        contacts: where a physics engine's bodies touch [m], shape (n, 3), scene frame;
+            None when not asked for (``WorldSource(contacts=True)``, MuJoCo only).
     """
 
     t: float
     q: F64
     grip: float
     objects: tuple[ObjectPose, ...] = field(default=())
+    contacts: F64 | None = None
 
 
 @runtime_checkable
@@ -83,14 +86,20 @@ class Truth(Protocol):
 class WorldSource:
     """Follow arm ``arm`` (None: the only one) of a simulation ``world``, at world time:
     the true joint angles and gripper opening, and, with ``physics`` attached to the
-    world, every cube's pose (a grasped one where the gripper carries it)."""
+    world, every cube's pose (a grasped one where the gripper carries it); with
+    ``contacts`` and MuJoCo's physics, where its bodies touch."""
 
     def __init__(
-        self, world: World, arm: str | None = None, physics: ScenePhysics | None = None
+        self,
+        world: World,
+        arm: str | None = None,
+        physics: ScenePhysics | None = None,
+        contacts: bool = False,
     ) -> None:
         self.world = world
         self.sim: Truth = world.arm(arm)
         self.physics = physics
+        self.contacts = contacts
 
     @property
     def model(self) -> ArmModel:
@@ -106,7 +115,19 @@ class WorldSource:
         if t is not None:
             raise InputError("a world is read now; give t=None (its history: World.recording)")
         with self.world.lock:
-            return Snapshot(self.world.now(), self.sim.q(), self.sim.grip(), cubes(self.physics))
+            touching = self._contacts()
+            return Snapshot(
+                self.world.now(), self.sim.q(), self.sim.grip(), cubes(self.physics), touching
+            )
+
+    def _contacts(self) -> F64 | None:
+        """MuJoCo's contact points now, if asked for and MuJoCo moves the objects."""
+        from ..physics import MujocoPhysics
+
+        physics = self.physics
+        if not self.contacts or not isinstance(physics, MujocoPhysics):
+            return None
+        return physics.contacts()
 
 
 def cubes(physics: ScenePhysics | None) -> tuple[ObjectPose, ...]:
@@ -117,7 +138,7 @@ def cubes(physics: ScenePhysics | None) -> tuple[ObjectPose, ...]:
     names = [c.name for c in physics.scene.cubes]
     if physics.holding is not None:
         names.append(physics.holding.cube.name)
-    return tuple(ObjectPose(n, physics.cube(n).T) for n in names)
+    return tuple(ObjectPose(n, physics.pose(n)) for n in names)
 
 
 class ArmSource:

@@ -38,6 +38,8 @@ from ._unreadable import quiet_unreadable
 
 F64 = NDArray[np.float64]
 OK_COLOUR = (30, 180, 60)
+CONTACT_RADIUS = 0.002  # [m] a contact point as the view draws it
+CONTACT_COLOUR = (255, 140, 0)  # orange
 BAD_COLOUR = (220, 30, 30)
 TRAIL_STEP = 0.001  # [m] the trail grows when the tool moved this far
 
@@ -95,6 +97,7 @@ class View:
         self._trail = ChunkedLine("/trail", TRAIL_COLOUR, 2.0, max(trail, CHUNK + 1))
         self._trail_max = trail
         self._last_q: F64 | None = None
+        self._shown_contacts = 0
         self._state: Snapshot | None = None
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
@@ -147,7 +150,8 @@ class View:
             grip_changed = self._state is None or state.grip != self._state.grip
             self._state = state
             objects = self._moved_objects(state.objects)
-            if not (moved or grip_changed or objects):
+            touching = self._contacts(state.contacts)
+            if not (moved or grip_changed or objects or touching):
                 return False
             self._last_q = state.q.copy()
             with self.server.atomic():
@@ -164,6 +168,21 @@ class View:
                 self._grow_trail(state.q)
             self._updates += 1
             return True
+
+    def _contacts(self, points: F64 | None) -> bool:
+        """Draw a physics engine's contact points (small spheres; those of the last
+        state no longer touching removed); whether anything changed."""
+        if points is None or (len(points) == 0 and self._shown_contacts == 0):
+            return False
+        with self.server.atomic():
+            self.renderer.draw(
+                Sphere(f"/contacts/{k}", p, CONTACT_RADIUS, CONTACT_COLOUR)
+                for k, p in enumerate(points)
+            )
+            for k in range(len(points), self._shown_contacts):
+                self.renderer.remove(f"/contacts/{k}")
+        self._shown_contacts = len(points)
+        return True
 
     def _moved_objects(self, objects: tuple[ObjectPose, ...]) -> list[Primitive]:
         """Cube primitives of the objects whose pose changed since last shown."""
