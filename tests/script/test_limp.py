@@ -37,8 +37,8 @@ def test_limp_moved_by_hand_saved_held_written_and_replayed(tmp_path: Path) -> N
     assert s.handle("save grab").text.startswith("saved: pose grab = joints")
     got = s.resolver.poses["grab"]
     assert isinstance(got, JointPose) and _deg(got.q, q1) < 0.1  # read through the protocol
-    assert s.handle("move grab").text.startswith("error: the arm is limp")
-    assert s.handle("jog").text.startswith("error: the arm is limp")
+    assert s.handle("move grab").text.startswith("<shell>:3:1: error: the arm is limp")
+    assert s.handle("jog").text.startswith("<shell>:4:1: error: the arm is limp")
     assert driver.sent == sent  # nothing was commanded while limp
     hand.push(q2)
     assert s.handle("hold").text.startswith("hold: torque on")
@@ -71,7 +71,7 @@ def test_limp_is_refused_in_one_line_where_servos_cannot(
     before = a.driver.read()
     s = Session(a, base_dir=tmp_path)
     reply = s.handle("limp").text
-    assert reply.startswith(f"error: limp: {name}: its {why}") and "\n" not in reply
+    assert reply.startswith(f"<shell>:1:1: error: limp: {name}: its {why}") and "\n" not in reply
     assert "jog" in reply and not s.limp
     assert driver.sent == 0 and _deg(a.driver.read(), before) == 0.0
     a.close()

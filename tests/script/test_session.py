@@ -157,21 +157,27 @@ def test_jog_on_piped_input_is_refused_and_the_next_line_is_a_command(
 @pytest.mark.parametrize(
     ("line", "said"),
     [
-        ("where extra", "error: where takes no argument, got 'extra'"),
-        ("poses x", "error: poses takes no argument, got 'x'"),
-        ("quit now", "error: quit takes no argument, got 'now'"),
-        ("exit 0 1", "error: exit takes no argument, got '0 1'"),
-        ("limp please", "error: limp takes no argument, got 'please'"),
-        ("hold it", "error: hold takes no argument, got 'it'"),
-        ("help move x", "error: help takes at most one WORD (help [WORD]), got 'move x'"),
-        ("jog 5 6", "error: jog takes at most one STEP_DEG (jog [STEP_DEG]), got '5 6'"),
-        ("save", "error: save takes one NAME (save NAME), got none"),
-        ("save a b", "error: save takes one NAME (save NAME), got 'a b'"),
-        ("write", "error: write takes one FILE (write FILE), got none"),
-        ("write a.arm b", "error: write takes one FILE (write FILE), got 'a.arm b'"),
+        ("where extra", "<shell>:1:1: error: where takes no argument, got 'extra'"),
+        ("poses x", "<shell>:1:1: error: poses takes no argument, got 'x'"),
+        ("quit now", "<shell>:1:1: error: quit takes no argument, got 'now'"),
+        ("exit 0 1", "<shell>:1:1: error: exit takes no argument, got '0 1'"),
+        ("limp please", "<shell>:1:1: error: limp takes no argument, got 'please'"),
+        ("hold it", "<shell>:1:1: error: hold takes no argument, got 'it'"),
+        (
+            "help move x",
+            "<shell>:1:1: error: help takes at most one WORD (help [WORD]), got 'move x'",
+        ),
+        (
+            "jog 5 6",
+            "<shell>:1:1: error: jog takes at most one STEP_DEG (jog [STEP_DEG]), got '5 6'",
+        ),
+        ("save", "<shell>:1:1: error: save takes one NAME (save NAME), got none"),
+        ("save a b", "<shell>:1:1: error: save takes one NAME (save NAME), got 'a b'"),
+        ("write", "<shell>:1:1: error: write takes one FILE (write FILE), got none"),
+        ("write a.arm b", "<shell>:1:1: error: write takes one FILE (write FILE), got 'a.arm b'"),
         (
             "run a.arm b",
-            "error: run takes one FILE (run FILE), got 'a.arm b'; "
+            "<shell>:1:1: error: run takes one FILE (run FILE), got 'a.arm b'; "
             "a timed motor is run JOINT forward|backward|left|right TIME",
         ),
     ],
@@ -203,7 +209,7 @@ def test_a_block_with_no_end_when_the_input_ends_says_nothing_of_it_ran(
     assert Shell(s, stdin=stdin, stdout=out).loop() == 1
     assert driver.sent == 0
     assert out.getvalue().endswith(
-        "... ... ... ... error: the repeat block opened at line 2 has no 'end' before the "
+        "... ... ... ... <shell>:2:1: error: the repeat block opened at line 2 has no 'end' before the "
         "input ended; nothing of it ran\n"
     )
     assert s.end_of_input().text == ""  # said once, the block dropped

@@ -15,11 +15,11 @@ from armkit.script._session import Session
 @pytest.mark.parametrize(
     ("line", "says"),
     [
-        ("run .", "error: cannot run {d}: it is a directory; give a script file (.arm) in it"),
-        ("run none.arm", "error: cannot run {d}/none.arm: no such file; give a script file (.arm)"),
-        ("run bin.arm", "error: cannot run {d}/bin.arm: it is not a text file (UTF-8); give a script file (.arm)"),
-        ("write .", "error: cannot write {d}: it is a directory; give a file name in it, such as {d}/taught.arm"),
-        ("write /proc/x.arm", "error: cannot write /proc/x.arm: the folder /proc does not take new files ("),
+        ("run .", "<shell>:1:1: error: cannot run {d}: it is a directory; give a script file (.arm) in it"),
+        ("run none.arm", "<shell>:1:1: error: cannot run {d}/none.arm: no such file; give a script file (.arm)"),
+        ("run bin.arm", "<shell>:1:1: error: cannot run {d}/bin.arm: it is not a text file (UTF-8); give a script file (.arm)"),
+        ("write .", "<shell>:1:1: error: cannot write {d}: it is a directory; give a file name in it, such as {d}/taught.arm"),
+        ("write /proc/x.arm", "<shell>:1:1: error: cannot write /proc/x.arm: the folder /proc does not take new files ("),
     ],
 )  # fmt: skip
 def test_run_and_write_refuse_in_words(tmp_path: Path, line: str, says: str) -> None:

@@ -70,7 +70,7 @@ def test_other_shell_words_are_refused_inside_a_block_and_it_stays_open(
     word = "run FILE" if line.startswith("run") else line.split()[0]
     assert reply.more and reply.failed and reply.jog is None and not reply.quit
     assert reply.text == (
-        f"error: {word} is a shell word, not a statement a block can hold, and the repeat "
+        f"<shell>:2:1: error: {word} is a shell word, not a statement a block can hold, and the repeat "
         "block opened at line 1 is open: nothing done; finish the block with end, or quit "
         "to drop it"
     )

@@ -86,7 +86,14 @@ class Session:
 
     def handle(self, line: str) -> Reply:
         """One line typed: a shell word, a statement, or part of a block. Every line
-        typed counts in the positions errors name (``<shell>:LINE:COL``)."""
+        typed counts in the positions errors name: an error says ``<shell>:LINE:COL:``
+        (the line typed, or the first line of the chunk that failed as it ran)."""
+        reply = self._handle(line)
+        if reply.failed and reply.text.startswith("error: "):
+            return replace(reply, text=f"<shell>:{self._typed}:1: {reply.text}")
+        return reply
+
+    def _handle(self, line: str) -> Reply:
         if not self._pending:
             self.next_line = self._typed + 1
         self._typed += 1
@@ -94,7 +101,7 @@ class Session:
             col, what = problem
             if self._pending:
                 self._pending.append("")  # the block's lines keep the numbers they were typed on
-            return _error(f"error: <shell>:{self._typed}:{col}: {what}", more=bool(self._pending))
+            return _error(f"<shell>:{self._typed}:{col}: error: {what}", more=bool(self._pending))
         words = line.split()
         if self._pending and ((words[:1] and words[0] in SHELL_WORDS) or _run_file(words)):
             return self._in_block(words)
@@ -153,9 +160,12 @@ class Session:
         """The input ended: a half-typed block is dropped, and the reply says so."""
         if not self._pending:
             return Reply()
-        block = self._open_block()
+        block, line = self._open_block(), self.next_line
         self.cancel()
-        return _error(f"error: {block} has no 'end' before the input ended; nothing of it ran")
+        return _error(
+            f"<shell>:{line}:1: error: {block} has no 'end' before the input ended; "
+            "nothing of it ran"
+        )
 
     def _not_timed(self, words: list[str]) -> bool:
         """Whether ``run A B ...`` is not the language's ``run JOINT DIRECTION TIME``."""
@@ -164,6 +174,7 @@ class Session:
     def execute(self, text: str) -> Reply:
         """Check ``text`` against the arm as it is now, then run it."""
         source = Source("<shell>", text, self.next_line)
+        first = self.next_line
         self.next_line += max(1, len(source.lines))
         self._typed = max(self._typed, self.next_line - 1)
         env = Env(self.resolver.poses, self.walker.procs)
@@ -182,7 +193,8 @@ class Session:
         except (ArmkitError, KeyboardInterrupt) as exc:
             self.arm.stop()
             ran = isinstance(exc, ScriptRunError)
-            return _error(f"error: {compact_numbers(str(exc))}" if ran else "stopped")
+            error = f"<shell>:{first}:1: error: {compact_numbers(str(exc))}"
+            return _error(error if ran else "stopped")
         self.teaching.record(text)
         return Reply()
 
