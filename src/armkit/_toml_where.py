@@ -38,6 +38,7 @@ def fields(text: str) -> dict[str, tuple[int, int]]:
         if header and not _KEY.match(line):
             name = ".".join(_parts(header.group(2)))
             if header.group(1) == "[[":
+                found.setdefault(name, (number, header.start(1) + 1))  # the array: its first
                 counts[name] = counts.get(name, -1) + 1
                 name = f"{name}[{counts[name]}]"
             table = name
