@@ -16,6 +16,7 @@ from armkit.drawing import (
     pen_up_length,
     simplify,
 )
+from armkit.drawing._grid import cell_pairs
 from armkit.drawing._order import greedy_order
 
 
@@ -89,3 +90,15 @@ def test_start_counts_and_closed_strokes_are_entered_where_nearest() -> None:
     (out,) = order_strokes([square], start=np.array([1.2, 1.1]))
     assert np.allclose(out[0], [1, 1]) and np.allclose(out[-1], [1, 1])
     assert pen_up_length([out], np.array([1.2, 1.1])) == pytest.approx(np.hypot(0.2, 0.1))
+
+
+def test_a_pile_of_copies_of_one_line_merges_in_bounded_pairs() -> None:
+    """20,000 copies of one line (found by the fuzzer: every end paired with every other,
+    400 million pairs, MemoryError): each end gets at most ``most`` partners per cell."""
+    line = np.array([[0.0, 0.0], [0.01, 0.0]])
+    ends = np.vstack([line] * 20_000)
+    q, _ = cell_pairs(ends, ends, 1e-4, most=32)
+    assert len(q) <= len(ends) * 9 * 32
+    merged = merge_strokes([line] * 20_000, 1e-4)
+    assert sum(len(s) - 1 for s in merged) == 20_000  # every segment drawn once
+    assert len(merged) < 20_000  # and joined where ends meet

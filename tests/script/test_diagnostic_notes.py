@@ -48,3 +48,13 @@ def test_the_same_failure_at_two_lines_counts_once(
     assert err.count(": error: lynx6 cannot reach") == 1
     assert "note: the same at line 5" in err
     assert "(2 errors in" in err
+
+
+def test_the_same_failure_at_a_hundred_thousand_lines_names_twenty() -> None:
+    """A script of 100,000 stray 'end' lines (found by the fuzzer: its check hung,
+    comparing each place with every other) is one error naming 20 places and the count."""
+    result = check_source(Source("ends.arm", "home\n" + "end\n" * 100_000))
+    (error,) = result.diagnostics
+    assert error.loc == Loc(2, 1)
+    (note,) = error.notes
+    assert note == "the same at lines " + ", ".join(map(str, range(3, 23))) + " and 99979 more"

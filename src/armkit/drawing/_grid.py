@@ -15,10 +15,14 @@ IntArray = NDArray[np.intp]
 EXACT = 1000
 
 
-def cell_pairs(queries: F64, points: F64, cell: float, reach: int = 1) -> tuple[IntArray, IntArray]:
+def cell_pairs(
+    queries: F64, points: F64, cell: float, reach: int = 1, most: int | None = None
+) -> tuple[IntArray, IntArray]:
     """Index pairs (q, p) of every query (Q, 2) and point (P, 2) whose grid
     cells (side ``cell``) are at most ``reach`` cells apart on each axis: all
-    pairs closer than ``cell * reach``, and some farther ones."""
+    pairs closer than ``cell * reach``, and some farther ones. ``most``: at most
+    that many points of one cell for one query (a pile of points in one cell,
+    thousands of copies of one line, would otherwise pair each with each)."""
     if len(queries) == 0 or len(points) == 0:
         empty = np.zeros(0, dtype=np.intp)
         return empty, empty
@@ -35,7 +39,7 @@ def cell_pairs(queries: F64, points: F64, cell: float, reach: int = 1) -> tuple[
             k = (cq[:, 0] + dx) * width + (cq[:, 1] + dy)
             lo = np.searchsorted(sorted_keys, k, side="left")
             hi = np.searchsorted(sorted_keys, k, side="right")
-            n = hi - lo
+            n = hi - lo if most is None else np.minimum(hi - lo, most)
             q = np.repeat(np.arange(len(queries)), n)
             start = np.repeat(lo - np.concatenate([[0], np.cumsum(n)[:-1]]), n)
             qs.append(q)
@@ -56,7 +60,7 @@ def nearest_k(points: F64, k: int, cell: float | None = None) -> IntArray:
     if cell is None:
         w, h = np.ptp(points, axis=0) if n else (1.0, 1.0)
         cell = max(float(np.sqrt(2.0 * w * h / max(n, 1))), 2.0 * max(w, h) / max(n, 1), 1e-9)
-    q, p = cell_pairs(points, points, cell, reach=2)
+    q, p = cell_pairs(points, points, cell, reach=2, most=k + 1)
     keep = q != p
     q, p = q[keep], p[keep]
     d = np.sum((points[q] - points[p]) ** 2, axis=1)

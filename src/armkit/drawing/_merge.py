@@ -15,6 +15,8 @@ from numpy.typing import NDArray
 from ._grid import cell_pairs
 
 F64 = NDArray[np.float64]
+PARTNERS = 32  # ends an end may be joined to, at most (of a pile of coincident ends)
+BLOCK = 1 << 16  # ends paired at once (bounds the memory of the pairs)
 
 
 def merge_strokes(strokes: Sequence[F64], tolerance: float) -> list[F64]:
@@ -24,11 +26,15 @@ def merge_strokes(strokes: Sequence[F64], tolerance: float) -> list[F64]:
     if n < 2:
         return list(strokes)
     ends = np.vstack([np.vstack([s[0], s[-1]]) for s in strokes])  # 2i: start, 2i+1: end
-    q, p = cell_pairs(ends, ends, max(tolerance, 1e-12))
-    near = (p // 2 != q // 2) & (np.sum((ends[q] - ends[p]) ** 2, axis=1) <= tolerance**2)
     neighbours: list[list[int]] = [[] for _ in range(2 * n)]
-    for a, b in zip(q[near].tolist(), p[near].tolist(), strict=True):
-        neighbours[a].append(b)
+    for first in range(0, 2 * n, BLOCK):
+        block = ends[first : first + BLOCK]
+        q, p = cell_pairs(block, ends, max(tolerance, 1e-12), most=PARTNERS)
+        q += first
+        near = (p // 2 != q // 2) & (np.sum((ends[q] - ends[p]) ** 2, axis=1) <= tolerance**2)
+        for a, b in zip(q[near].tolist(), p[near].tolist(), strict=True):
+            if len(neighbours[a]) < PARTNERS:
+                neighbours[a].append(b)
     used = [False] * n
     out = []
     for i in range(n):

@@ -18,6 +18,7 @@ from ._ast import Loc, Source
 
 Severity = Literal["error", "warning"]
 # a number of 10 or more digits before its point, standing alone (not in a path or a name)
+SAME_PLACES = 20  # places of one failure named in its note, at most (then "and N more")
 _LONG_NUMBER = re.compile(r"(?<![\w./\\-])-?\d{10,}(?:\.\d+)?(?![\w/\\]|\.\d)")
 
 
@@ -113,16 +114,17 @@ def sorted_unique(diagnostics: Iterable[Diagnostic]) -> list[Diagnostic]:
     """In line and column order, each failure once: the same message at several places
     (a procedure's line failing for each call) is reported at the first, with a note
     naming the others."""
-    places: dict[tuple[str, str], list[Diagnostic]] = {}
+    places: dict[tuple[str, str], dict[Loc, Diagnostic]] = {}
     for d in sorted(diagnostics, key=lambda d: (d.loc.line, d.loc.col)):
-        same = places.setdefault((d.severity, d.message), [])
-        if all(d.loc != o.loc for o in same):
-            same.append(d)
+        places.setdefault((d.severity, d.message), {}).setdefault(d.loc, d)
     out = []
-    for first, *others in places.values():
+    for same in places.values():
+        first, *others = same.values()
         if others:
-            lines = [_place(o.loc, first.loc) for o in others]
-            also = f"the same at {'line' if len(lines) == 1 else 'lines'} {', '.join(lines)}"
+            lines = [_place(o.loc, first.loc) for o in others[:SAME_PLACES]]
+            more = len(others) - len(lines)
+            also = f"the same at {'line' if len(others) == 1 else 'lines'} {', '.join(lines)}"
+            also += f" and {more} more" if more else ""
             first = replace(first, notes=(*first.notes, also))
         out.append(first)
     return sorted(out, key=lambda d: (d.loc.line, d.loc.col))
