@@ -52,10 +52,12 @@ from ..model import (
 from ._driver import Forecast, pieces
 from ._dxl_forecast import MAX_PROFILE_MS
 from ._dxl_forecast import DynamixelForecaster as DynamixelForecaster
-from ._dxl_hold import describe, hold, hold_here
 from ._dxl_points import dynamixel_points as dynamixel_points
 from ._dxl_wait import stopped, wait_arrival
+from ._hold import hold, hold_here, report
 from ._sent import SentProfile
+
+HOLD_PROFILE_MS = (50, 100)  # (ramp, total) of a stop: settle on the held tick in 0.1 s
 
 
 def open_dynamixel(model: ArmModel, port: str | None) -> DynamixelDriver:
@@ -189,14 +191,7 @@ class DynamixelDriver:
                 last = k == len(parts) - 1
                 origin = self._profile_move(origin, target, piece_s, ramp, wait or not last)
         except DeviceError as exc:
-            raise DeviceError(f"{exc}; the move was abandoned: {self._hold_report()}") from exc
-
-    def _hold_report(self) -> str:
-        """Hold the joints after a failed move; which servos hold, in words."""
-        try:
-            return describe(*self._hold())
-        except DeviceError as exc:
-            return f"the hold could not be sent ({exc})"
+            raise DeviceError(f"{exc}; the move was abandoned: {report(self._hold)}") from exc
 
     def _profile_move(
         self,
@@ -275,13 +270,18 @@ class DynamixelDriver:
         stopped(self.bus, self.clock, [self.gripper_id], 3.0)
 
     def _hold(self) -> tuple[list[int], list[int]]:
-        """Hold every joint where its last profile has it now (``_dxl_hold``): (IDs that
-        confirmed, IDs that did not)."""
+        """Hold every joint where its last profile has it now (``_hold``), settling on
+        the held tick in 0.1 s (``HOLD_PROFILE_MS``): (IDs that confirmed, IDs that did not)."""
         sent, self._sent, now = self._sent, None, self.clock.now()
         if sent is None:  # no move sent: every servo rests on the goal it had
             return [], []
         goals = dict(zip(self.ids, self.to_ticks(sent.where(now)).tolist(), strict=True))
-        return hold(self.bus, goals, send=not sent.done(now))
+        send = not sent.done(now)
+        if send:
+            self.bus.set_profiles({sid: HOLD_PROFILE_MS for sid in goals})
+        return hold(
+            self.bus, goals, send, lambda sid: self.bus.read(sid, "Goal Position", alert_ok=True)
+        )
 
     def stop(self) -> None:
         """Hold every joint where it is now. Safe to repeat, a no-op once closed."""

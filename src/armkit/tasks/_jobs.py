@@ -145,8 +145,25 @@ def pick(
     dry_run: bool = False,
 ) -> Plan:
     """Pick ``cube`` up (001: from the top where reachable, else from the side with
-    the grasp point shifted up; ``pitch`` [deg] forces one) and stay above it;
-    ``clearance`` [mm] and ``calibration`` as ``plan_task``."""
+    the grasp point shifted up; ``pitch`` [deg] forces one) and stay above it.
+
+    Args:
+        arm: the arm, or a ``Start`` (a model, its joints, what it holds) to plan from
+            with nothing moving.
+        clearance: height of the first waypoint above each grasp and release [mm],
+            30..500 (001: at least 30), then three waypoints down (an open-loop arm:
+            its model file's ``task_waypoints``, the OWI one move).
+        calibration: the unit's offsets (``Calibration``, in mm), a calibration file,
+            or None: the arm's default file if there is one (``default_calibration_file``).
+        dry_run: plan and check only; nothing moves.
+
+    Returns the plan (carried out unless ``dry_run`` or planned from a ``Start``).
+
+    Raises:
+        TaskError: a step is unreachable or would collide (naming the step, link,
+            object); nothing has moved.
+        ValueError: a bad argument.
+    """
     p = _deg(pitch)
     _check_clearance(clearance)
     scene = live_scene(arm, scene, dry_run, f"pick {cube}")
@@ -171,7 +188,7 @@ def place(
     """Put ``cube`` (in the gripper, picked by ``pick`` from where ``scene`` has it)
     down at ``to``: a place, ``board[row, col]``, a cube to stack on, a container,
     or (x, y, z) [mm]; then go back up. ``pitch`` [deg] forces the tool's pitch;
-    ``clearance`` [mm] and ``calibration`` as ``plan_task``."""
+    ``clearance`` [mm], ``calibration`` and ``dry_run`` as ``pick``."""
     scene = live_scene(arm, scene, dry_run, f"place {cube}", held=cube)
     target = _free(scene, resolve(scene, to), cube, f"place {cube}")
     p = _deg(pitch) if pitch is not None else target.pitch
@@ -200,7 +217,7 @@ def move_item(
     ``item`` is a cube of the scene, or the grip point (x, y, z) [mm] of an item the
     scene does not know (then ``to`` must be a point or a place too, and the grasp
     and the item's own clearance cannot be checked). ``pitch`` [deg] forces the tool's
-    pitch; ``clearance`` [mm] and ``calibration`` as ``plan_task``.
+    pitch; ``clearance`` [mm], ``calibration`` and ``dry_run`` as ``pick``.
     """
     if not (is_number(lift) and 0.0 <= lift <= 500.0):
         raise InputError(f"lift must be 0..500 mm, got {shown(lift)}")
@@ -239,7 +256,7 @@ def rotate_cube(
     dry_run: bool = False,
 ) -> Plan:
     """001: turn ``cube`` a quarter turn (90 deg) in place, coming down from ``clearance``
-    [mm] above it (as ``plan_task``): ``"forward"`` picks it from the
+    [mm] above it (as ``pick``): ``"forward"`` picks it from the
     side (pitch 0) and puts it down from the top (pitch -90), its top face then
     facing away from the arm; ``"backward"`` the other way round."""
     scene = live_scene(arm, scene, dry_run, f"rotate {cube}")
@@ -278,7 +295,7 @@ def stack(
 ) -> Plan:
     """001: turn every cube 90 deg in place (``rotate_first``: ``"forward"``,
     ``"backward"`` or None), then stack them on the first one, each one cube
-    higher than the last, coming down from ``clearance`` [mm] above each (as ``plan_task``)."""
+    higher than the last, coming down from ``clearance`` [mm] above each (as ``pick``)."""
     names = stack_names(cubes)
     _check_clearance(clearance)
     scene = live_scene(arm, scene, dry_run, "stack")

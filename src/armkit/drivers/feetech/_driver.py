@@ -25,11 +25,11 @@ from numpy.typing import NDArray
 
 from ..._clock import Clock, WallClock
 from ..._errors import DeviceError
-from ...devices import PortGoneError
 from ...devices import sts3215 as sts
 from ...devices.feetech import FeetechBus
 from ...model import FEETECH_SECTION, ArmModel, FeetechSection
 from .._driver import Forecast
+from .._hold import hold, hold_here, report
 from .._sent import SentProfile
 from ._forecast import POLL_S, FeetechForecaster, Goals
 from ._lerobot import unit_config
@@ -91,13 +91,7 @@ class FeetechDriver:
         self.bus.check_models(self.servos)
         for sid in self.servos:
             self.bus.set_eeprom(sid, "Operating Mode", sts.MODE_POSITION)
-        self._hold_here(self.servos)
-
-    def _hold_here(self, ids: list[int]) -> None:
-        """Torque on where each servo is: Goal Position = Present Position first."""
-        present = self.bus.sync_read("Present Position", ids)
-        self.bus.sync_write("Goal Position", present)
-        self.bus.set_torque(ids, True)
+        hold_here(self.bus, self.servos)
 
     def forecaster(self) -> FeetechForecaster:
         """This arm's forecasts as a value."""
@@ -149,7 +143,7 @@ class FeetechDriver:
                 self.clock.sleep(goals.seconds)
                 self._wait_arrival(goals, goals.seconds * 0.5 + 1.0)
         except DeviceError as exc:
-            raise DeviceError(f"{exc}; the move was abandoned: {self._hold_report()}") from exc
+            raise DeviceError(f"{exc}; the move was abandoned: {report(self._hold)}") from exc
 
     def _send(self, start: F64, goal: F64, goals: Goals) -> None:
         block: dict[int, bytes] = {}
@@ -199,32 +193,15 @@ class FeetechDriver:
         self._stopped([self.gripper_id], 3.0)
 
     def _hold(self) -> tuple[list[int], list[int]]:
-        """Hold every joint where the last move has it now: (confirmed, silent) IDs."""
+        """Hold every joint where the last move has it now (``_hold``): (confirmed,
+        silent) IDs."""
         sent, self._sent, now = self._sent, None, self.clock.now()
         if sent is None:
             return [], []
         goals = dict(zip(self.ids, self._forecaster.ticks(sent.where(now)).tolist(), strict=True))
-        if not sent.done(now):
-            self.bus.sync_write("Goal Position", goals)
-        held: list[int] = []
-        silent: list[int] = []
-        for sid, goal in goals.items():
-            try:
-                ok = self.bus.read(sid, "Goal Position") == goal
-            except PortGoneError:
-                raise
-            except DeviceError:
-                ok = False
-            (held if ok else silent).append(sid)
-        return held, silent
-
-    def _hold_report(self) -> str:
-        try:
-            held, silent = self._hold()
-        except DeviceError as exc:
-            return f"the hold could not be sent ({exc})"
-        words = f"servos {held} hold where they were" if held else "no servo confirmed a hold"
-        return words + (f"; servos {silent} did not confirm that they hold" if silent else "")
+        return hold(
+            self.bus, goals, not sent.done(now), lambda sid: self.bus.read(sid, "Goal Position")
+        )
 
     def stop(self) -> None:
         """Hold every joint where it is now. Safe to repeat, a no-op once closed."""
@@ -246,7 +223,7 @@ class FeetechDriver:
         """Torque on where every servo is now: the arm holds that pose."""
         self._alive()
         self._sent = None
-        self._hold_here(self.servos)
+        hold_here(self.bus, self.servos)
 
     def _alive(self) -> None:
         if not self.bus.is_open:
