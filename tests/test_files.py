@@ -64,7 +64,7 @@ def test_an_unwritable_folder_is_refused_even_as_root(
     def denied(*args: object, **kwargs: object) -> tuple[int, str]:
         raise PermissionError(errno.EACCES, "Permission denied")
 
-    monkeypatch.setattr("armkit._files.tempfile.mkstemp", denied)
+    monkeypatch.setattr("tempfile.mkstemp", denied)  # armkit._files imports it where used
     message = _refusal(tmp_path / "x.gif", "--gif", (".gif",))
     assert message == (
         f"--gif: cannot write {tmp_path / 'x.gif'}: the folder {tmp_path} does not take new "

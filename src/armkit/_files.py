@@ -11,7 +11,6 @@ from __future__ import annotations
 import errno
 import os
 import stat
-import tempfile
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
@@ -52,6 +51,8 @@ def write_atomic(path: Path, text: str, durable: bool = True) -> None:
 
 def _temporary(path: Path) -> tuple[int, str]:
     """A new temporary file beside ``path`` (the atomic writer's): (open fd, its name)."""
+    import tempfile  # here: it loads shutil, random, bz2, lzma (10 ms of every command)
+
     return tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
 
 
@@ -129,6 +130,8 @@ def folder_problem(folder: Path) -> str | None:
         return f"{probe} cannot be looked at ({_why(exc)})"
     if not probe.is_dir():
         return f"{probe} is not a folder"
+    import tempfile  # here, as in ``_temporary``
+
     try:
         fd, tmp = tempfile.mkstemp(dir=probe, prefix=".armkit-probe.", suffix=".tmp")
     except OSError as exc:

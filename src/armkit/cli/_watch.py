@@ -135,13 +135,17 @@ def watching(args: argparse.Namespace, arm: Any, scene: Any = None) -> Iterator[
     if world is None:
         yield None
         return
-    from ..viz import GifRecorder, cubes, publisher_of
+    from ..viz import cubes, publisher_of
 
     physics = _physics(arm, scene)
     publisher = publisher_of(world)
     if publisher is not None:
         publisher.objects = lambda: cubes(physics)
-    recorder = GifRecorder(world.arm(), args.fps, physics) if getattr(args, "gif", None) else None
+    recorder = None
+    if getattr(args, "gif", None):
+        from ..viz import GifRecorder  # the pictures' code only for a GIF
+
+        recorder = GifRecorder(world.arm(), args.fps, physics)
     detach = world.attach(recorder) if recorder is not None else None
     with contextlib.ExitStack() as stack:
         if getattr(args, "view", False):

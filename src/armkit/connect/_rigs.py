@@ -13,17 +13,14 @@ from dataclasses import dataclass
 from .._errors import ArmkitError
 from ..drivers import Forecaster
 from ..drivers.dynamixel import DynamixelForecaster, dynamixel_points
-from ..drivers.feetech import feetech_points
-from ..drivers.servo import load_setup
 from ..model import FEETECH_SECTION, ArmModel, DynamixelSection, dynamixel_section
 from ..sim import SimArm, Truth, World
 from ..sim.assembly import GRIPPER, ByteDevice, Mount, add_servo_arm
 from ..sim.dynamixel import SimDynamixelBus
-from ..sim.feetech import SimFeetechBus
-from ..sim.maestro import SimMaestro
-from ..sim.ssc32 import SimSSC32
 
 GENERIC_BAUD = 1_000_000
+# A kind's driver and simulated device are imported by its rig function: a rig of one
+# kind loads no other's (milliseconds of every command).
 
 
 @dataclass
@@ -56,6 +53,10 @@ def generic_config(model: ArmModel) -> DynamixelSection:
 def servo_rig(model: ArmModel, world: World, kind: str, truth: Truth | None) -> Rig:
     """An SSC-32 (``kind="ssc32"``) or a Maestro driving ``model``'s servos through the
     model's pulse tables (and the unit's calibration file, if there is one)."""
+    from ..drivers.servo import load_setup
+    from ..sim.maestro import SimMaestro
+    from ..sim.ssc32 import SimSSC32
+
     setup = load_setup(model, kind)
     device = SimSSC32(setup.baudrate) if kind == "ssc32" else SimMaestro()
     tables = list(enumerate(setup.joints))
@@ -90,6 +91,8 @@ def dynamixel_rig(
 
 def ssc32_rig(model: ArmModel | None, world: World) -> Rig:
     """An SSC-32 driving ``model``'s servos, or alone at 9600 baud (``model`` None)."""
+    from ..sim.ssc32 import SimSSC32
+
     if model is None:
         return Rig(SimSSC32(9600), None, 9600)
     return servo_rig(model, world, "ssc32", None)
@@ -97,6 +100,8 @@ def ssc32_rig(model: ArmModel | None, world: World) -> Rig:
 
 def maestro_rig(model: ArmModel | None, world: World) -> Rig:
     """A Maestro driving ``model``'s servos, or alone (``model`` None)."""
+    from ..sim.maestro import SimMaestro
+
     if model is None:
         return Rig(SimMaestro(), None, 9600)
     return servo_rig(model, world, "maestro", None)
@@ -129,6 +134,9 @@ def feetech_rig(model: ArmModel | None, world: World, truth: Truth | None = None
     Raises:
         ModelError: the model has no ``[drivers.feetech]`` table.
     """
+    from ..drivers.feetech import feetech_points
+    from ..sim.feetech import SimFeetechBus
+
     if model is None:
         return Rig(SimFeetechBus(clock=world.device_time), None, GENERIC_BAUD)
     cfg = FEETECH_SECTION.of(model)

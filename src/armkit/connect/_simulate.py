@@ -10,30 +10,28 @@ narrow interface armkit uses of the library (``ctrl_transfer``; ``read``/
 
 from __future__ import annotations
 
-import importlib.util
-import shutil
-import tempfile
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .._clock import Clock
 from .._errors import DeviceError
 from ..devices import PortHandler
 from ..devices.dynamixel import DynamixelBus
-from ..devices.owi535 import OwiDevice, attach, open_device
 from ..drivers import Driver
 from ..drivers.dynamixel import DynamixelDriver
-from ..drivers.feetech import FeetechDriver
-from ..drivers.servo import open_maestro, open_ssc32
-from ..drivers.timed import TimedDriver, state_path
 from ..model import ArmModel, DynamixelSection, dynamixel_section
 from ..sim import SimArm, World, state_key
-from ..sim.assembly import Persistence, Wire, add_owi_arm, serial_port
-from ..sim.owi535 import SimOwiUsb
-from ..sim.owi_sim import OwiSim
+from ..sim.assembly import Persistence, Wire, serial_port
 from ._kind import Emulated, Simulator
 from ._rigs import dxl_rig, dynamixel_rig, feetech_rig, generic_config, servo_rig
+
+if TYPE_CHECKING:
+    from ..devices.owi535 import OwiDevice
+    from ..sim.owi535 import SimOwiUsb
+
+# Each kind's driver, device and simulated device are imported by its own simulate
+# function below: opening one kind loads no other's (milliseconds of every command).
 
 
 def simulate(model: ArmModel, build: Simulator, world: World | None, state: Path | None) -> Driver:
@@ -106,6 +104,14 @@ def simulate_generic(
 def simulate_owi535(
     model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
 ) -> Driver:
+    import shutil
+    import tempfile
+
+    from ..drivers.timed import TimedDriver, state_path
+    from ..sim.assembly import add_owi_arm
+    from ..sim.owi535 import SimOwiUsb
+    from ..sim.owi_sim import OwiSim
+
     arm, physics = add_owi_arm(world, model, truth=keep.truth if keep else None)
     opened.append(arm)
     board = SimOwiUsb(physics)
@@ -125,6 +131,10 @@ def simulate_owi535(
 
 def _usb_device(board: SimOwiUsb) -> OwiDevice:
     """The board as pyusb sees it where pyusb is installed, else directly."""
+    import importlib.util
+
+    from ..devices.owi535 import attach, open_device
+
     if importlib.util.find_spec("usb") is None:
         return attach(board, board.close)
     from ..sim.owi_usb import OwiUsbBackend
@@ -159,6 +169,8 @@ def simulate_ssc32(
     model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
 ) -> Driver:
     """The servo driver on a simulated SSC-32 driving ``model``'s servos."""
+    from ..drivers.servo import open_ssc32
+
     return _servo(model, world, keep, opened, "ssc32", open_ssc32)
 
 
@@ -166,6 +178,8 @@ def simulate_maestro(
     model: ArmModel, world: World, keep: Persistence | None, opened: list[SimArm]
 ) -> Driver:
     """The servo driver on a simulated Maestro driving ``model``'s servos."""
+    from ..drivers.servo import open_maestro
+
     return _servo(model, world, keep, opened, "maestro", open_maestro)
 
 
@@ -182,6 +196,7 @@ def simulate_feetech(
     """The Feetech driver on simulated STS3215s set up by ``[drivers.feetech]``, through
     Feetech's ``scservo_sdk`` on armkit's SDK-style port handler."""
     from ..devices.feetech import FeetechBus
+    from ..drivers.feetech import FeetechDriver
 
     rig = feetech_rig(model, world, keep.truth if keep else None)
     assert rig.arm is not None

@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import bisect
+import functools
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -59,6 +60,11 @@ class Mount:
         return (self.units[1] - self.units[0]) / (self.values[1] - self.values[0])
 
     def _rising(self) -> tuple[Sequence[float], Sequence[float]]:
+        return self._table
+
+    @functools.cached_property
+    def _table(self) -> tuple[Sequence[float], Sequence[float]]:
+        """(units, values) with the units rising (computed once: every step asks)."""
         xs, ys = self.units, self.values
         return (xs[::-1], ys[::-1]) if xs[0] > xs[-1] else (xs, ys)
 

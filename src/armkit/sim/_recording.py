@@ -110,9 +110,14 @@ class Recorder:
         if self._count <= rows < need:
             self._grow(min(self.capacity, max(2 * rows, need)))
             rows = self._t.shape[0]
-        at = (self._count + np.arange(count)) % rows
-        self._t[at] = t
-        self._q[at] = q
+        first = self._count % rows
+        if first + count <= rows:  # no wrap: one slice
+            self._t[first : first + count] = t
+            self._q[first : first + count] = q
+        else:
+            at = (self._count + np.arange(count)) % rows
+            self._t[at] = t
+            self._q[at] = q
         self._count += count
 
     def _grow(self, rows: int) -> None:

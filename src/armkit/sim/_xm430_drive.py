@@ -11,7 +11,6 @@ arithmetic, so the same numbers to the bit).
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
@@ -21,14 +20,15 @@ from ._xm430_profile import Motion
 F64 = NDArray[np.float64]
 
 
-@dataclass(frozen=True, slots=True)
 class Drive:
     """A servo's ``motion`` [tick, shaft], stopped at ``until`` [s] (an armed Bus
-    Watchdog's expiry; None: never), with ``torque`` on or off."""
+    Watchdog's expiry; None: never), with ``torque`` on or off. Not changed once made
+    (a plain class: made for every servo before every run of steps)."""
 
-    motion: Motion
-    until: float | None
-    torque: bool
+    __slots__ = ("motion", "torque", "until")
+
+    def __init__(self, motion: Motion, until: float | None, torque: bool) -> None:
+        self.motion, self.until, self.torque = motion, until, torque
 
     def setpoint(self, now: float) -> float | None:
         """Where the motor is driven at ``now`` [s] [tick]; None: torque off."""

@@ -40,6 +40,7 @@ from .xm430 import XM430
 FAULTS = ("drop", "corrupt", "late", "vanish", "overload")
 _ID = xm.register("ID").address  # one-byte registers read on every packet, by address
 _PROTOCOL_TYPE = xm.register("Protocol Type").address
+_SECONDARY_ID = xm.register("Secondary ID").address
 OPENMANIPULATOR_X_IDS = (11, 12, 13, 14, 15)
 Reply = tuple[int, bytes, Callable[[], None] | None]  # error, data, what to do after replying
 Handler = Callable[[XM430, pkt.Packet, bool], Reply]  # (servo, packet, by its secondary ID)
@@ -191,9 +192,9 @@ class SimDynamixelBus(GroupInstructions):
         (e-Manual XM430-W350, "Secondary(Shadow) ID (12)": its ID first; 253 ~ 255 off)."""
         found = []
         for servo in self.present():
-            if target in (pkt.BROADCAST_ID, servo.value("ID")):
+            if target in (pkt.BROADCAST_ID, servo.memory[_ID]):
                 found.append((servo, True))
-            elif servo.value("Secondary ID") == target < notes.SECONDARY_ID_OFF:
+            elif servo.memory[_SECONDARY_ID] == target < notes.SECONDARY_ID_OFF:
                 found.append((servo, False))
         return found
 
@@ -201,7 +202,7 @@ class SimDynamixelBus(GroupInstructions):
         """The servos that hear the host now (not vanished, at the host's baud rate, speaking
         Protocol 2.0: Protocol Type (13) 1 is not emulated), by ID."""
         servos = [s for sid, s in self.servos.items() if self._hears(sid, s)]
-        return sorted(servos, key=lambda s: s.value("ID"))
+        return sorted(servos, key=lambda s: s.memory[_ID])
 
     def _hears(self, sid: int, servo: XM430) -> bool:
         """Whether the servo kept under ``sid`` is present (see ``present``)."""

@@ -84,15 +84,34 @@ class LivePublisher:
             self._pace(t)
         self.publish()
 
+    def on_steps(self, world: World, times: F64) -> None:
+        """A stretch of steps at ``times`` [s] (no jaws moved in it): published as
+        ``on_step`` would at each, with the angles each step recorded."""
+        rows: F64 | None = None
+        for k, t in enumerate(times.tolist()):
+            if t < self._next_t:
+                continue
+            self._next_t = t + 1.0 / PUBLISH_HZ
+            if not self._watched():
+                self._anchor = None
+                continue
+            if rows is None:
+                rows = self.arm.recent(len(times))
+            if not world.realtime:
+                self._pace(t)
+            self.publish(rows[k])
+
     def may_skip(self) -> bool:
         """The world may skip steps while nothing moves, unless somebody follows it (then
         its time keeps pace with the wall clock, still or not)."""
         return not self._watched()
 
-    def publish(self) -> None:
-        """Write the live file now; its time is the wall clock's (``time.monotonic``, the
-        same in every process), so a follower knows how old what it shows is."""
-        state = Snapshot(time.monotonic(), self.arm.q(), self.arm.grip(), self.objects())
+    def publish(self, q: F64 | None = None) -> None:
+        """Write the live file now (the arm at ``q`` [rad], shape (dof,); None: as it is);
+        its time is the wall clock's (``time.monotonic``, the same in every process), so a
+        follower knows how old what it shows is."""
+        q = self.arm.q() if q is None else q
+        state = Snapshot(time.monotonic(), q, self.arm.grip(), self.objects())
         write_atomic(self.live, encode(state), durable=False)
 
     def _watched(self) -> bool:

@@ -82,6 +82,8 @@ class Truth(Protocol):
 
     def grip(self) -> float: ...
 
+    def recent(self, count: int) -> F64: ...
+
 
 class WorldSource:
     """Follow arm ``arm`` (None: the only one) of a simulation ``world``, at world time:
