@@ -137,7 +137,8 @@ def test_an_interrupted_job_leaves_its_tool_kept_with_the_joints(name: str, file
     """Interrupted half-way (the pen on the paper, the mallet over the bars), the tool is
     kept in the state file with the joints: the next arm on that file plans with its tip
     (the tool point is not under the table), goes home, and a drawing resumed with the pen
-    in the gripper does not pick it up again but puts it back."""
+    in the gripper does not pick it up again but puts it back, lifting the pen straight
+    off the paper first (no ink dragged from where it was cut short)."""
     arm_name, scene_name, job = JOBS[name]
     scene, state = load_scene(scene_name), files / "kept.json"
     whole, _ = _run(name, files, None)
@@ -153,14 +154,16 @@ def test_an_interrupted_job_leaves_its_tool_kept_with_the_joints(name: str, file
     with Arm(arm_name, "sim", str(state), scene=scene) as arm:
         assert arm.tool == tool and arm.start().tool == tool
         assert arm.position()[2] > -1.0  # [mm]: the tip kept, not the jaws' point under it
-        arm.home()
-        assert arm.tool == tool  # home lets nothing go
-        if name == "draw":
+        if name == "draw":  # resumed where it was cut short, the pen on the paper
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
                 done = drawing.draw(arm, scene, files / "square.svg")
             grips = [s for s in done.segments if type(s).__name__ == "GripMove"]
             assert len(grips) == 1 and arm.tool is None  # only put back
+            assert done.segments[0].label.endswith("pen up")  # straight off the paper first
+            assert done.metrics is not None and done.metrics.hausdorff < 0.5e-3, done.metrics
+        arm.home()
+        assert arm.tool == (None if name == "draw" else tool)  # home lets nothing go
     if name == "draw":
         with Arm(arm_name, "sim", str(state), scene=scene) as arm:
             assert arm.tool is None

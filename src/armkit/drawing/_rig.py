@@ -74,6 +74,11 @@ def transit(rig: Rig, q: F64, target: F64, label: str) -> list[Segment]:
     """From joints ``q`` to the tip at ``target`` (scene frame) [m]: a joint move if
     its sweep keeps the tip at least half the pen-up height above the paper and the
     links clear, else a straight line of the tip."""
+    here = float(rig.height(q[None, :])[0])
+    if here < rig.pen_up / 2 - 1e-6:  # the pen on the paper (a drawing cut short): up first
+        lift = _lift(rig, q, rig.tip_at(q) + rig.sheet.normal * (rig.pen_up - here), label)
+        if lift is not None:
+            return [lift, *transit(rig, lift.path.q[-1], target, label)]
     goal = _solve(rig, target, q, label)
     sweep = joint_sweep(q, goal[None, :])
     low = min(float(rig.height(sweep).min()), float(rig.height(q[None, :])[0]))
@@ -95,6 +100,21 @@ def transit(rig: Rig, q: F64, target: F64, label: str) -> list[Segment]:
     if float(np.max(np.abs(path.q[0] - q))) > TURN:
         raise DrawingError(f"{label}: in joint space {why}; a line would start turning the pen")
     return [PathMove(label, path, False)]
+
+
+def _lift(rig: Rig, q: F64, target: F64, label: str) -> PathMove | None:
+    """The tip straight up from where joints ``q`` put it to ``target`` [m] at the
+    drawing's pitch, or None: the pen is not held at that pitch there, or cannot."""
+    start = rig.tip_at(q)
+    n = max(1, math.ceil(float(np.linalg.norm(target - start)) / STEP))
+    points = start + (target - start) * (np.arange(0, n + 1) / n)[:, None]
+    try:
+        path = _path(rig, points, q, label)
+    except DrawingError:
+        return None
+    if float(np.max(np.abs(path.q[0] - q))) > TURN:
+        return None
+    return PathMove(f"{label}: pen up", path, False)
 
 
 def _stroke(rig: Rig, run: Run, q: F64, label: str) -> PathMove:
