@@ -12,7 +12,7 @@ from ..scene import HeldTool, Scene
 from ._errors import DrawingError
 from ._fit import Fit
 from ._job import DrawJob, DrawOptions, plan_draw
-from ._metrics import measure
+from ._metrics import PenTrace, measure
 from ._picture import check_picture_path
 from ._picture import preview as draw_preview
 from ._picture import result as draw_result
@@ -21,6 +21,7 @@ from ._tracer import PenTracer
 
 if TYPE_CHECKING:
     from ..arm import Arm, Step
+    from ..physics import MujocoPenTracer
 
 DrawProgress = Callable[["DrawJob", int], None]  # (the job, strokes drawn so far)
 
@@ -84,7 +85,7 @@ def run_job(arm: Arm, job: DrawJob, progress: DrawProgress | None = None) -> Dra
     and metrics (``DrawingMetrics``); ``progress(job, n)`` after each move (n: the
     strokes drawn so far)."""
     world, sim = arm.world, arm.sim
-    tracer = PenTracer(job.tip, job.sheet, job.T_world_base, sim.name if sim else None)
+    tracer = _tracer(arm, job, sim.name if sim else None)
     tracer.holding = job.options.held or job.motion.start.tool is not None
     if tracer.holding:
         arm.hold_tool(pen_held(job))
@@ -96,10 +97,27 @@ def run_job(arm: Arm, job: DrawJob, progress: DrawProgress | None = None) -> Dra
     finally:
         if detach is not None:
             detach()
-    trace = tracer.trace()
+    trace = _trace(tracer)
     if trace is None or not trace.down.any():
         return job
     return replace(job, trace=trace, metrics=measure(job.plan, trace, job.sheet))
+
+
+def _tracer(arm: Arm, job: DrawJob, name: str | None) -> PenTracer | MujocoPenTracer:
+    """The pen's tracer: the tip's height over the paper, or MuJoCo's contacts."""
+    if job.physics != "mujoco":
+        return PenTracer(job.tip, job.sheet, job.T_world_base, name)
+    from ..physics import MujocoPenTracer
+
+    table = Scene("table", float(job.sheet.origin[2]), job.T_world_base)
+    return MujocoPenTracer(arm.model, job.tip, job.sheet, table, job.pen.tip_offset, name)
+
+
+def _trace(tracer: PenTracer | MujocoPenTracer) -> PenTrace | None:
+    if isinstance(tracer, PenTracer):
+        return tracer.trace()
+    found = tracer.recorded()
+    return None if found is None else PenTrace(*found)
 
 
 def pen_held(job: DrawJob) -> HeldTool:
@@ -113,7 +131,11 @@ class _Progress:
     ``progress``."""
 
     def __init__(
-        self, job: DrawJob, tracer: PenTracer, arm: Arm, progress: DrawProgress | None
+        self,
+        job: DrawJob,
+        tracer: PenTracer | MujocoPenTracer,
+        arm: Arm,
+        progress: DrawProgress | None,
     ) -> None:
         self.job, self.tracer, self.arm, self.progress = job, tracer, arm, progress
         self.strokes = 0

@@ -92,6 +92,7 @@ class DrawJob:
         T_world_base: the arm's base in the scene (4, 4).
         options: how it was planned.
         trace, metrics: what the simulated pen drew (None until run on a simulator).
+        physics: the scene's physics: ``"mujoco"`` has MuJoCo judge the ink.
     """
 
     plan: DrawingPlan
@@ -104,6 +105,7 @@ class DrawJob:
     options: DrawOptions
     trace: PenTrace | None = None
     metrics: DrawingMetrics | None = None
+    physics: str = "rules"
 
     @property
     def q_start(self) -> F64:
@@ -164,8 +166,9 @@ def plan_draw(
         start, f"draw {Path(plan.source).name}", as_steps(segments, rig.tip, opts.speed / 1000.0)
     )
     return DrawJob(
-        plan, the_sheet, the_pen, tuple(segments), steps, rig.tip, scene.T_world_base, opts
-    )
+        plan, the_sheet, the_pen, tuple(segments), steps, rig.tip, scene.T_world_base, opts,
+        physics=scene.physics,
+    )  # fmt: skip
 
 
 def pen_in_hand(start: Start, pen: Pen) -> bool:

@@ -14,5 +14,14 @@ from ._engine import Engine as Engine
 from ._engine import mujoco_module as mujoco_module
 from ._mujoco import GripSample as GripSample
 from ._mujoco import MujocoPhysics as MujocoPhysics
+from ._pen import MujocoPenTracer as MujocoPenTracer
 
-__all__ = ["FRICTION", "Engine", "GripSample", "MujocoPhysics", "mujoco_module", "physics_for"]
+__all__ = [
+    "FRICTION",
+    "Engine",
+    "GripSample",
+    "MujocoPenTracer",
+    "MujocoPhysics",
+    "mujoco_module",
+    "physics_for",
+]

@@ -14,6 +14,7 @@ so the jaws press the cube as a position-controlled gripper servo does.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -66,14 +67,25 @@ class Engine:
     Args:
         model: the arm.  scene: the table and objects, cubes where they are.
         dt: the time step [s] (the World's).  friction: the pads' and cubes' coefficient.
+        edit: called with the model's ``mujoco.MjSpec`` before it is compiled.
     """
 
-    def __init__(self, model: ArmModel, scene: Scene, dt: float, friction: float = FRICTION):
+    def __init__(
+        self,
+        model: ArmModel,
+        scene: Scene,
+        dt: float,
+        friction: float = FRICTION,
+        edit: Callable[[Any], None] | None = None,
+    ) -> None:
         from ..interchange import mjcf_of
 
         self.mj = mujoco_module()
         self.model, self.scene = model, scene
-        self.m = self.mj.MjModel.from_xml_string(mjcf_of(model, scene))
+        spec = self.mj.MjSpec.from_string(mjcf_of(model, scene))
+        if edit is not None:
+            edit(spec)  # bodies the MJCF does not write (a held pen)
+        self.m = spec.compile()
         self.m.opt.timestep = dt
         self.d = self.mj.MjData(self.m)
         self.mj.mj_resetDataKeyframe(self.m, self.d, 0)

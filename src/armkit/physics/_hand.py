@@ -53,7 +53,8 @@ def clip_hand(mj: Any, m: Any, pads: float) -> None:
     along the approach (the fingers' roots); a capsule wholly in front touches nothing."""
     for body, approach, tool in hand_bodies(mj, m):
         for g in np.flatnonzero(m.geom_bodyid == body):
-            _clip(mj, m, int(g), approach, tool, pads)
+            if not m.geom(int(g)).name:  # the links' clearance capsules (a held pen has a name)
+                _clip(mj, m, int(g), approach, tool, pads)
 
 
 def _clip(mj: Any, m: Any, g: int, approach: F64, tool: F64, pads: float) -> None:
