@@ -40,7 +40,12 @@ JOBS: dict[str, tuple[str, str, Job]] = {
     ),
     "rotate-cube": ("openmanipulator_x", "board_001", lambda a, s, d: tasks.rotate_cube(a, s, "green")),
     "stack": ("openmanipulator_x", "board_001", lambda a, s, d: tasks.stack(a, s, ["red", "green"])),
+    "pick-place": (
+        "openmanipulator_x", "board_001",
+        lambda a, s, d: (tasks.pick(a, s, "red"), tasks.place(a, s, "red", "board[2,2]")),
+    ),
     "search": ("lynx6", "search_002", lambda a, s, d: tasks.search(a, s)),
+    "reach": ("lynx6", "reach_003", lambda a, s, d: tasks.reach(a, s)),
     "draw": ("openmanipulator_x", "drawing", lambda a, s, d: drawing.draw(a, s, d / "square.svg")),
     "play": ("openmanipulator_x", "xylophone", lambda a, s, d: music.play(a, s, d / "tune.txt")),
 }  # fmt: skip
