@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import Any
 
 import numpy as np
@@ -43,7 +43,7 @@ SolveBatch = Callable[..., IKBatchResult]  # its batch (``_ik._closed_batch``)
 ROLLS = 96  # rolls tried, spread over the roll's range, where the seed's fits nowhere
 KEEP = 128  # per-roll chains kept
 STEPS = 10  # Newton steps at most (two or three are needed)
-DONE_M = 1e-15  # [m] a step moving the tool this little ends the polish
+DONE_M = 1e-15  # [m], [rad]: errors this small end the polish (the float floor)
 ACCEPT_M = 1e-10  # [m] position error of a polished solution, at most
 ACCEPT_RAD = 1e-10  # [rad] its pitch error, at most
 SLACK = 1e-9  # [rad] a joint this far beyond a limit counts as at it (as ``_closed``)
@@ -87,13 +87,16 @@ def roll_of(chain: Chain, seed: Q) -> float:
     return min(max(seed[-1], chain.lower[-1]), chain.upper[-1])
 
 
-def rolls(chain: Chain, first: float) -> list[float]:
+def rolls(chain: Chain, first: float) -> Iterator[float]:
     """``first`` [rad], then ``ROLLS`` rolls spread over the roll's range, nearest first,
     then the rolls that put the tool point in the arm's plane (a target nearer the base
-    axis than the tool's offset from the plane is reachable only near those)."""
+    axis than the tool's offset from the plane is reachable only near those); the others
+    worked out only when ``first`` does not do."""
+    yield first
     lo, hi = chain.lower[-1], chain.upper[-1]
     spread = [lo + (hi - lo) * (k + 0.5) / ROLLS for k in range(ROLLS)]
-    return [first, *sorted(spread, key=lambda r: abs(r - first)), *in_plane(chain)]
+    yield from sorted(spread, key=lambda r: abs(r - first))
+    yield from in_plane(chain)
 
 
 def in_plane(chain: Chain) -> list[float]:
@@ -210,17 +213,16 @@ def polish(chain: Chain, p: P3, pitch: float | None, q: list[float]) -> Q | None
         moving = [j for j in moving if chain.lower[j] + SLACK < q[j] < chain.upper[j] - SLACK]
     r = residual(task, chain.state(q), True)
     for _ in range(STEPS):
+        if r.position_error <= DONE_M and r.angle_error <= DONE_M:
+            break
         cols: Any = r.cols
-        J = np.array([cols[j] for j in moving]).T  # rows: x, y, z (, pitch)
-        try:
-            step = np.linalg.solve(J, r.e) if pitch is not None else np.linalg.pinv(J) @ r.e
-        except np.linalg.LinAlgError:
+        J = [cols[j] for j in moving]  # per moving joint, its column: x, y, z (, pitch)
+        step = _newton_step(J, r.e)
+        if step is None:
             return None
-        for j, d in zip(moving, step.tolist(), strict=True):
+        for j, d in zip(moving, step, strict=True):
             q[j] += d
         r = residual(task, chain.state(q), True)
-        if float(np.max(np.abs(step))) * chain.reach < DONE_M:
-            break
     if not (r.position_error <= ACCEPT_M and r.angle_error <= ACCEPT_RAD):
         return None
     for j, (lo, hi) in enumerate(zip(chain.lower, chain.upper, strict=True)):
@@ -228,6 +230,42 @@ def polish(chain: Chain, p: P3, pitch: float | None, q: list[float]) -> Q | None
             return None
         q[j] = min(max(q[j], lo), hi)
     return tuple(q)
+
+
+def _newton_step(cols: list[tuple[float, ...]], e: list[float]) -> list[float] | None:
+    """dq with J dq = e, J given by its columns: exactly where J is square, else the
+    least-norm dq = J^T (J J^T)^-1 e; None where J is singular. Plain floats (a 4x4
+    solve in floats is tens of times quicker than numpy's per-call overhead)."""
+    rows = len(e)
+    if len(cols) == rows:
+        A = [[cols[k][i] for k in range(rows)] for i in range(rows)]
+        return _solve(A, list(e))
+    G = [[sum(c[i] * c[k] for c in cols) for k in range(rows)] for i in range(rows)]
+    y = _solve(G, list(e))
+    return None if y is None else [sum(c[i] * y[i] for i in range(rows)) for c in cols]
+
+
+def _solve(A: list[list[float]], b: list[float]) -> list[float] | None:
+    """x with A x = b (n x n, Gaussian elimination with partial pivoting); None if A is
+    singular. A and b are overwritten."""
+    n = len(b)
+    for c in range(n):
+        k = max(range(c, n), key=lambda i: abs(A[i][c]))
+        if abs(A[k][c]) < 1e-300:
+            return None
+        A[c], A[k], b[c], b[k] = A[k], A[c], b[k], b[c]
+        pivot = A[c][c]
+        for i in range(c + 1, n):
+            f = A[i][c] / pivot
+            if f:
+                row, top = A[i], A[c]
+                for m in range(c, n):
+                    row[m] -= f * top[m]
+                b[i] -= f * b[c]
+    x = [0.0] * n
+    for i in range(n - 1, -1, -1):
+        x[i] = (b[i] - sum(A[i][m] * x[m] for m in range(i + 1, n))) / A[i][i]
+    return x
 
 
 def _distance(q: Q, seed: Q) -> float:
