@@ -9,7 +9,7 @@ import numpy as np
 import armkit
 from armkit.scene import load_scene
 from armkit.viz import check_target
-from armkit.viz._target import describe
+from armkit.viz._target import describe_target
 
 OMX = armkit.load_model("openmanipulator_x")
 
@@ -18,13 +18,13 @@ def test_a_target_above_a_cube_is_reachable_and_clear() -> None:
     check = check_target(OMX, (0.2, 0.0, 0.06), -math.pi / 2)
     assert check.ok and check.reason == ""
     np.testing.assert_allclose(armkit.fk(OMX, check.q)[:3, 3], (0.2, 0.0, 0.06), atol=1e-6)
-    assert "reachable and clear" in describe(check)
+    assert "reachable and clear" in describe_target(check)
 
 
 def test_too_far_says_so() -> None:
     check = check_target(OMX, (0.6, 0.0, 0.05), None)
     assert not check.ok and "out of reach" in check.reason
-    assert "(600, 0, 50) mm" in describe(check)
+    assert "(600, 0, 50) mm" in describe_target(check)
 
 
 def test_below_the_table_is_refused_with_the_link() -> None:
@@ -53,7 +53,7 @@ def test_the_board_is_in_the_way_and_a_cube_is_not_when_the_target_is_on_it() ->
     red = scene.cube("red")
     on_red = check_target(OMX, red.center, -math.pi / 2, scene=scene)
     assert on_red.ok and on_red.on == "red"
-    assert "on red, reachable and clear" in describe(on_red)
+    assert "on red, reachable and clear" in describe_target(on_red)
     # inside the board, between two sockets: the gripper would go into the board
     board = scene.board("board")
     inside = board.origin + np.array([-0.0225, 0.0, -0.003])

@@ -239,11 +239,11 @@ def _finish(
     poses: dict[str, Any],
 ) -> int:
     """Show the target, then write the picture or serve until Ctrl-C."""
-    from ..viz import describe
+    from ..viz import describe_target
 
     if target is not None:
         check = view.set_target(target[0], target[1]) if args.follow else view.target
-        print(f"armkit view: {describe(check)}")
+        print(f"armkit view: {describe_target(check)}")
     if outputs:
         with Progress("screenshot", len(web.RENDER_STEPS), "steps") as bar:
             path = web.render_png(

@@ -54,7 +54,7 @@ if TYPE_CHECKING:  # what the names below are, for type checkers (loaded on firs
     from ._state import cubes as cubes
     from ._target import TargetCheck as TargetCheck
     from ._target import check_target as check_target
-    from ._target import describe as describe
+    from ._target import describe_target as describe_target
 
 
 def _primitives_module() -> Any:
@@ -163,7 +163,7 @@ _LAZY = {
     "cubes": _state_module,
     "TargetCheck": _target_module,
     "check_target": _target_module,
-    "describe": _target_module,
+    "describe_target": _target_module,
 }
 
 

@@ -94,7 +94,7 @@ def cube_at(scene: Scene, p: F64) -> str:
     return ""
 
 
-def describe(check: TargetCheck) -> str:
+def describe_target(check: TargetCheck) -> str:
     """One line for people: where the target is [mm], pitch [deg], and the verdict."""
     x, y, z = (check.position * 1000).tolist()
     pitch = "any pitch" if check.pitch is None else f"pitch {math.degrees(check.pitch):.0f} deg"
