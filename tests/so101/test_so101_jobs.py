@@ -94,3 +94,16 @@ def test_the_so101_plays_the_xylophone_on_the_beat() -> None:
     assert [c.note for c in played.contacts] == [n.pitch for n in load_score(tune).notes]
     assert played.stats is not None and not played.stats.missed and not played.stats.extra
     assert played.stats.max < 5e-3  # [s] simulated time
+
+
+def test_a_grip_takes_its_forecast() -> None:
+    """The gripper servo at its full speed (Goal Velocity 0), then the poll that sees it
+    stopped: the forecast is the run within one poll (simulated time; it was the generic
+    50 mm/s jaws, 1.2 s forecast for a 0.17 s close)."""
+    world = World()
+    with Arm("so101", "sim", world=world) as arm:
+        for width in (20.0, 60.0, 0.0, 80.0, 45.0):
+            plan = arm.plan_grip(width)
+            start = world.now()
+            arm.run(plan)
+            assert abs(plan.seconds - (world.now() - start)) <= 0.005, width

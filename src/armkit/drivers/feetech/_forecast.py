@@ -33,7 +33,6 @@ F64 = NDArray[np.float64]
 I64 = NDArray[np.int64]
 POLL_S = 0.005  # between reads of Moving while waiting [s]
 ARRIVAL_S = 0.010 + POLL_S / 5  # the servo's loop catching up, then one more poll [s]
-GRIP_SPEED = 0.05  # the jaws' opening speed [m/s] (the simulated gripper's)
 MAX_ACCEL_UNITS = 254
 
 
@@ -129,15 +128,19 @@ class FeetechForecaster:
         """The gripper's goal step for an opening ``width`` [m] (ValueError outside the
         model's range)."""
         check_grip(self.model, width)
+        return round(self._jaw_step(width))
+
+    def _jaw_step(self, width: float) -> float:
+        """The gripper's step for an opening ``width`` [m] (the chord law), unrounded."""
         per_rad = self.config.ticks_per_turn / (2.0 * math.pi)
         angle = self.config.jaw_angle(width)
-        return round(
-            self.config.gripper_zero_tick + self.config.gripper_direction * angle * per_rad
-        )
+        return self.config.gripper_zero_tick + self.config.gripper_direction * angle * per_rad
 
     def forecast_grip(self, before: float | None, width: float) -> float:
-        """The jaws' travel from ``before`` [m] (None: fully open) at ``GRIP_SPEED``, then
-        the poll that sees them stopped [s]."""
-        check_grip(self.model, width)
+        """The gripper servo's travel from ``before`` [m] (None: fully open) to ``width``
+        at its full speed (``grip`` writes only the goal: Goal Velocity 0 and Acceleration
+        0 are the servo's fastest), then the poll that sees it stopped [s]."""
+        goal = self.grip_tick(width)
         start = self.model.gripper.width_max if before is None else before
-        return abs(width - start) / GRIP_SPEED + POLL_S
+        steps = abs(goal - round(self._jaw_step(start)))
+        return steps / sts.MAX_SPEED_STEPS + POLL_S
