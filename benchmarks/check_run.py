@@ -1,6 +1,7 @@
 """``armkit check`` against ``armkit run`` on random scripts (issue 26, point 2), printed
 as a table: for each simulated arm, N scripts from fixed seeds (moves, lines, joint
-moves, grips, speeds, waits, poses, repeats, procedures, every job and mistakes; see
+moves, grips, speeds, waits, poses, repeats, procedures, every job of the language
+(``search`` included, on the search_002 scene) and mistakes; see
 tests/script/check_run_scripts.py), each checked and then run on a fresh simulated arm.
 
 Columns: the scripts that fail (check and run stopping at the same line for the same
@@ -11,7 +12,7 @@ time error of the scripts that run to the end [%]; and the wall time [s]. The fi
 few disagreeing seeds are listed under the table (rerun one alone with --seed).
 
 Run: .venv/bin/python benchmarks/check_run.py [N scripts per arm, default 500]
-                                              [--arm NAME] [--seed K]
+         [--arm NAME] [--seed K]
 """
 
 from __future__ import annotations
@@ -79,12 +80,13 @@ def kind_of(o: Outcome) -> str:
 
 
 def run_arm(arm: str, seeds: range) -> Tally:
-    """Check and run every seed's script on ``arm``."""
+    """Check and run every seed's script on ``arm`` (on any of its scenes)."""
     tally = Tally(arm)
     t0 = time.perf_counter()
     for seed in seeds:
         with tempfile.TemporaryDirectory() as folder:
-            tally.outcomes.append(check_and_run(generate(arm, seed), Path(folder)))
+            script = generate(arm, seed, search=None)
+            tally.outcomes.append(check_and_run(script, Path(folder)))
     tally.wall_s = time.perf_counter() - t0
     return tally
 
@@ -114,7 +116,8 @@ def main() -> int:
     if args.seed is not None:
         for arm in arms:
             with tempfile.TemporaryDirectory() as folder:
-                print(check_and_run(generate(arm, args.seed), Path(folder)).report())
+                script = generate(arm, args.seed, search=None)
+                print(check_and_run(script, Path(folder)).report())
         return 0
     print(f"check = run: {args.n} random scripts per arm, seeds 0..{args.n - 1}")
     tallies = [run_arm(arm, range(args.n)) for arm in arms]

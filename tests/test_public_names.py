@@ -15,9 +15,6 @@ import armkit
 
 # Collisions known and left, each with why (delete an entry once it is gone):
 KNOWN = {
-    # the script checker's Plan and its job checks are rewritten as a fold of arm.Plans
-    # (issue 26 item 2, helper checkrun): script.Plan goes with it
-    "Plan", "draw", "move_item", "pick", "place", "play", "rotate_cube", "search", "stack",
     # a figure on a sheet (drawing.shapes: exact paths in u, v) and a sampled path in
     # space (motion: points at a spacing) are two ideas of one word each
     "arc", "circle", "line", "polyline", "rectangle",

@@ -85,7 +85,7 @@ def test_scripts_and_commands_share_the_kept_cubes(
     script.write_text("scene board_001\nmove 200 0 150\npick red\n")
     before = _where(kept, capsys)
     assert main(["--port", port, "run", str(script)]) == 2
-    assert "s.arm:3:1: pick: the gripper holds red" in capsys.readouterr().err
+    assert "s.arm:3:1: error: pick red: the gripper holds red" in capsys.readouterr().err
     assert _where(kept, capsys) == before  # refused by the check: nothing moved
     script.write_text("scene board_001\nplace xyz 180 -100 0\nhome\n")
     assert main(["--port", port, "run", "-q", str(script)]) == 0

@@ -99,9 +99,9 @@ def test_check_times_an_owi_line_as_it_runs(a: tuple[float, ...], b: tuple[float
         t0 = arm.clock.now()
         result = run_source(arm, Source("l.arm", f"move xyz {xyz}\nline xyz {to}\n"))
         took = arm.clock.now() - t0  # simulated seconds
-        assert result.plan.unknown == 0
-        assert result.plan.total == pytest.approx(took, rel=0.02)
-        line_step = result.plan.steps[-1]
+        assert result.timetable.unknown == 0
+        assert result.timetable.total == pytest.approx(took, rel=0.02)
+        line_step = result.timetable.rows[-1]
         assert "mm off the path" in line_step.note
         assert line_step.duration < 8.0  # was 29.8 s for the 20 mm line, 183 s for 100 mm
     finally:

@@ -17,7 +17,7 @@ from pathlib import Path
 from check_run_scripts import Script
 
 from armkit import Arm
-from armkit.script import ArmNow, Diagnostic, ScriptRunError, Source, check_source, run_checked
+from armkit.script import Diagnostic, ScriptRunError, Source, check_source, run_checked
 
 TIME_TOLERANCE = 0.01  # check's time within 1 % of the run's simulated time
 TIME_FLOOR_S = 0.005  # and never closer than the simulator's few ticks [s]
@@ -84,7 +84,7 @@ def check_and_run(script: Script, folder: Path) -> Outcome:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # an OWI's uncertain estimate, cut drawings, ...
         with Arm(script.arm, "sim") as arm:
-            result = check_source(source, model=arm.model, now=ArmNow.of(arm), base_dir=folder)
+            result = check_source(source, model=arm.model, arm=arm, base_dir=folder)
             check = _first_error(result.first_error)
             t0 = arm.clock.now()
             run = None
@@ -94,8 +94,8 @@ def check_and_run(script: Script, folder: Path) -> Outcome:
                 message = Diagnostic(exc.loc, exc.message).message  # numbers as check says them
                 run = Verdict(exc.loc.line, exc.loc.col, message)
             run_s = arm.clock.now() - t0
-    plan = result.plan
-    return Outcome(script, check, run, None if plan.unknown else plan.total, run_s)
+    table = result.timetable
+    return Outcome(script, check, run, None if table.unknown else table.total, run_s)
 
 
 def _first_error(d: Diagnostic | None) -> Verdict | None:

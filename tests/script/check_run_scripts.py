@@ -5,8 +5,10 @@ rotate-cube, stack, search, draw, play) and mistakes (unreachable points, points
 table, joints beyond their limits, taken sockets, a place with nothing picked, unknown
 objects, out-of-range values), on the OpenManipulator-X, the Lynx6 and the OWI-535.
 
-A script is a pure function of (arm, seed): ``generate(arm, seed)`` draws everything
-from ``numpy.random.default_rng`` seeded with both, so a failing seed is rerun alone.
+A script is a pure function of (arm, seed, search): ``generate(arm, seed)`` draws
+everything from ``numpy.random.default_rng`` seeded with the arm and the seed, so a
+failing seed is rerun alone; scripts with ``search`` (a sensing job, planned only when
+it runs) are drawn apart (``search=True``).
 """
 
 from __future__ import annotations
@@ -130,7 +132,7 @@ class Writer:
             return f"board[{row},{col}]"
         if kind == "cube":
             return self.choose(*CUBES)
-        x, y = self.rng.uniform(150.0, 230.0), self.rng.uniform(-110.0, -70.0)
+        x, y = self.rng.uniform(150.0, 230.0), self.rng.uniform(-130.0, -90.0)  # off the board
         return f"xyz {x:.0f} {y:.0f} 0"
 
     # -- statements --------------------------------------------------------
@@ -296,7 +298,7 @@ def _draw(w: Writer) -> str:
     name = f"d{len(w.script.files)}.svg"
     w.script.files[name] = _svg(w.rng)
     sheet = "A7" if w.mistake(0.05) else "A5"
-    return f"draw {name} on {sheet}"
+    return f"draw {name} on {sheet}" + (" fit" if w.chance(0.2) else "")
 
 
 def _play(w: Writer) -> str:
@@ -359,12 +361,14 @@ JOBS_OF: dict[str | None, tuple[str, ...]] = {
 }
 
 
-def generate(arm: str, seed: int) -> Script:
+def generate(arm: str, seed: int, search: bool | None = False) -> Script:
     """The script of ``seed`` for ``arm``: its header, maybe a procedure, then 3 to 9
-    statements (blocks counted as one)."""
+    statements (blocks counted as one). ``search``: False, on a scene other than
+    search_002 (no ``search``); True, on search_002; None, on any."""
     rng = np.random.default_rng([seed, ARM_SALT[arm]])
-    names = [s for s, _ in SCENES[arm]]
-    weights = np.array([p for _, p in SCENES[arm]])
+    scenes = [(s, p) for s, p in SCENES[arm] if search is None or (s == "search_002") == search]
+    names = [s for s, _ in scenes]
+    weights = np.array([p for _, p in scenes])
     scene = names[int(rng.choice(len(names), p=weights / weights.sum()))]
     w = Writer(arm, scene, rng)
     w.script.seed = seed

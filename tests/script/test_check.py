@@ -7,8 +7,9 @@ import math
 import numpy as np
 import pytest
 
+from armkit.arm import Start
 from armkit.model import load_model
-from armkit.script import ArmNow, ScriptCheckError, Source, _walk, check_source
+from armkit.script import ScriptCheckError, Source, _walk, check_source
 from budget import cases
 
 MISTAKES = """\
@@ -65,11 +66,11 @@ def test_a_good_script_has_a_plan_and_a_time() -> None:
     text = "pose above = xyz 180 0 80 pitch -90\nmove above\nline 180 0 40\nwait 2s\nhome\n"
     result = check_source(Source("ok.arm", text))
     assert result.ok and result.diagnostics == []
-    durations = [s.duration for s in result.plan.steps]
+    durations = [s.duration for s in result.timetable.rows]
     assert len(durations) == 4 and durations[2] == pytest.approx(2.0)  # a pose takes no time
     assert all(d is not None and d >= 0 for d in durations)
-    assert result.plan.total == pytest.approx(sum(d for d in durations if d is not None))
-    assert result.plan.steps[-1].q == pytest.approx(load_model("openmanipulator_x").home)
+    assert result.timetable.total == pytest.approx(sum(d for d in durations if d is not None))
+    assert result.timetable.rows[-1].q == pytest.approx(load_model("openmanipulator_x").home)
 
 
 def test_structure_errors_are_reported_once_without_cascades() -> None:
@@ -124,9 +125,9 @@ def test_a_steady_repeat_is_checked_quickly_and_timed_whole() -> None:
     text += "repeat 10000\n  move a\n  move b\nend\n"
     result = check_source(Source("r.arm", text))
     assert result.ok
-    d = [s.duration or 0.0 for s in result.plan.steps]
+    d = [s.duration or 0.0 for s in result.timetable.rows]
     assert len(d) == 5  # two iterations, then one row for the 9998 alike
-    assert result.plan.total == pytest.approx(d[0] + d[1] + (d[2] + d[3]) * 9_999)
+    assert result.timetable.total == pytest.approx(d[0] + d[1] + (d[2] + d[3]) * 9_999)
 
 
 def test_an_endless_drift_is_cut_at_the_budget_with_a_warning(
@@ -184,8 +185,10 @@ def test_start_pose_matters_for_relative_moves() -> None:
     model = load_model("openmanipulator_x")
     q0 = model.home.copy()
     q0[0] = math.radians(175)
-    assert _errors("turn waist by 10\n", now=ArmNow(q=q0))[0][2].startswith("waist 185.00 deg")
-    assert _errors("turn waist by 10\n", now=ArmNow(q=np.zeros(4))) == []
+    assert _errors("turn waist by 10\n", start=Start(model, q0))[0][2].startswith(
+        "waist 185.00 deg"
+    )
+    assert _errors("turn waist by 10\n", start=Start(model, np.zeros(4))) == []
 
 
 def test_run_and_light_need_timed_motors() -> None:

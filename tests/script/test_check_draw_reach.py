@@ -16,16 +16,16 @@ import numpy as np
 import pytest
 
 import armkit.scene
-from armkit import Arm
+from armkit import Arm, ArmkitError
+from armkit.arm import Start
 from armkit.drawing import DrawingWarning, plan_draw
 from armkit.kinematics import ik
 from armkit.model import load_model
 from armkit.scene import load_scene
 from armkit.script import ScriptCheckError, Source, check_file, run_source
-from armkit.script._job_checks import JobArgProblem
-from armkit.script._job_checks import draw as check_draw
+from armkit.script._job_checks import check_draw
+from armkit.script._job_plans import plan_job
 from armkit.sim import World
-from armkit.tasks import Start
 
 SHIPPED = Path(armkit.scene.__file__).parent / "scenes" / "drawing.toml"
 SQUARE = Path(__file__).parents[2] / "examples" / "scripts" / "square.svg"
@@ -111,12 +111,12 @@ def test_plan_draw_from_a_start_is_the_plan_from_an_arm_there() -> None:
     assert from_start.lines() == from_arm.lines()
 
 
-def test_the_draw_check_plans_from_the_arm_it_is_given(tmp_path: Path) -> None:
+def test_a_draw_is_planned_from_the_start(tmp_path: Path) -> None:
+    # check and run plan a script's draw alike (script._job_plans), from where the arm is
     _write(tmp_path, "far")
     model, scene = load_model("openmanipulator_x"), load_scene(tmp_path / "far.toml")
     svg = tmp_path / "square.svg"
-    check_draw(scene, svg, "A5", fit=True)  # no arm known: the file on the sheet only
-    with pytest.raises(JobArgProblem) as err:
-        check_draw(scene, svg, "A5", fit=True, arm=Start(model, model.home))
-    assert err.value.names == ()  # the job's line, not one argument
-    assert "reaches none of the drawing" in str(err.value)
+    check_draw(scene, svg, "A5", fit=True)  # its arguments: the file on the sheet only
+    with pytest.raises(ArmkitError, match="reaches none of the drawing"):
+        start = Start(model, model.home, scene=scene)
+        plan_job(start, scene, "draw", {"file": svg, "sheet": "A5", "fit": True})

@@ -11,13 +11,8 @@ from pathlib import Path
 import pytest
 
 from armkit import Arm
-from armkit.script import ArmNow, Source, check_source, run_source
+from armkit.script import Source, check_source, run_source
 
-FOLD = (
-    "today's checker loses track of the arm after a failing line (ModelArm.lose_track): "
-    "the tasks after it are checked by their arguments only"
-)
-UNTIMED = "today's checker leaves a draw or a play untimed (timed only when run)"
 HERE = Path(__file__).resolve().parents[2] / "examples" / "scripts"
 
 
@@ -26,7 +21,6 @@ def _errors(text: str) -> list[tuple[int, str]]:
     return [(d.loc.line, d.message) for d in result.diagnostics if d.severity == "error"]
 
 
-@pytest.mark.xfail(strict=True, reason=FOLD)
 def test_every_failing_task_is_reported() -> None:
     # line 3 is refused, so red is still held at line 4, whose socket is taken too;
     # line 5 is refused as it would be after line 4
@@ -36,7 +30,6 @@ def test_every_failing_task_is_reported() -> None:
     assert "board[0, 2] is taken by blue" in found[1][1]
 
 
-@pytest.mark.xfail(strict=True, reason=FOLD)
 def test_after_a_failing_line_the_tasks_are_planned_from_where_it_left_things() -> None:
     # red stays in the gripper after line 3's refusal, goes to the table at line 4, and
     # blue on it (lines 5-6): so red is under blue at line 7, which only a check that
@@ -50,18 +43,20 @@ def test_after_a_failing_line_the_tasks_are_planned_from_where_it_left_things() 
     assert "under blue" in found[1][1]
 
 
-@pytest.mark.xfail(strict=True, reason=UNTIMED)
 @pytest.mark.parametrize(
     ("scene", "job"),
-    [("drawing", "draw square.svg on A5"), ("xylophone", "play ode.txt tempo 90%")],
+    [
+        ("drawing", "draw square.svg on A5"),
+        ("xylophone", "play ode.txt tempo 90%"),
+    ],
 )
 def test_a_script_that_draws_or_plays_is_timed_as_it_runs(scene: str, job: str) -> None:
     text = f"arm openmanipulator_x\nscene {scene}\nmove 200 0 150\n{job}\nhome\n"
     with warnings.catch_warnings(), Arm("openmanipulator_x", "sim") as arm:
         warnings.simplefilter("ignore")
-        checked = check_source(Source(str(HERE / "job.arm"), text), now=ArmNow.of(arm))
+        checked = check_source(Source(str(HERE / "job.arm"), text), arm=arm)
         t0 = arm.clock.now()
         run_source(arm, Source(str(HERE / "job.arm"), text))
         took = arm.clock.now() - t0
-    assert checked.plan.unknown == 0
-    assert checked.plan.total == pytest.approx(took, rel=0.01)
+    assert checked.timetable.unknown == 0
+    assert checked.timetable.total == pytest.approx(took, rel=0.01)

@@ -16,15 +16,15 @@ import numpy as np
 import pytest
 
 from armkit import Arm
+from armkit.arm import Start
 from armkit.cli import main
 from armkit.kinematics import ik
 from armkit.model import load_model
+from armkit.music import PerformanceError
 from armkit.scene import load_scene
 from armkit.script import ScriptCheckError, Source, check_file, run_source
-from armkit.script._job_checks import JobArgProblem
-from armkit.script._job_checks import play as check_play
+from armkit.script._job_plans import plan_job
 from armkit.sim import World
-from armkit.tasks import Start
 
 TUNE = "tempo 120 mf\nC5 q E5 e G5 e R q C6 q\nsnare q F#5 q. D5 e3 D5 e3 D5 e3\n"
 EMPTY_SVG = '<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm"></svg>\n'
@@ -51,20 +51,20 @@ def _script(job: str, scene: str = "xylophone") -> str:
     return f"scene {scene}\nmove xyz 150 0 100 pitch -90\n{job}\n"
 
 
-def test_the_play_check_plans_the_piece_from_the_arm_as_the_checker_knows_it(
-    tmp_path: Path,
-) -> None:
+def test_a_play_is_planned_from_the_start_as_a_script_writes_it(tmp_path: Path) -> None:
+    # check and run plan a script's play alike (script._job_plans): from where the arm
+    # is, tempi said as the script writes them
     (tmp_path / "t.txt").write_text(TUNE)
     model, scene = load_model("openmanipulator_x"), load_scene("xylophone")
     q = np.asarray(ik(model, np.array([0.15, 0.0, 0.10]), np.radians(-90.0), model.home).q)
-    with pytest.raises(JobArgProblem) as err:
-        check_play(scene, tmp_path / "t.txt", tempo=2.0, arm=Start(model, q))
+    start = Start(model, q, scene=scene)
+    with pytest.raises(PerformanceError) as err:
+        plan_job(start, scene, "play", {"file": tmp_path / "t.txt", "tempo": 2.0})
     message = str(err.value)
-    assert err.value.names == ()  # the job's line, not one argument
     assert message.startswith(LATE.replace("t.txt", str(tmp_path / "t.txt")))
     assert "(tempo 102% plays it)" in message and "--tempo" not in message
-    check_play(scene, tmp_path / "t.txt", tempo=1.02, arm=Start(model, q))  # plays
-    check_play(scene, tmp_path / "t.txt", tempo=1.0)  # no arm known: arguments only
+    played = plan_job(start, scene, "play", {"file": tmp_path / "t.txt", "tempo": 1.02})
+    assert played.plan is not None and played.plan.seconds > 0.0
 
 
 @pytest.mark.parametrize("job", ["play t.txt tempo 200%", "play t.txt tempo 150%"])

@@ -42,12 +42,14 @@ def test_the_same_failure_at_two_lines_counts_once(
     capsys: pytest.CaptureFixture[str],
 ) -> None:
     """On the Lynx6, 06_dip's pose is out of reach at both 'move spot' lines: one error,
-    with 'the same at line 5' (it said '3 errors')."""
+    with 'the same at line 5'; the line between them is checked from where the refused
+    move left the arm (unmoved), and is out of reach too; and line 10's joint name."""
     assert main(["--arm", "lynx6", "check", str(EXAMPLES / "06_dip.arm")]) == 2
     err = capsys.readouterr().err
     assert err.count(": error: lynx6 cannot reach") == 1
     assert "note: the same at line 5" in err
-    assert "(2 errors in" in err
+    assert "06_dip.arm:4:3: error: point 0 of 93" in err
+    assert "(3 errors in" in err
 
 
 def test_the_same_failure_at_a_hundred_thousand_lines_names_twenty() -> None:

@@ -13,6 +13,7 @@ from script_arms import CountingDriver, counting_arm
 
 import armkit.tasks
 from armkit import Arm, DeviceError
+from armkit.arm import Start
 from armkit.script import (
     JOBS,
     JobParam,
@@ -53,7 +54,7 @@ def test_plan_time_matches_the_simulated_time(arm: tuple[Arm, CountingDriver]) -
     t0 = a.clock.now()
     result = _run(a, "move xyz 180 0 80 pitch -90\nmove xyz 150 100 60 pitch -60\nhome\nwait 1s\n")
     took = a.clock.now() - t0  # simulated seconds, not wall time
-    assert took == pytest.approx(result.plan.total, rel=0.1)
+    assert took == pytest.approx(result.timetable.total, rel=0.1)
 
 
 def test_plan_time_counts_a_line_s_move_onto_its_start(arm: tuple[Arm, CountingDriver]) -> None:
@@ -63,7 +64,7 @@ def test_plan_time_counts_a_line_s_move_onto_its_start(arm: tuple[Arm, CountingD
     t0 = a.clock.now()
     text = "move xyz 180 0 80\nline xyz 180 80 80\nline xyz 120 -60 60\nhome\n"
     result = _run(a, text)
-    assert a.clock.now() - t0 == pytest.approx(result.plan.total, rel=0.03)
+    assert a.clock.now() - t0 == pytest.approx(result.timetable.total, rel=0.03)
 
 
 class _Failing(CountingDriver):
@@ -113,29 +114,29 @@ def test_the_whole_script_repeats(arm: tuple[Arm, CountingDriver]) -> None:
 def test_a_job_runs_through_its_table_entry(
     arm: tuple[Arm, CountingDriver], monkeypatch: pytest.MonkeyPatch
 ) -> None:
+    # check and run both plan the job with its table entry's function, from a Start (the
+    # check's from its fold, the run's from the arm as it reads it), then run carries it out
     a, _ = arm
     calls: list[tuple[Any, ...]] = []
-
     real = armkit.tasks.move_item
 
-    def move_item(arm_: Arm, scene: Any, **kwargs: Any) -> object:
+    def move_item(arm_: Any, scene: Any, **kwargs: Any) -> object:
         # the arguments must be ones the real task takes (a fake taking **kwargs hid
         # 'pick(item=...)' while the real pick takes 'cube')
         inspect.signature(real).bind(arm_, scene, **kwargs)
-        if isinstance(arm_, armkit.tasks.Start):  # the check plans it: the real planner
-            return real(arm_, scene, **kwargs)
         calls.append((arm_, scene, kwargs))
-        arm_.move_to(150, 0, 60, -90)
-        return None
+        return real(arm_, scene, **kwargs)
 
     monkeypatch.setattr(armkit.tasks, "move_item", move_item)
     text = "pose spot = xyz 150 0 30 pitch -90\nmove-item spot to xyz 150 50 30\nturn waist by 10\n"
     _run(a, text)
-    ((who, scene, kwargs),) = calls
-    assert who is a and scene.name == "empty"  # a script without a scene: the empty table
+    (checked, _, _), (ran, scene, kwargs) = calls
+    assert isinstance(ran, Start) and scene.name == "empty"  # no scene: the empty table
+    assert np.allclose(ran.q, checked.q, atol=1e-3)  # where the check planned it from
     assert kwargs["item"] == pytest.approx([150.0, 0.0, 30.0])  # tasks take points in mm
     assert kwargs["to"] == pytest.approx([150.0, 50.0, 30.0])
-    assert a.angles()["waist"] == pytest.approx(10, abs=0.1)
+    # carried out: the item put down at (150, 50) mm, then the waist 10 deg further
+    assert a.angles()["waist"] == pytest.approx(math.degrees(math.atan2(50, 150)) + 10, abs=0.5)
 
 
 def test_adding_a_job_is_one_entry(
@@ -187,8 +188,8 @@ def test_owi_plan_time_is_the_timed_driver_s() -> None:
         t0 = a.clock.now()
         result = _run(a, OWI_PROGRAM)
         took = a.clock.now() - t0  # simulated seconds, not wall time
-        assert result.plan.unknown == 0
-        assert result.plan.total == pytest.approx(took, rel=0.02)
+        assert result.timetable.unknown == 0
+        assert result.timetable.total == pytest.approx(took, rel=0.02)
     finally:
         a.close()
 

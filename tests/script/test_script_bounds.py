@@ -40,7 +40,7 @@ def test_the_bounds_themselves_are_allowed() -> None:
     assert MAX_WAIT_S == 3600.0 and MAX_REPEAT == 10_000
     assert _errors("wait 3600\nwait 60min\nwait 3600000ms\n") == []
     result = check_source(Source("b.arm", "repeat 10000\n  wait 60min\nend\n"))
-    assert result.ok and result.plan.total == pytest.approx(10_000 * 3600.0)
+    assert result.ok and result.timetable.total == pytest.approx(10_000 * 3600.0)
 
 
 def test_check_refuses_a_huge_wait_in_one_error_line(

@@ -15,10 +15,11 @@ from numpy.typing import NDArray
 
 from .._errors import DeviceError, InputError, UnreachableError
 from ..drivers import RunForecaster
+from ..drivers.servo import JAWS_SPEED
 from ..kinematics import fk, ik, pitch_follows, pitch_of
 from ..model import MAX_MOVE_S, check_grip, check_joints, move_time
 from ..motion import JointPath, NaiveStepping, Streamer, forecast_follow, plan_path
-from ..scene import Scene, is_inside, move_refusal
+from ..scene import Scene, is_inside, move_refusal, settle
 from ._plan import Plan, Step
 from ._start import Start
 
@@ -99,14 +100,35 @@ def plan_grip(start: Start, width: float, label: str = "grip") -> Plan:
             f"{start.model.name}'s gripper is only open or closed: grip {lo:g} closes it, "
             f"grip {hi:g} opens it; got {width * 1000.0:g} mm"
         )
+    # a timed gripper runs unless its driver set it so itself (what it knows, not the
+    # jaws' true opening); a servo gripper moves from where the jaws are
+    before = start.grip if start.timer.moves == "timed" else start.opening
     held = start.held
-    stop = width if held is None else max(width, held.cube.size)  # the jaws stop on it
-    seconds = start.timer.forecast_grip(start.opening, stop)
-    if held is not None and held.released_by(width):
-        held = None
     tool = None if start.tool is not None and start.tool.released_by(width) else start.tool
+    if held is not None and not held.released_by(width):  # the jaws stop on the cube
+        jaws = max(width, held.cube.size)
+        seconds = start.timer.forecast_grip(before, jaws)
+        step = Step(label, grip=width, holding=_holding(start), seconds=seconds)
+        return Plan(label, start, (step,), start.then(grip=width, jaws=jaws, tool=tool))
+    seconds = start.timer.forecast_grip(before, width)
     step = Step(label, grip=width, holding=_holding(start), seconds=seconds)
-    return Plan(label, start, (step,), start.then(grip=width, jaws=None, held=held, tool=tool))
+    if held is None:
+        return Plan(label, start, (step,), start.then(grip=width, jaws=None, tool=tool))
+    end = start.then(grip=width, jaws=None, held=None, scene=dropped(start), tool=tool)
+    return Plan(label, start, (step,), end)
+
+
+def dropped(start: Start) -> Scene | None:
+    """``start``'s scene with the cube it holds where that cube comes to rest when the jaws
+    let it go there (``scene.settle``: straight down onto what is under it, as the
+    simulator's physics has it fall); None without a scene."""
+    held, scene = start.held, start.scene
+    if held is None or scene is None:
+        return scene
+    T = scene.T_world_base @ fk(start.kin, start.q) @ held.T_tool_object
+    others = scene.without_cube(held.cube.name) if held.cube.name in scene.names() else scene
+    rest = settle(others, held.cube, T).cube
+    return replace(others, cubes=(*others.cubes, rest))
 
 
 def refuse(start: Start, poses: F64) -> None:
@@ -202,10 +224,15 @@ def _closing_on(steps: Sequence[Step], k: int, at: Start) -> float:
 
 def _forecast(at: Start, step: Step, cube: float = 0.0) -> tuple[Start, float]:
     """Where ``step`` leaves the arm from ``at``, and how long it takes [s] (a grip
-    closing on a cube of size ``cube`` [m] stops on it)."""
+    closing on a cube of size ``cube`` [m] stops on it: the jaws stay open that far)."""
     if step.grip is not None:
-        seconds = at.timer.forecast_grip(at.opening, max(step.grip, cube))
-        return at.then(grip=step.grip, jaws=None), seconds
+        jaws = max(step.grip, cube) if cube > step.grip else None
+        target = step.grip if jaws is None else jaws
+        seconds = at.timer.forecast_grip(at.opening, target)
+        if step.settle and at.timer.moves == "hobby":  # the arm waits for the jaws to get
+            before = at.model.gripper.width_max if at.opening is None else at.opening
+            seconds = max(seconds, abs(target - before) / JAWS_SPEED)  # there: not its driver
+        return at.then(grip=step.grip, jaws=jaws), seconds
     if step.at is not None and step.q is not None:  # sent on time: its planner timed it
         return at.then(q=step.q), step.seconds
     if step.motor is not None:

@@ -106,43 +106,43 @@ def add_commands(sub: argparse._SubParsersAction[Any]) -> None:
 
 def _check(args: argparse.Namespace) -> int:
     from ..model import load_model
-    from ..script import ArmNow, check_source
+    from ..script import check_source
 
     source, setup = _read(args.file)
     arm = _choose(args, "arm", setup.arm, source)
     scene = _scene(args)
     model = load_model(arm) if arm != (setup.arm.value if setup.arm else None) else None
-    hardware = _choose(args, "driver_name", setup.driver_line, source) != "sim"
-    result = check_source(source, model=model, scene=scene, now=ArmNow(hardware=hardware))
+    _choose(args, "driver_name", setup.driver_line, source)  # the script's, or refused
+    result = check_source(source, model=model, scene=scene)
     _report(result)
     result.raise_if_failed()
     if args.plan:
-        print(result.plan.format(source))
-    plan = result.plan
-    later = f" (+{plan.unknown} timed when run)" if plan.unknown else ""
+        print(result.timetable.format(source))
+    table = result.timetable
+    later = f" (+{table.unknown} timed when run)" if table.unknown else ""
     if any("timed" in kind.traits for kind in kinds_of(result.model)):  # each unit's own rates
         later += "; timed as a new unit runs: 'armkit run --dry-run' times this unit"
     print(
-        f"{source.name}: ok for {result.model.name}: {count(len(plan.steps), 'step')}, {plan.total:.2f} s from home{later}"
+        f"{source.name}: ok for {result.model.name}: {count(len(table.rows), 'step')}, {table.total:.2f} s from home{later}"
     )
     return 0
 
 
 def _run(args: argparse.Namespace) -> int:
-    from ..script import MAX_REPEAT, ArmNow, check_source, run_checked
+    from ..script import MAX_REPEAT, check_source, run_checked
 
     if not 1 <= args.repeat <= MAX_REPEAT:
         raise InputError(f"--repeat must be 1..{MAX_REPEAT}, got {args.repeat}")
     source, setup = _read(args.file)
     with _open(args, setup, source) as arm:
         result = check_source(
-            source, model=arm.model, scene=_scene(args), now=ArmNow.of(arm),
+            source, model=arm.model, scene=_scene(args), arm=arm,
             repeat=args.repeat,
         )  # fmt: skip
         _report(result)
         result.raise_if_failed()
         if args.dry_run:
-            print(result.plan.format(source))
+            print(result.timetable.format(source))
             print("dry run: nothing moved")
             return 0
         t0 = arm.clock.now()

@@ -63,48 +63,48 @@ def reach(*args: Any, **kwargs: Any) -> object:
 
 
 def check_pick(*args: Any, **kwargs: Any) -> None:
-    from ..script.job_checks import pick
+    from ..script.job_checks import check_pick as check
 
-    pick(*args, **kwargs)
+    check(*args, **kwargs)
 
 
 def check_place(*args: Any, **kwargs: Any) -> None:
-    from ..script.job_checks import place
+    from ..script.job_checks import check_place as check
 
-    place(*args, **kwargs)
+    check(*args, **kwargs)
 
 
 def check_move_item(*args: Any, **kwargs: Any) -> None:
-    from ..script.job_checks import move_item
+    from ..script.job_checks import check_move_item as check
 
-    move_item(*args, **kwargs)
+    check(*args, **kwargs)
 
 
 def check_rotate_cube(*args: Any, **kwargs: Any) -> None:
-    from ..script.job_checks import rotate_cube
+    from ..script.job_checks import check_rotate_cube as check
 
-    rotate_cube(*args, **kwargs)
+    check(*args, **kwargs)
 
 
 def check_stack(*args: Any, **kwargs: Any) -> None:
-    from ..script.job_checks import stack
+    from ..script.job_checks import check_stack as check
 
-    stack(*args, **kwargs)
+    check(*args, **kwargs)
 
 
 def check_search(*args: Any, **kwargs: Any) -> None:
-    from ..script.job_checks import search
+    from ..script.job_checks import check_search as check
 
-    search(*args, **kwargs)
+    check(*args, **kwargs)
 
 
 def check_draw(*args: Any, **kwargs: Any) -> None:
-    from ..script.job_checks import draw
+    from ..script.job_checks import check_draw as check
 
-    draw(*args, **kwargs)
+    check(*args, **kwargs)
 
 
 def check_play(*args: Any, **kwargs: Any) -> None:
-    from ..script.job_checks import play
+    from ..script.job_checks import check_play as check
 
-    play(*args, **kwargs)
+    check(*args, **kwargs)

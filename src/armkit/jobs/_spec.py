@@ -142,9 +142,8 @@ class JobSpec:
     function that checks its arguments (called as ``function(scene, **arguments)``;
     None: none), words it refuses with why
     (``refused``: word -> message), and whether the function plans the job whole
-    before it moves and can plan it from a model and joints alone (``plans``: given an
-    ``armkit.tasks.Start``), so that ``armkit check`` plans it too; ``check_plans``: its
-    check plans it, given the arm as the check knows it (``arm=tasks.Start``).
+    before it moves from a ``Start`` alone (``plans``: given an ``armkit.arm.Start``, a
+    task), so that check and run plan it alike (``script._job_plans``).
 
     The CLI's sub-command is built from the same spec (``armkit.cli._jobs``):
     ``epilog`` is its ``--help``'s closing paragraph; ``cli_forms``, if any, make it
@@ -156,7 +155,6 @@ class JobSpec:
     check: Callable[..., object] | None = None
     refused: tuple[tuple[str, str], ...] = ()
     plans: bool = False
-    check_plans: bool = False
     epilog: str = ""
     cli_forms: tuple[tuple[str, str, tuple[str, ...]], ...] = ()
 

@@ -204,7 +204,6 @@ JOBS: dict[str, JobSpec] = {
         "draw an SVG or G-code file on a sheet at its real size (fit: scaled to the sheet), "
         "picking the pen up and putting it back",
         check=checks.check_draw,
-        check_plans=True,
         epilog=DRAW_EPILOG,
         cli_forms=DRAW_FORMS,
     ),
@@ -253,7 +252,6 @@ JOBS: dict[str, JobSpec] = {
         calls.play,
         "play a MIDI, RTTTL or note-list tune on the scene's xylophone and drums",
         check=checks.check_play,
-        check_plans=True,
         epilog=PLAY_EPILOG,
     ),
 }

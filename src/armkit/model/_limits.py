@@ -221,8 +221,10 @@ def move_time(
 def ramp_time(total: float, distance: ArrayLike, amax: ArrayLike) -> float:
     """The shortest ramp [s] of a ``total``-second trapezoid that keeps every joint under
     ``amax`` [rad/s^2] over ``distance`` [rad] (d = a * ramp * (total - ramp)); 0 (a
-    constant-speed move) when no ramp can: the move is too short for the acceleration."""
+    constant-speed move) when no ramp can: the move is too short for the acceleration. A
+    ``total`` that is the triangle's own (``shortest_time`` of a short move: need = total^2
+    up to rounding) ramps half of it, not none."""
     need = 4.0 * float(np.max(np.abs(np.asarray(distance)) / np.asarray(amax), initial=0.0))
-    if total <= 0 or need > total * total:
+    if total <= 0 or need > total * total * (1.0 + 1e-9):
         return 0.0
-    return (total - math.sqrt(total * total - need)) / 2.0
+    return (total - math.sqrt(max(0.0, total * total - need))) / 2.0

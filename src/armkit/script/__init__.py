@@ -49,7 +49,6 @@ a caret; nothing moves if there is one. ``run_source`` then runs it through the
 public ``Arm`` API; a failure at run time names the line and repeat iteration.
 """
 
-from ._arm_now import ArmNow as ArmNow
 from ._ast import Header as Header
 from ._ast import Loc as Loc
 from ._ast import Program as Program
@@ -69,8 +68,6 @@ from ._jobs import JOBS as JOBS
 from ._jobs import JobParam as JobParam
 from ._jobs import JobSpec as JobSpec
 from ._parse import parse as parse
-from ._plan import Plan as Plan
-from ._plan import PlanStep as PlanStep
 from ._resolve import SceneInfo as SceneInfo
 from ._run import run_checked as run_checked
 from ._run import run_source as run_source
@@ -79,5 +76,7 @@ from ._session import Session as Session
 from ._shell import Shell as Shell
 from ._teach import Teaching as Teaching
 from ._teach import joints_line as joints_line
+from ._timetable import Timetable as Timetable
+from ._timetable import TimetableRow as TimetableRow
 from ._walk import MAX_REPEAT as MAX_REPEAT
 from ._walk import MAX_WAIT_S as MAX_WAIT_S

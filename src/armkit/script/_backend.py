@@ -1,5 +1,5 @@
-"""What a walker drives: the ``Backend`` protocol (the checker's model arm or a real
-``Arm``), the ``Frame`` of a repeat or call being walked, and the run-time error."""
+"""What a walker drives: the ``Backend`` protocol (``_stepper.Stepper``, which plans each
+statement and folds the plan or carries it out), the ``Frame`` of a repeat or call being walked, and the run-time error."""
 
 from __future__ import annotations
 

@@ -1,30 +1,37 @@
 """Check a whole script before anything moves: parse it, choose the arm and scene
-its header names, and walk it on the model (``ModelArm``), collecting every
-problem and the plan with its time."""
+its header names, and fold its plans from a ``Start`` (the plans ``armkit run`` makes,
+each from where the one before ends), collecting every problem and the plan with its
+time."""
 
 from __future__ import annotations
 
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .._errors import ArmkitError
 from .._input_limits import LimitError
+from ..arm import Start
 from ..connect import driver_names
 from ..model import ArmModel, load_model, shipped_models
-from ..scene import load_scene, shipped_scenes
-from ._arm_now import ArmNow
+from ..scene import Scene, load_scene, shipped_scenes
 from ._ast import Define, Header, Loc, Num, Program, Repeat, Source, Statement
 from ._diagnostics import Diagnostic, ScriptCheckError, sorted_unique, suggest
-from ._model_arm import ModelArm
+from ._fold import Fold
+from ._now import start_of
 from ._parse import parse
-from ._plan import Plan
+from ._planning import Pace
 from ._resolve import Resolver, SceneInfo, Target, job_scene
+from ._stepper import Stepper
+from ._timetable import Timetable
 from ._walk import Walker
+
+if TYPE_CHECKING:
+    from ..arm import Arm
 
 F64 = NDArray[np.float64]
 DEFAULT_ARM = "openmanipulator_x"
@@ -43,10 +50,11 @@ class Setup:
 
 @dataclass
 class Env:
-    """Poses and procedures known before a script starts (the shell's session)."""
+    """Poses, procedures and speeds known before a script starts (the shell's session)."""
 
     poses: dict[str, Target | None] = field(default_factory=dict)
     procs: dict[str, Define] = field(default_factory=dict)
+    pace: Pace = field(default_factory=Pace)
 
 
 @dataclass
@@ -55,7 +63,7 @@ class CheckResult:
 
     Attributes:
         program: the statements.  model: the arm it was checked for.
-        plan: every motion with its time.  diagnostics: every problem, in line order.
+        timetable: every motion with its time.  diagnostics: every problem, in line order.
         setup: the header.  scene: the scene, if one was chosen.
         first_error: the error the script meets first as it runs (where ``armkit run``
             would stop), or None.
@@ -63,7 +71,7 @@ class CheckResult:
 
     program: Program
     model: ArmModel
-    plan: Plan
+    timetable: Timetable
     setup: Setup
     scene: SceneInfo | None
     diagnostics: list[Diagnostic] = field(default_factory=list)
@@ -91,7 +99,9 @@ def check_source(
     *,
     model: ArmModel | None = None,
     scene: SceneInfo | None = None,
-    now: ArmNow | None = None,
+    arm: Arm | None = None,
+    start: Start | None = None,
+    carried: Scene | None = None,
     repeat: int = 1,
     base_dir: Path | None = None,
     env: Env | None = None,
@@ -101,8 +111,12 @@ def check_source(
     Args:
         model: the arm (None: the script's ``arm`` line, else openmanipulator_x).
         scene: the scene (None: the script's ``scene`` line, if any).
-        now: the arm it will run on as it is at the start (``ArmNow.of(arm)``); None:
-            the model at home, nothing held, the scene's file, on the simulator.
+        arm: the arm it will run on, as it is now (its joints, grip, held cube, driver's
+            forecasts, a simulated arm's objects where they are); None: the model at
+            home, nothing held, the scene's file, the model's own driver.
+        start: where it starts, if not from ``arm`` (None: the model at home); its
+            scene, if it has none, the script's.
+        carried: the scene's objects as the statements before left them (the shell).
         repeat: run the whole script this many times (``--repeat``).
         base_dir: where relative file names start (default: the script's folder).
         env: poses and procedures already defined (copied, not changed).
@@ -115,24 +129,42 @@ def check_source(
     if model is None:
         found = sorted_unique(diagnostics)
         first = next((d for d in diagnostics if d.severity == "error"), None)
-        return CheckResult(program, load_model(DEFAULT_ARM), Plan(()), setup, None, found, first)
+        return CheckResult(
+            program, load_model(DEFAULT_ARM), Timetable(()), setup, None, found, first
+        )
     _check_arm(setup.arm, model, diagnostics)
     _check_driver(setup.driver_line, diagnostics)
     if scene is None and setup.scene is not None:
         scene = load_scene_info(setup.scene.value, here, setup.scene.value_loc, diagnostics)
-    now = ArmNow() if now is None else now
     objects = job_scene(scene)
-    if now.live is not None and objects is not None:
-        objects = now.live(objects)
-    arm = ModelArm(model, now, objects, has_scene=scene is not None)
-    walker = Walker(Resolver(model, scene, here), arm, source.name, checking=True)
+    start = _start(model, arm or start, scene, carried or objects)
+    fold = Fold(start, objects or Scene("unknown"), model.joint_names)
+    stepper = Stepper(fold)
+    walker = Walker(Resolver(model, scene, here), stepper, source.name, checking=True)
+    stepper.pace = Pace() if env is None else env.pace
     _seed(walker, program, env)
     walker.walk(looped(program.statements, repeat))
     walker.finish()
     # a parse, arm, driver or scene error stops a run before its first statement
     first = next((d for d in diagnostics if d.severity == "error"), walker.first_error)
     diagnostics += walker.diagnostics
-    return CheckResult(program, model, arm.plan, setup, scene, sorted_unique(diagnostics), first)
+    return CheckResult(program, model, fold.table, setup, scene, sorted_unique(diagnostics), first)
+
+
+def _start(
+    model: ArmModel, arm: Arm | Start | None, info: SceneInfo | None, objects: Scene | None
+) -> Start | None:
+    """Where the script starts: ``arm`` as it is (or that Start), else ``model`` at home,
+    with the scene's ``objects`` (None: the script names no scene, or it cannot be
+    loaded: nothing is planned)."""
+    scene = None if info is None else objects
+    if info is not None and objects is None:
+        return None
+    if isinstance(arm, Start):
+        return arm if arm.scene is not None or scene is None else arm.then(scene=scene)
+    if arm is not None:
+        return start_of(arm, scene)
+    return Start(model, model.home, scene=scene)
 
 
 def _seed(walker: Walker, program: Program, env: Env | None) -> None:

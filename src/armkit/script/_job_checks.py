@@ -15,13 +15,9 @@ import inspect
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from .._errors import ArmkitError, InputError
 from ..scene import Scene
-
-if TYPE_CHECKING:
-    from ..tasks import Start
 
 
 class JobArgProblem(InputError):
@@ -40,13 +36,13 @@ def _about(*names: str) -> Iterator[None]:
         raise JobArgProblem(names, str(exc)) from None
 
 
-def pick(scene: Scene, cube: str) -> None:
+def check_pick(scene: Scene, cube: str) -> None:
     """``tasks.pick``: a cube of the scene."""
     with _about("cube"):
         scene.cube(cube)
 
 
-def place(scene: Scene, to: str | Sequence[float]) -> None:
+def check_place(scene: Scene, to: str | Sequence[float]) -> None:
     """``tasks.place``: where to, as ``tasks.resolve`` reads it."""
     from ..tasks import resolve
 
@@ -54,7 +50,7 @@ def place(scene: Scene, to: str | Sequence[float]) -> None:
         resolve(scene, to)
 
 
-def move_item(scene: Scene, item: str | Sequence[float], to: str | Sequence[float]) -> None:
+def check_move_item(scene: Scene, item: str | Sequence[float], to: str | Sequence[float]) -> None:
     """``tasks.move_item``: a cube of the scene (or a point) and where to."""
     from ..tasks import resolve
 
@@ -67,14 +63,14 @@ def move_item(scene: Scene, item: str | Sequence[float], to: str | Sequence[floa
         resolve(scene, to)
 
 
-def rotate_cube(scene: Scene, cube: str, direction: str = "forward") -> None:
+def check_rotate_cube(scene: Scene, cube: str, direction: str = "forward") -> None:
     """``tasks.rotate_cube``: a cube of the scene (the direction is a choice the
     grammar reads)."""
     with _about("cube"):
         scene.cube(cube)
 
 
-def stack(scene: Scene, cubes: Sequence[str]) -> None:
+def check_stack(scene: Scene, cubes: Sequence[str]) -> None:
     """``tasks.stack``: two or more different cubes of the scene."""
     from ..tasks import stack_names
 
@@ -83,7 +79,7 @@ def stack(scene: Scene, cubes: Sequence[str]) -> None:
             scene.cube(name)
 
 
-def search(
+def check_search(
     scene: Scene,
     start: float | None = None,
     stop: float | None = None,
@@ -106,24 +102,13 @@ def search(
         scene.container(into or only_container(scene))
 
 
-def draw(
-    scene: Scene,
-    file: Path,
-    sheet: str | None = None,
-    pen: str | None = None,
-    fit: bool = False,
-    *,
-    arm: Start | None = None,
+def check_draw(
+    scene: Scene, file: Path, sheet: str | None = None, pen: str | None = None, fit: bool = False
 ) -> None:
     """``drawing.draw``: the sheet and the pen of the scene, then the file planned on the
     sheet as the job plans it before it moves (``drawing.plan_on_sheet``: a file with
-    nothing to draw is refused here, not after the moves before it); given the arm as the
-    checker knows it (``arm``: its model and joints), the whole job planned as ``draw``
-    plans it (``drawing.plan_draw``: the pen picked up from its stand and put back, every
-    stroke cut to the arm's reach, every move checked), refused where it would refuse
-    (none of the drawing in reach, the stand out of reach, a collision); what it cuts for
-    reach is said as it says it (a ``DrawingWarning``)."""
-    from ..drawing import find_pen, find_sheet, plan_draw, plan_on_sheet, read_drawing
+    nothing to draw is refused here, not after the moves before it)."""
+    from ..drawing import find_pen, find_sheet, plan_on_sheet, read_drawing
 
     with _about("sheet"):
         find_sheet(scene, sheet)
@@ -132,28 +117,20 @@ def draw(
     with _about("file"):
         read_drawing(file)
     with _about():
-        if arm is None:
-            plan_on_sheet(scene, file, sheet, pen, fit=fit)
-        else:
-            plan_draw(arm, scene, file, sheet, pen, fit=fit)
+        plan_on_sheet(scene, file, sheet, pen, fit=fit)
 
 
-def play(
+def check_play(
     scene: Scene,
     file: Path,
     on: str | None = None,
     tempo: float | None = None,
     transpose: int | None = None,
-    *,
-    arm: Start | None = None,
 ) -> None:
     """``music.play``: tempo, transpose, the instrument, the score as it reads it and
-    every note on a bar or drum (``music.score_on``); given the arm as the checker knows
-    it (``arm``: its model and joints, as the tasks plan with), the whole piece planned and checked as ``play``
-    plans it before it moves (``music.plan_play``: every note in reach and in time, or
-    the notes that are not, why, and the fastest tempo that plays them). Tempi and
-    transpositions are said as the script writes them (``tempo 46%``)."""
-    from ..music import check_tempo, check_transpose, instruments, load_score, plan_play, score_on
+    every note on a bar or drum (``music.score_on``). Tempi and transpositions are said
+    as the script writes them (``tempo 46%``)."""
+    from ..music import check_tempo, check_transpose, instruments, load_score, score_on
 
     with _about("tempo"):
         check_tempo(tempo, script=True)
@@ -165,6 +142,3 @@ def play(
         load_score(file, shift)
     with _about():
         score_on(scene, file, on, transpose, script=True)
-    if arm is not None:
-        with _about():
-            plan_play(arm, scene, file, on, tempo, transpose, script=True)

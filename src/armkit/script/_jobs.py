@@ -55,11 +55,6 @@ def job_keywords() -> set[str]:
     return {p.keyword for spec in JOBS.values() for p in spec.params if p.keyword}
 
 
-def job_function(command: str) -> Callable[..., object]:
-    """The function that runs ``command``."""
-    return JOBS[command].call
-
-
 def job_check(command: str) -> Callable[..., object] | None:
     """The function that checks ``command``'s arguments (None: the job has none)."""
     return JOBS[command].check

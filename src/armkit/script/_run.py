@@ -1,45 +1,38 @@
-"""Run a checked script on an ``Arm``: every statement through the public ``Arm``
-API (``move_to``, ``move_joints``, ``follow``, ``turn_to``, ``grip``, ``home``),
-so it runs on every driver. A failure names the line and the repeat iteration."""
+"""Run a checked script on an ``Arm``: each statement planned as the check plans it, but
+from the arm as it reads it now, then carried out by ``Arm.run`` (a job by its own
+carrying out), so it runs on every driver. A failure names the line and the repeat
+iteration."""
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Hashable
 from contextlib import AbstractContextManager, nullcontext
 from pathlib import Path
-from typing import TypeVar
-
-import numpy as np
 
 from .._errors import ScriptError
-from ..arm import Arm
-from ..kinematics import fk
-from ..motion import TimedStreaming, line
+from ..arm import Arm, Plan, Start
 from ..scene import Scene
-from ..tasks import Plan, held_now, obstacles_now
-from ._arm_now import ArmNow
+from ..tasks import held_now, obstacles_now
 from ._ast import Loc, Source, Statement
 from ._backend import Frame
 from ._check import CheckResult, check_source, looped
-from ._jobs import called_with, job_function
-from ._model_arm import LINE_SPACING
-from ._resolve import JointPose, Point, Resolver, SceneInfo, Target, job_scene
+from ._job_plans import JobPlan, task_scene
+from ._now import start_of
+from ._planning import Pace
+from ._resolve import Resolver, SceneInfo, job_scene
+from ._stepper import Stepper
 from ._walk import Walker
 
-T = TypeVar("T")
 StepHook = Callable[[Statement, tuple[Frame, ...]], None]
 
 
-class ArmBackend:
-    """A ``Backend`` that moves a real (or simulated) arm; with a script's scene, the arm's
-    moves are checked against its objects (where the tasks leave them)."""
+class Carry:
+    """A ``Side`` that carries each plan out on ``arm``; with a script's scene, the arm's
+    moves are checked against its objects where they are now (a simulated arm's) or
+    where the tasks left them (hardware)."""
 
     def __init__(self, arm: Arm, scene: SceneInfo | None, on_step: StepHook | None = None):
-        self.arm, self.scene, self.on_step = arm, scene, on_step
-        self.fraction: float | None = None  # joint moves: fraction of max speed (None: 1)
-        self.tool_speed = TimedStreaming().speed  # straight lines [m/s]
-        self.grip_width: float | None = None
+        self.arm, self.info, self.on_step = arm, scene, on_step
         if arm.held is None:  # a simulated arm's, from its physics
             arm.held = held_now(arm)
         self.objects: Scene | None = None  # the scene as the last task left it
@@ -49,127 +42,55 @@ class ArmBackend:
         if self.on_step is not None:
             self.on_step(stmt, frames)
 
-    def here(self) -> JointPose | None:
-        return JointPose(self.arm.read())
+    def start(self) -> Start:
+        return start_of(self.arm, None if self.info is None else self.scene_now())
 
-    def move(self, target: Target | None, straight: bool) -> None:
-        if target is None:
-            raise ScriptError("the target is not known when this statement runs")
-        goal = target
-        if straight:
-            self._line(goal)
-        elif isinstance(goal, Point):
-            x, y, z = (float(v) * 1000.0 for v in goal.xyz)
-            pitch = None if goal.pitch is None else math.degrees(goal.pitch)
-            self.arm.move_to(x, y, z, pitch, speed=self.fraction)
-        else:
-            self.arm.move_joints([math.degrees(a) for a in goal.q], speed=self.fraction)
+    def task_scene(self, start: Start) -> Scene:
+        """The scene the next task plans with: the objects where ``start`` has them (a
+        simulated arm's where they are now), a held cube where it was picked from."""
+        base = self.scene_now()
+        if base is None:
+            raise ScriptError(f"the scene {self.info and self.info.label} could not be loaded")
+        return task_scene(start, base)
 
-    def turn(self, joint: str, angle: float | None, relative: bool) -> None:
-        deg = math.degrees(_known(angle, "the angle"))
-        if relative:
-            self.arm.turn_by(joint, deg, speed=self.fraction)
-        else:
-            self.arm.turn_to(joint, deg, speed=self.fraction)
+    def take(self, plan: Plan) -> None:
+        self.arm.run(plan)
 
-    def grip(self, width: float | None) -> None:
-        w, held = _known(width, "the width"), self.arm.held
-        self.arm.grip(w * 1000.0)
-        self.grip_width = w
-        if held is not None and self.arm.held is None:  # ``Arm.grip`` let it go
-            self.objects = None  # dropped where it was: not known where
-            self._refresh_scene()
-
-    def home(self) -> None:
-        self.arm.home(speed=self.fraction)
-
-    def wait(self, seconds: float | None) -> None:
-        self.arm.clock.sleep(_known(seconds, "the time"))
-
-    def speed(self, value: float | None, tool: bool) -> None:
-        if tool:
-            self.tool_speed = _known(value, "the speed")
-        else:
-            self.fraction = _known(value, "the speed")
-
-    def light(self, on: bool) -> None:
-        self.arm.set_light(on)
-
-    def run_motor(self, joint: str, direction: int, seconds: float | None) -> None:
-        self.arm.run_motor(joint, direction, _known(seconds, "the time"))
-
-    def job(self, command: str, args: dict[str, object]) -> None:
-        done = job_function(command)(
-            self.arm, self._scene(), **called_with(command, args, self.held)
-        )
-        if isinstance(done, Plan):  # on hardware the next task plans with the cubes moved
-            self.objects = done.rest
+    def take_job(self, command: str, job: JobPlan) -> None:
+        job.carry(self.arm)
+        if job.plan is not None:  # on hardware the next task plans with the cubes moved
+            self.objects = job.plan.rest
         self._refresh_scene()
 
-    @property
-    def held(self) -> str | None:
-        """The cube in the gripper (a ``pick`` job's, until ``place``; ``Arm.held``)."""
-        return None if self.arm.held is None else self.arm.held.cube.name
+    def unknown(self, seconds: float | None) -> None:
+        raise ScriptError("a value of this statement is not known when it runs")
 
-    def _refresh_scene(self) -> None:
-        """Check the arm's moves against the objects where they are now (a simulated
-        arm's) or where the tasks left them (a held cube left out)."""
-        scene = self.scene_now()
-        if self.scene is not None and scene is not None:  # else: as the arm was opened
-            held = self.held
-            self.arm.scene = obstacles_now(
-                self.arm, scene if held is None else scene.without_cube(held)
-            )
-
-    def _scene(self) -> Scene:
-        scene = self.scene_now()
-        if scene is None:
-            raise ScriptError(f"the scene {self.scene and self.scene.label} could not be loaded")
-        return scene
-
-    def scene_now(self) -> Scene | None:
-        """The scene as the last task left it, else the script's (a script that names
-        none works on the empty table; None: it cannot be loaded). A simulated arm's
-        tasks see its objects live (``objects_on``)."""
-        return self.objects if self.objects is not None else job_scene(self.scene)
-
-    def snapshot(self) -> Hashable | None:
-        return None
+    def snapshot(self, pace: Pace) -> Hashable | None:
+        return None  # every iteration runs
 
     def elapsed(self) -> float:
         return 0.0
 
     def skip(self, iterations: int, seconds: float, loc: Loc) -> None:
-        """Never called: the runner's snapshot is None, so every iteration runs."""
+        """Never called: the snapshot is None, so every iteration runs."""
 
     def blind(self) -> AbstractContextManager[None]:
         return nullcontext()
 
-    def lose_track(self) -> None:
-        """Never called: a failure stops the run."""
+    def scene_now(self) -> Scene | None:
+        """The scene as the last task left it, else the script's (a script that names
+        none works on the empty table; None: it cannot be loaded)."""
+        return self.objects if self.objects is not None else job_scene(self.info)
 
-    def _line(self, target: Target) -> None:
-        kin = (
-            self.arm.model
-            if self.grip_width is None
-            else self.arm.model.with_grip_width(self.grip_width)
-        )
-        start = np.asarray(fk(kin, self.arm.read())[:3, 3], dtype=np.float64)
-        if isinstance(target, Point):
-            goal, pitch = target.xyz, target.pitch
-        else:
-            goal, pitch = np.asarray(fk(kin, target.q)[:3, 3], dtype=np.float64), None
-        if np.linalg.norm(goal - start) < 1e-9:
-            return
-        points = line(start, goal, LINE_SPACING) * 1000.0
-        pitch_deg = None if pitch is None else math.degrees(pitch)
-        self.arm.follow(points, pitch_deg, streamer=TimedStreaming(speed=self.tool_speed))
-
-
-def _known(value: T | None, what: str) -> T:
-    if value is None:  # the check resolves every value before anything runs
-        raise ScriptError(f"{what} is not known when this statement runs")
-    return value
+    def _refresh_scene(self) -> None:
+        """Check the arm's moves against the objects where they are now (a simulated
+        arm's) or where the tasks left them (a held cube left out)."""
+        scene = self.scene_now()
+        if self.info is not None and scene is not None:  # else: as the arm was opened
+            held = None if self.arm.held is None else self.arm.held.cube.name
+            self.arm.scene = obstacles_now(
+                self.arm, scene if held is None else scene.without_cube(held)
+            )
 
 
 def run_source(
@@ -189,13 +110,9 @@ def run_source(
             the arm is stopped.
     """
     result = check_source(
-        source,
-        model=arm.model,
-        scene=scene,
-        now=ArmNow.of(arm),
-        repeat=repeat,
-        base_dir=base_dir,
-    )
+        source, model=arm.model, scene=scene, arm=arm,
+        repeat=repeat, base_dir=base_dir,
+    )  # fmt: skip
     result.raise_if_failed()
     run_checked(arm, result, repeat=repeat, base_dir=base_dir, on_step=on_step)
     return result
@@ -214,10 +131,10 @@ def run_checked(
     result.raise_if_failed()
     source = result.program.source
     resolver = Resolver(arm.model, result.scene, base_dir or Path(source.name).parent)
-    walker = Walker(resolver, ArmBackend(arm, result.scene, on_step), source.name, checking=False)
-    statements = looped(result.program.statements, repeat)
+    side = Carry(arm, result.scene, on_step)
+    walker = Walker(resolver, Stepper(side), source.name, checking=False)
     try:
-        walker.walk(statements)
+        walker.walk(looped(result.program.statements, repeat))
     except BaseException:
         arm.stop()
         raise

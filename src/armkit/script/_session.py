@@ -19,7 +19,6 @@ from .._input_limits import MAX_LINE_CHARS, LimitError
 from .._terminal import count
 from ..arm import Arm
 from ..model import ArmModel, load_model, shipped_models
-from ._arm_now import ArmNow
 from ._ast import Header, Source
 from ._backend import ScriptRunError
 from ._check import Env, check_source
@@ -27,7 +26,8 @@ from ._diagnostics import ScriptCheckError, compact_numbers
 from ._grammar import DIRECTIONS, RESERVED, usage_of
 from ._lexer import LexError, Token, tokenize
 from ._resolve import JointPose, Resolver, SceneInfo
-from ._run import ArmBackend, run_source
+from ._run import Carry, run_source
+from ._stepper import Stepper
 from ._teach import Jog, Teaching, joints_line, pose_now, torque
 from ._walk import Walker
 
@@ -68,9 +68,10 @@ class Session:
     def __init__(self, arm: Arm, *, scene: SceneInfo | None = None, base_dir: Path | None = None):
         self.arm, self.scene = arm, scene
         self.base_dir = base_dir or Path.cwd()
-        self.backend = ArmBackend(arm, scene)
+        self.side = Carry(arm, scene)
+        self.stepper = Stepper(self.side)
         self.resolver = Resolver(arm.model, scene, self.base_dir)
-        self.walker = Walker(self.resolver, self.backend, "<shell>", checking=False)
+        self.walker = Walker(self.resolver, self.stepper, "<shell>", checking=False)
         self.walker.redefine = True
         self.teaching = Teaching(arm.model.name, pose_now(arm))
         self.next_line = 1  # the line the next statement starts on
@@ -177,10 +178,10 @@ class Session:
         first = self.next_line
         self.next_line += max(1, len(source.lines))
         self._typed = max(self._typed, self.next_line - 1)
-        env = Env(self.resolver.poses, self.walker.procs)
+        env = Env(self.resolver.poses, self.walker.procs, self.stepper.pace)
         result = check_source(
             source, model=self.arm.model, scene=self.scene,
-            now=ArmNow.of(self.arm, self.backend.objects, self.backend.grip_width),
+            arm=self.arm, carried=self.side.scene_now() if self.scene else None,
             base_dir=self.base_dir, env=env,
         )  # fmt: skip
         if any(isinstance(s, Header) for s in result.program.statements):

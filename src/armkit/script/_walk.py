@@ -1,6 +1,7 @@
 """Walk a program's statements: bind parameters, loop repeats, call procedures,
-and hand each motion to a backend — the checker (a model of the arm) or the
-runner (a real ``Arm``). One walker for both, so what is checked is what runs.
+and hand each motion to a backend (``_stepper.Stepper``), which plans it and folds
+the plan (the check) or carries it out (the run). One walker and one planner for
+both, so what is checked is what runs.
 """
 
 from __future__ import annotations
@@ -136,28 +137,22 @@ class Walker:
             self._run_motor(s)
         elif isinstance(s, Job):
             args = r.job_args(s.command, s.args, b.here())
-            if self.checking:
-                self._check_job(s, args)
+            self._check_job(s, args)
             b.job(s.command, args)
         elif isinstance(s, Simple):
             self._simple(s)
 
     def _check_job(self, s: Job, args: dict[str, object]) -> None:
         """The job's own checks of its arguments (``JobSpec.check``), as it will get
-        them; skipped while an argument is not known before it runs."""
+        them, pointing at the argument (check and run alike); skipped while an argument
+        is not known before it runs."""
         check = job_check(s.command)
         scene = job_scene(self.resolver.scene)
         values = [*args.values(), *(v for a in args.values() if isinstance(a, tuple) for v in a)]
         if check is None or scene is None or any(v is None for v in values):
             return
-        arm = {}
-        if JOBS[s.command].check_plans:  # planned from the arm as the check knows it
-            from ..tasks import Start
-
-            model, here = self.resolver.model, self.backend.here()
-            arm["arm"] = Start(model, model.home if here is None else here.q)
         try:
-            check(scene, **as_called(s.command, args), **arm)
+            check(scene, **as_called(s.command, args))
         except JobArgProblem as exc:
             at = [a.loc for name in exc.names for a in s.args if a.name == name]
             raise Fail(at[0] if at else s.loc, str(exc)) from None

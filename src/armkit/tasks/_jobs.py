@@ -74,7 +74,9 @@ def plan_task(
     if held is not None:
         picked = pick_any(ctx, st, held, None)
         st = replace(st, held=picked.held, scene=picked.scene, opening=arm.model.gripper.width_min)
-        first = first.then(held=st.held, scene=st.scene, grip=st.opening, jaws=None)
+        closed = arm.model.gripper.width_min
+        jaws = None if st.held is None else max(closed, st.held.cube.size)  # on the cube
+        first = first.then(held=st.held, scene=st.scene, grip=st.opening, jaws=jaws)
     st = body(ctx, st)
     after = (
         st.scene

@@ -83,20 +83,27 @@ def live_scene(
         InputError: ``arm`` is not an Arm or a Start, ``scene`` not a Scene.
     """
     _check_inputs(arm, scene, task)
-    if isinstance(arm, Start):
+    if isinstance(arm, Start):  # it says what it holds, if it knows (else as given)
+        _holds(task, None if arm.held is None else arm.held.cube.name, held, strict=False)
         return scene
     physics = attached(arm) if dry_run else attach_scene(arm, scene)
     if physics is None or physics.scene.name != scene.name:
         return scene
-    holding = None if physics.holding is None else physics.holding.cube.name
+    _holds(task, None if physics.holding is None else physics.holding.cube.name, held)
+    return rest_scene(physics)
+
+
+def _holds(task: str, holding: str | None, held: str | None, strict: bool = True) -> None:
+    """TaskError if the gripper ``holding`` a cube (its name, or None) cannot do ``task``,
+    which puts ``held`` down (None: takes a cube); ``strict``: nothing held when ``held``
+    is to be put down is refused too (a simulated arm knows it)."""
     if holding != held and holding is not None:
         raise TaskError(
             f"{task}: the gripper holds {holding}; put it down first (place {holding} TO)",
             step=task,
         )
-    if holding != held:
+    if holding != held and strict:
         raise TaskError(f"{task}: the gripper holds nothing; pick {held} up first", step=task)
-    return rest_scene(physics)
 
 
 def _check_inputs(arm: object, scene: object, task: str) -> None:

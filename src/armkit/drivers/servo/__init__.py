@@ -10,6 +10,7 @@ from ._arm import ServoArmDriver as ServoArmDriver
 from ._bus import ServoBus as ServoBus
 from ._calibrate import calibrate_servos as calibrate_servos
 from ._config import load_setup as load_setup
+from ._forecast import JAWS_SPEED as JAWS_SPEED
 from ._forecast import ServoForecaster as ServoForecaster
 from ._forecast import servo_forecaster as servo_forecaster
 from ._open import maestro_pulses as maestro_pulses

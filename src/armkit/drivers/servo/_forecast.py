@@ -20,6 +20,8 @@ from ._bus import MaestroBus, SSC32Bus
 from ._config import load_setup
 from ._table import ServoCalibration
 
+JAWS_SPEED = 0.05  # a hobby servo gripper's jaws [m/s]: the arm waits for them to get there
+
 F64 = NDArray[np.float64]
 
 

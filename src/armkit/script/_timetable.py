@@ -1,5 +1,5 @@
-"""The plan a check produces: each motion with its line, time and end pose, and
-the total time, printed by ``armkit run --dry-run``."""
+"""The check's timetable of a script: each statement's motion with its line, start, time
+and end pose, and the total time, printed by ``armkit run --dry-run``."""
 
 from __future__ import annotations
 
@@ -17,7 +17,7 @@ MAX_ROWS = 200  # rows printed before the rest is summarised
 
 
 @dataclass(frozen=True)
-class PlanStep:
+class TimetableRow:
     """One statement as it will run.
 
     Attributes:
@@ -38,38 +38,38 @@ class PlanStep:
 
 
 @dataclass
-class Plan:
+class Timetable:
     """Every step of a checked script and its total time.
 
     Attributes:
-        steps: in execution order.  total: sum of the known durations [s].
+        rows: in execution order.  total: sum of the known durations [s].
         unknown: how many steps have a duration only known when they run (jobs, unknown values).
         joint_names: the arm's joints, for printing.
     """
 
     joint_names: tuple[str, ...]
-    steps: list[PlanStep] = field(default_factory=list)
+    rows: list[TimetableRow] = field(default_factory=list)
     total: float = 0.0
     unknown: int = 0
 
     def format(self, source: Source) -> str:
-        """The plan as a table: line, start, duration, statement, joint angles [deg]."""
+        """The timetable as text: line, start, duration, statement, joint angles [deg]."""
         head = f"{'line':>5} {'start s':>8} {'took s':>7}  statement"
         rows = [head, "-" * len(head)]
-        for step in self.steps[:MAX_ROWS]:
+        for step in self.rows[:MAX_ROWS]:
             rows.append(_row(step, source))
-        if len(self.steps) > MAX_ROWS:
-            rows.append(f"      ... {len(self.steps) - MAX_ROWS} more steps")
+        if len(self.rows) > MAX_ROWS:
+            rows.append(f"      ... {len(self.rows) - MAX_ROWS} more steps")
         known = f"total {self.total:.2f} s"
         if self.unknown:
             known += f" + {self.unknown} step{'s' if self.unknown > 1 else ''} timed only when run"
         rows.append(
-            f"{known} ({count(len(self.steps), 'step')}; joints {', '.join(self.joint_names)} in deg)"
+            f"{known} ({count(len(self.rows), 'step')}; joints {', '.join(self.joint_names)} in deg)"
         )
         return "\n".join(rows)
 
 
-def _row(step: PlanStep, source: Source) -> str:
+def _row(step: TimetableRow, source: Source) -> str:
     start = "?" if step.start is None else f"{step.start:.2f}"
     took = "?" if step.duration is None else f"{step.duration:.2f}"
     text = source.line(step.line).split("#")[0].strip()
