@@ -14,8 +14,9 @@ Budgets (``budget()``): ``SMALL`` cases per language in ``make test``, ``LARGE``
 sets another. The time bound
 is a hang detector, never a performance assertion: a step that uses more than
 ``ARMKIT_FUZZ_HANG_S`` (default ``HANG_S``) seconds of processor time is stopped in
-the worker (so a busy machine does not make a hang); a case that does not answer
-within ``WALL_FACTOR`` times that of wall-clock time (a loop inside C code) is
+the worker (so a busy machine does not make a hang); a case whose worker used
+``CPU_FACTOR`` times that (a loop inside C code), or that is silent and idle after
+``WALL_FACTOR`` times that of wall-clock time (waiting for what never comes), is
 killed from here.
 """
 
@@ -39,6 +40,9 @@ SMALL = 10  # cases per language in `make test`
 LARGE = 1000  # cases per language in .ci/run and benchmarks/fuzz.py
 HANG_S = 30.0  # [s] processor time of one step; more is a hang
 WALL_FACTOR = 10  # a case silent for this many times HANG_S of wall-clock time is a hang
+CPU_FACTOR = 4  # a worker using this many times HANG_S on one case (of <= 3 steps) is hung
+POLL_S = 5.0  # [s] how often the worker's processor time is read while a case runs
+IDLE_S = 0.05  # [s] processor time in POLL_S below which a silent worker is waiting
 WORKER = Path(__file__).with_name("fuzz_worker.py")
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -167,17 +171,43 @@ class Worker:
         start = time.perf_counter()
         self.proc.stdin.write((case.to_json(self.scratch / "case") + "\n").encode())
         self.proc.stdin.flush()
-        ready, _, _ = select.select([self.results], [], [], timeout)
+        why = self._wait(timeout)
         seconds = time.perf_counter() - start
-        if not ready:
+        if why:
             self.close()
-            return Outcome(case, "hang", f"no answer in {timeout:g} s", seconds)
+            return Outcome(case, "hang", why, seconds)
         line = self.results.readline()
         if not line:
             code = self.proc.wait()
             self.close()
             return Outcome(case, "crash", f"the process died (exit status {code})", seconds)
         return _verdict(case, json.loads(line)["steps"], seconds)
+
+    def _wait(self, timeout: float) -> str:
+        """Wait for the answer: "" once it is there, else why the case is a hang. The
+        worker stops a step at ``hang_s()`` of processor time itself; from here a case is
+        a hang when the worker used ``CPU_FACTOR`` times that (a loop inside C code
+        that the worker's timer cannot interrupt), or when it used no processor time for
+        ``POLL_S`` after ``timeout`` seconds (it waits for something that never comes).
+        A busy machine only makes a case slow, never a hang."""
+        assert self.proc is not None
+        start, used = time.perf_counter(), _cpu_seconds(self.proc.pid)
+        last = used
+        while True:
+            ready, _, _ = select.select([self.results], [], [], POLL_S)
+            if ready:
+                return ""
+            now = _cpu_seconds(self.proc.pid)
+            waited = time.perf_counter() - start
+            if now is None or used is None or last is None:  # no /proc: the clock decides
+                if waited > timeout:
+                    return f"no answer in {timeout:g} s"
+                continue
+            if now - used > CPU_FACTOR * hang_s():
+                return f"{now - used:.0f} s of processor time and no answer"
+            if waited > timeout and now - last < IDLE_S:
+                return f"no answer in {waited:.0f} s, using no processor time"
+            last = now
 
     def close(self) -> None:
         if self.proc is not None:
@@ -190,6 +220,16 @@ class Worker:
         if self.results is not None:
             self.results.close()
             self.results = None
+
+
+def _cpu_seconds(pid: int) -> float | None:
+    """Processor time [s] process ``pid`` has used (Linux's /proc), or None."""
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text()
+    except OSError:
+        return None
+    fields = stat.rpartition(")")[2].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
 def run_cases(
