@@ -5,7 +5,8 @@ The cases and the verdicts are the suite's (tests/fuzz): case N of a language is
 same on every run, so a failure is found again by its number
 (``--languages NAME --first N --cases 1``). Each case runs ``armkit`` in a worker
 process on a fresh simulated arm; a step using more than ``--hang-s`` seconds of
-processor time is a hang. The table is what docs/limits.md quotes; the exit status
+processor time is a hang. The table (with each language's processor time: the cost of
+the budget in .ci/run) is what docs/limits.md quotes; the exit status
 is 1 if any case crashed, hung or moved the arm before a refusal.
 
 Run: .venv/bin/python benchmarks/fuzz.py [--cases N] [--jobs J] [--languages NAME ...]
@@ -88,16 +89,22 @@ def main() -> int:
 def _table(
     names: list[str], results: list[tuple[str, Outcome]], seconds: float, slow: int = 10
 ) -> None:
-    print(f"\n{'language':<16}" + "".join(f"{c:>10}" for c in COLUMNS) + f"{'slowest [s]':>13}")
+    heads = f"{'CPU [s]':>10}{'most [s]':>10}"
+    print(f"\n{'language':<16}" + "".join(f"{c:>10}" for c in COLUMNS) + heads)
     for name in names:
         mine = [o for n, o in results if n == name]
         counts = Counter(o.verdict for o in mine)
         row = [len(mine), *(counts[c] for c in COLUMNS[1:])]
-        slowest = max((o.seconds for o in mine), default=0.0)
-        print(f"{name:<16}" + "".join(f"{v:>10}" for v in row) + f"{slowest:>13.1f}")
-    print(f"\n{len(results)} cases in {seconds:.0f} s on {os.cpu_count()} cores; the slowest:")
-    for outcome in sorted((o for _, o in results), key=lambda o: -o.seconds)[:slow]:
-        print(f"  {outcome.seconds:6.1f} s  {outcome.case.label} ({outcome.verdict})")
+        cpu = sum(o.cpu for o in mine)
+        most = max((o.cpu for o in mine), default=0.0)
+        print(f"{name:<16}" + "".join(f"{v:>10}" for v in row) + f"{cpu:>10.0f}{most:>10.1f}")
+    total = sum(o.cpu for _, o in results)
+    print(
+        f"\n{len(results)} cases in {seconds:.0f} s on {os.cpu_count()} cores "
+        f"({total:.0f} s of processor time, load {os.getloadavg()[0]:.0f}); the most processor time:"
+    )
+    for outcome in sorted((o for _, o in results), key=lambda o: -o.cpu)[:slow]:
+        print(f"  {outcome.cpu:6.1f} s  {outcome.case.label} ({outcome.verdict})")
 
 
 if __name__ == "__main__":

@@ -113,6 +113,7 @@ class Outcome:
     detail: str = ""
     seconds: float = 0.0
     steps: list[dict[str, Any]] = field(default_factory=list)
+    cpu: float = 0.0  # [s] processor time the worker used on it (0 where unknown)
 
     def __str__(self) -> str:
         shown = "; ".join(" ".join(s["argv"]) + f" -> {s['code']}" for s in self.steps)
@@ -168,20 +169,24 @@ class Worker:
         if self.proc is None:
             self.proc = self._start()
         assert self.proc.stdin is not None
-        start = time.perf_counter()
+        start, cpu = time.perf_counter(), _cpu_seconds(self.proc.pid)
         self.proc.stdin.write((case.to_json(self.scratch / "case") + "\n").encode())
         self.proc.stdin.flush()
         why = self._wait(timeout)
         seconds = time.perf_counter() - start
+        used = _cpu_seconds(self.proc.pid)
+        spent = used - cpu if used is not None and cpu is not None else 0.0
         if why:
             self.close()
-            return Outcome(case, "hang", why, seconds)
+            return Outcome(case, "hang", why, seconds, cpu=spent)
         line = self.results.readline()
         if not line:
             code = self.proc.wait()
             self.close()
             return Outcome(case, "crash", f"the process died (exit status {code})", seconds)
-        return _verdict(case, json.loads(line)["steps"], seconds)
+        outcome = _verdict(case, json.loads(line)["steps"], seconds)
+        outcome.cpu = spent
+        return outcome
 
     def _wait(self, timeout: float) -> str:
         """Wait for the answer: "" once it is there, else why the case is a hang. The
