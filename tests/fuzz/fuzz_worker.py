@@ -29,7 +29,7 @@ from typing import Any
 
 MEMORY_CAP = 4 << 30  # [bytes] address space of one worker
 CPU_S = float(
-    os.environ.get("ARMKIT_FUZZ_HANG_S") or 30
+    os.environ.get("ARMKIT_FUZZ_HANG_S") or 60
 )  # [s] processor time of a step (the engine's)
 SHORT_STEPS = 300  # a script checked with at most this many steps is also run when accepted
 # What a user must never see: Python's own words for a crash, or a warning not armkit's.
