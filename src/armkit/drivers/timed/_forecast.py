@@ -82,9 +82,10 @@ def forecast_move(
     pose, used = start.copy(), motor_s
     for j, target in legs:
         part = plan_turns(timing, names, pose, {j: target}, used, clamp=False, skip_short=True)
-        for s in part.steps:  # the driver's estimate after a run: its target (to 1e-15)
-            pose[j] = s.target
-            used += s.seconds
+        before, spent = pose.copy(), used
+        for s in part.steps:  # the driver's estimate after a run (``after_run``): advanced
+            pose[s.joint] = timing.advance(before, s.joint, s.direction, s.seconds, spent)
+            used += s.seconds  # by the run's time from the pose and motor time before it
         steps += part.steps
         notes += part.notes
     return TurnForecast(tuple(steps), pose, used, tuple(notes))
