@@ -178,8 +178,13 @@ def test_the_emulator_survives_garbage_and_answers_afterwards(tmp_path: Path, ki
 
 
 @pytest.mark.parametrize(
-    "line", [b"STOP-5", b"QP-599", b"QP\xb2", b"R-", b"R-5=3", b"R5=99999999999999"]
-)
+    "line",
+    [
+        b"STOP-5", b"QP-599", b"QP\xb2", b"R-", b"R-5=3", b"R5=99999999999999",
+        b"#" + b"9" * 5000 + b"P1500", b"#1P" + b"9" * 5000, b"#1P1500S" + b"9" * 5000,
+        b"#0:" + b"9" * 5000, b"#1\xb2P1500",
+    ],
+)  # fmt: skip
 def test_the_ssc32_ignores_a_command_with_a_channel_or_register_it_has_not(line: bytes) -> None:
     """Found by the garbage above: each of these stopped the emulator's thread (an
     IndexError or ValueError); the board ignores a command it cannot read."""

@@ -35,3 +35,13 @@ def test_a_dry_run_plan_run_by_run_plan_moves_the_cubes_too() -> None:
     assert physics.scene.cube("red").position[2] == pytest.approx(0.028, abs=1e-3)
     with pytest.raises(tasks.TaskError, match="it is under red"):
         tasks.pick(arm, scene, "green", dry_run=True)
+
+
+def test_a_socket_index_of_thousands_of_digits_is_refused_in_words() -> None:
+    """Found by the script fuzzer: board[10...0, 1] with 4,403 digits reached the user as
+    Python's 'Exceeds the limit (4300 digits) for integer string conversion'."""
+    scene = load_scene("board_001")
+    with pytest.raises(InputError, match=r"rows 0\.\.2, cols 0\.\.2; got a row or column of more"):
+        tasks.resolve(scene, "board[" + "9" * 5000 + ", 1]")
+    with pytest.raises(InputError, match=r"got \(999999, 1\)"):
+        tasks.resolve(scene, "board[999999, 1]")

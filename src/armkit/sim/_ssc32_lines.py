@@ -49,11 +49,12 @@ def _clause(clause: Tokens, line: HashLine) -> str:
     """Add one ``#<ch>...`` clause to ``line``; what is wrong with it, or ""."""
     kinds = [kind for kind, _ in clause]
     args = [arg for _, arg in clause]
-    if not args[0].isdigit():
+    ch = _digits(args[0])
+    if ch is None:
         return "no channel"
-    ch = int(args[0])
-    if kinds[1:] == [":"] and args[1].isdigit() and ch < CHANNELS // 8 and int(args[1]) < 256:
-        line.levels.update({8 * ch + bit: bool(int(args[1]) >> bit & 1) for bit in range(8)})
+    level = _digits(args[1]) if len(args) > 1 else None
+    if kinds[1:] == [":"] and level is not None and ch < CHANNELS // 8 and level < 256:
+        line.levels.update({8 * ch + bit: bool(level >> bit & 1) for bit in range(8)})
         return ""
     if ch >= CHANNELS:
         return f"no channel {ch}"
@@ -66,13 +67,20 @@ def _clause(clause: Tokens, line: HashLine) -> str:
             return f"offset {offset} outside {OFFSET_RANGE}"
         line.offsets[ch] = offset
         return ""
-    if kinds[1:] in (["P"], ["P", "S"]) and all(a.isdigit() for a in args[1:]):
-        pulse = int(args[1])
+    values = [_digits(a) for a in args[1:]]
+    if kinds[1:] in (["P"], ["P", "S"]) and all(v is not None for v in values):
+        pulse = values[0] or 0
         if pulse:
             pulse = min(max(pulse, PULSE_RANGE[0]), PULSE_RANGE[1])
-        line.moves.append((ch, pulse, int(args[2]) if len(args) == 3 else 0))
+        line.moves.append((ch, pulse, values[1] or 0 if len(values) == 2 else 0))
         return ""
     return "not a clause the board reads"
+
+
+def _digits(text: str) -> int | None:
+    """``text`` as a whole number if it is 1 to 9 ASCII digits (no number the board
+    reads is longer; Python refuses to convert one of thousands), else None."""
+    return int(text) if text.isascii() and text.isdigit() and len(text) <= 9 else None
 
 
 def _int(text: str) -> int:

@@ -14,6 +14,7 @@ from .._errors import InputError
 from ..scene import Scene
 
 F64 = NDArray[np.float64]
+MAX_INDEX_DIGITS = 6  # a board's row or column as written (no board has a million rows)
 _SOCKET = re.compile(r"^\s*([\w-]+)\s*\[\s*(\d+)\s*,\s*(\d+)\s*\]\s*$")
 
 
@@ -42,6 +43,11 @@ def resolve(scene: Scene, to: str | Sequence[float]) -> Destination:
     socket = _SOCKET.match(to)
     if socket:
         board = scene.board(socket.group(1))
+        if any(len(socket.group(k)) > MAX_INDEX_DIGITS for k in (2, 3)):  # int() refuses thousands
+            raise InputError(
+                f"board {board.name!r} has sockets rows 0..{board.rows - 1}, "
+                f"cols 0..{board.cols - 1}; got a row or column of more than {MAX_INDEX_DIGITS} digits"
+            )
         row, col = int(socket.group(2)), int(socket.group(3))
         return Destination(board.socket(row, col), f"in {board.name}[{row}, {col}]")
     for place in scene.places:
