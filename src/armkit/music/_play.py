@@ -39,6 +39,7 @@ from ._strike import StrikeParams
 if TYPE_CHECKING:
     from ..arm import Arm
     from ..scene import Scene
+    from ._heard import MujocoListener
 
 F64 = NDArray[np.float64]
 MALLET = "mallet"  # the scene's pen that is the mallet (its tip_offset lengthens the tool)
@@ -350,7 +351,7 @@ def perform(arm: Arm, scene: Scene, perf: Performance) -> Played:
     start = arm.start()
     plan = performance_plan(start, perf, scene)
     world, clock = arm.world, arm.clock
-    listener = Listener(perf.model, scene.instruments, scene.T_world_base)
+    listener = _listener(arm, perf, scene)
     detach = world.attach(listener) if world is not None else None
     began: list[float] = []
     arm.hold_tool(mallet_held(start, scene))  # kept so, if the piece is interrupted
@@ -364,6 +365,15 @@ def perform(arm: Arm, scene: Scene, perf: Performance) -> Played:
         return Played(perf)
     heard = tuple(_shifted(c, began[0]) for c in listener.contacts)
     return Played(perf, heard, tuple(listener.dwell), onset_stats(perf.contacts(), heard))
+
+
+def _listener(arm: Arm, perf: Performance, scene: Scene) -> Listener | MujocoListener:
+    """The simulated ear: the mallet's head crossing a bar's top, or MuJoCo's contacts."""
+    if scene.physics != "mujoco":
+        return Listener(perf.model, scene.instruments, scene.T_world_base)
+    from ._heard import MujocoListener
+
+    return MujocoListener(arm.model, perf.model, scene.instruments, scene)
 
 
 def _shifted(c: Contact, begin: float) -> Contact:
