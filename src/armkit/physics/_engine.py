@@ -28,7 +28,7 @@ from ._hand import Scissor, clip_hand
 
 F64 = NDArray[np.float64]
 STIFFER = 30.0  # the arm's actuators' stiffness over interchange's (its STIFF_AT / this)
-GRIP_KP = 2000.0  # [N/m] the jaws' squeeze per metre of the gripper servo's error
+GRIP_KP = 1000.0  # [N/m] the jaws' squeeze per metre of the gripper servo's error
 GRIP_FORCE = 10.0  # [N] the most a jaw pushes (the gripper servo's current limit)
 CONTACT_S = 0.002  # [s] contacts' time constant, 2 steps (MuJoCo's 0.02: light cubes creep)
 NOSLIP = 4  # MuJoCo's no-slip solver iterations (soft friction lets a held cube creep)
